@@ -1,0 +1,28 @@
+package carom.core.engine;
+
+import carom.core.scene.Scene;
+
+/**
+ * A way of advancing a scene's discs to a given time. All engines consume the same {@link Scene} and
+ * core physics and produce the same {@link RunResult}; they differ only in how they schedule the work.
+ *
+ * <p>An exact engine gives the serial reference's final state to rounding. A relaxed one may reorder
+ * causally linked events and says so in {@link #exact()}.
+ */
+public interface Engine {
+    /** Name used on the command line ({@code --engine NAME}). */
+    String name();
+
+    boolean exact();
+
+    /** One line for {@code carom engines}. */
+    String description();
+
+    /**
+     * Throws {@link carom.core.BadInputException} if the scene needs an effect this engine does not
+     * simulate. Called before any output is written; {@link #run} calls it too.
+     */
+    void checkSupports(Scene scene);
+
+    RunResult run(Scene scene, RunOptions options);
+}

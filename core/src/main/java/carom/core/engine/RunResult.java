@@ -1,0 +1,46 @@
+package carom.core.engine;
+
+import carom.core.observe.Pressure;
+import carom.core.state.Discs;
+import java.util.Map;
+
+/**
+ * What a run produced: the final state (every disc at {@code until}, clocks synchronised, periodic
+ * positions wrapped into the box) and what was measured on the way.
+ *
+ * @param engine             engine name
+ * @param exact              whether the engine is exact
+ * @param finalState         every disc at {@code until}
+ * @param until              the simulated end time
+ * @param pairCollisions     pair collisions carried out (not predictions)
+ * @param wallCollisions     wall collisions carried out
+ * @param events             events processed (collisions plus any other scheduled event the engine uses)
+ * @param kineticEnergyStart kinetic energy at t = 0
+ * @param kineticEnergyEnd   kinetic energy at {@code until}
+ * @param momentumStart      total momentum of the mobile discs at t = 0, {px, py}
+ * @param momentumEnd        total momentum at {@code until}
+ * @param pressure           the collision-virial pressure with its block-average error bar (periodic
+ *                           scenes), or {@code null}
+ * @param causalityViolations events processed out of causal order (0 for exact engines)
+ * @param wallSeconds        wall-clock seconds of the run itself, without reading or writing files
+ * @param counters           engine-specific counters (steps, predictions, messages by type, ...)
+ */
+public record RunResult(String engine, boolean exact, Discs finalState, double until,
+                        long pairCollisions, long wallCollisions, long events,
+                        double kineticEnergyStart, double kineticEnergyEnd,
+                        double[] momentumStart, double[] momentumEnd,
+                        Pressure pressure, long causalityViolations, double wallSeconds,
+                        Map<String, Long> counters) {
+    public long collisions() {
+        return pairCollisions + wallCollisions;
+    }
+
+    public double collisionsPerSecond() {
+        return wallSeconds > 0 ? collisions() / wallSeconds : 0;
+    }
+
+    /** Relative change of kinetic energy over the run. */
+    public double energyDrift() {
+        return kineticEnergyStart == 0 ? kineticEnergyEnd : (kineticEnergyEnd - kineticEnergyStart) / kineticEnergyStart;
+    }
+}

@@ -1,0 +1,43 @@
+package carom.core.observe;
+
+import carom.core.state.Discs;
+
+/** Whole-system observables every engine reports the same way. */
+public final class Observables {
+    private Observables() {
+    }
+
+    /** Total kinetic energy of the mobile discs at their clocks. */
+    public static double kineticEnergy(Discs d) {
+        double sum = 0;
+        for (int i = 0; i < d.n; i++) {
+            if (d.invMass[i] > 0) {
+                sum += 0.5 * (d.vx[i] * d.vx[i] + d.vy[i] * d.vy[i]) / d.invMass[i];
+            }
+        }
+        return sum;
+    }
+
+    /** Total momentum of the mobile discs, {px, py}. */
+    public static double[] momentum(Discs d) {
+        double px = 0;
+        double py = 0;
+        for (int i = 0; i < d.n; i++) {
+            if (d.invMass[i] > 0) {
+                px += d.vx[i] / d.invMass[i];
+                py += d.vy[i] / d.invMass[i];
+            }
+        }
+        return new double[] {px, py};
+    }
+
+    public static int mobileCount(Discs d) {
+        int m = 0;
+        for (int i = 0; i < d.n; i++) {
+            if (d.invMass[i] > 0) {
+                m++;
+            }
+        }
+        return m;
+    }
+}

@@ -1,0 +1,75 @@
+package carom.core.physics;
+
+import carom.core.state.Discs;
+
+/**
+ * When two discs in straight-line relative motion touch, and what their contact does to them.
+ *
+ * <p>Prediction follows Bannerman, Lue and Lue (2014), "Stable algorithms for event-driven molecular
+ * dynamics": with r = rj - ri, v = vj - vi, b = r.v and c = r.r - sigma^2,
+ * <ul>
+ *   <li>b >= 0 (receding or sliding): no event, even if they overlap by rounding, so an overlapped pair
+ *       separates instead of colliding forever;</li>
+ *   <li>c <= 0 and b < 0 (touching or overlapped, approaching): they collide now;</li>
+ *   <li>otherwise t = c / (-b + sqrt(b^2 - v^2 c)) if the discriminant is positive: the form that
+ *       avoids cancellation between -b and the root.</li>
+ * </ul>
+ * A grazing pair (discriminant exactly 0) never exchanges momentum and gets no event.
+ */
+public final class PairLaw {
+    private PairLaw() {
+    }
+
+    /**
+     * Time from now until the pair first touches, or {@code +Infinity}.
+     *
+     * @param dx    x separation rj - ri (nearest image)
+     * @param dy    y separation
+     * @param dvx   x relative velocity vj - vi
+     * @param dvy   y relative velocity
+     * @param sigma contact distance Ri + Rj
+     */
+    public static double timeToContact(double dx, double dy, double dvx, double dvy, double sigma) {
+        double b = dx * dvx + dy * dvy;
+        if (b >= 0) {
+            return Double.POSITIVE_INFINITY;
+        }
+        double c = dx * dx + dy * dy - sigma * sigma;
+        if (c <= 0) {
+            return 0;
+        }
+        double v2 = dvx * dvx + dvy * dvy;
+        double discriminant = b * b - v2 * c;
+        if (discriminant <= 0) {
+            return Double.POSITIVE_INFINITY;
+        }
+        return c / (Math.sqrt(discriminant) - b);
+    }
+
+    /**
+     * Applies the impulse of a collision between i and j in contact now, both at the same clock.
+     * J = (1+e) u / (1/mi + 1/mj) along n, the unit vector from i to j, with u = (vi - vj).n.
+     *
+     * @param dx separation rj - ri at contact (nearest image)
+     * @param dy separation
+     * @param e  restitution in force for this collision
+     * @return the collision virial J * |r| (0 if the pair was not approaching after all)
+     */
+    public static double collide(Discs d, int i, int j, double dx, double dy, double e) {
+        double dist = Math.sqrt(dx * dx + dy * dy);
+        double nx = dx / dist;
+        double ny = dy / dist;
+        double u = (d.vx[i] - d.vx[j]) * nx + (d.vy[i] - d.vy[j]) * ny;
+        if (!(u > 0)) {
+            return 0;
+        }
+        double invMi = d.invMass[i];
+        double invMj = d.invMass[j];
+        double impulse = (1 + e) * u / (invMi + invMj);
+        d.vx[i] -= impulse * invMi * nx;
+        d.vy[i] -= impulse * invMi * ny;
+        d.vx[j] += impulse * invMj * nx;
+        d.vy[j] += impulse * invMj * ny;
+        return impulse * dist;
+    }
+}

@@ -1,0 +1,19 @@
+package carom.core.scene;
+
+/** How the box treats a disc that reaches its edge. */
+public enum BoundaryKind {
+    /** Four reflecting walls; the box is [0,width] x [0,height]. */
+    WALLS("walls"),
+    /** Both axes wrap; pairs interact through the nearest image. */
+    PERIODIC("periodic");
+
+    private final String jsonName;
+
+    BoundaryKind(String jsonName) {
+        this.jsonName = jsonName;
+    }
+
+    public String jsonName() {
+        return jsonName;
+    }
+}

@@ -1,0 +1,45 @@
+package carom.core.scene;
+
+/**
+ * The effects a scene names (SPEC "effects"). Absent keys mean off: no gravity, elastic pairs and
+ * walls, no TC model. Engines and {@code Physics} ask these predicates once at start-up and never
+ * per event.
+ *
+ * @param gravityX        gravitational acceleration, x component (0 without gravity)
+ * @param gravityY        gravitational acceleration, y component (0 without gravity)
+ * @param restitution     normal restitution of pair collisions, in [0, 1]
+ * @param wallRestitution normal restitution of wall collisions, in [0, 1]
+ * @param tc              TC-model time (Luding and McNamara): a collision within tc of a participant's
+ *                        previous one is elastic; 0 switches the model off
+ */
+public record Effects(double gravityX, double gravityY, double restitution, double wallRestitution, double tc) {
+    public static final Effects NONE = new Effects(0, 0, 1, 1, 0);
+
+    public boolean hasGravity() {
+        return gravityX != 0 || gravityY != 0;
+    }
+
+    public boolean dissipativePairs() {
+        return restitution != 1;
+    }
+
+    public boolean dissipativeWalls() {
+        return wallRestitution != 1;
+    }
+
+    public boolean usesTcModel() {
+        return tc > 0 && (dissipativePairs() || dissipativeWalls());
+    }
+
+    public Effects withGravity(double gx, double gy) {
+        return new Effects(gx, gy, restitution, wallRestitution, tc);
+    }
+
+    public Effects withRestitution(double pairs, double walls) {
+        return new Effects(gravityX, gravityY, pairs, walls, tc);
+    }
+
+    public Effects withTc(double newTc) {
+        return new Effects(gravityX, gravityY, restitution, wallRestitution, newTc);
+    }
+}

@@ -1,0 +1,302 @@
+package carom.core.scene;
+
+import carom.core.BadInputException;
+import carom.core.grid.CellGrid;
+import carom.core.grid.CellLists;
+import carom.core.physics.Boundary;
+import carom.core.state.Discs;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+
+/**
+ * Builds a {@link Scene} and validates it as SPEC demands: sizes and ranges, every disc inside the
+ * box, no two discs overlapping (checked on a grid in O(N), since scenes may hold millions of discs),
+ * and no more discs than this JVM's memory can simulate. Every violation is a
+ * {@link BadInputException} naming the JSON path or the disc ids.
+ *
+ * <p>Ids follow SPEC: explicit discs first, in the order added, then each generate block in turn.
+ */
+public final class SceneBuilder {
+    /** Heap an engine needs per disc, generously: scene copy, state, grid, queue. */
+    static final long BYTES_PER_DISC_ESTIMATE = 400;
+    /** Relative overlap tolerated as rounding in the input (touching discs are legal). */
+    private static final double CONTACT_TOLERANCE = 1e-9;
+
+    private String name = "unnamed";
+    private Box box;
+    private final List<Species> species = new ArrayList<>();
+    private Effects effects = Effects.NONE;
+    private double until = Double.NaN;
+    private int explicitCount;
+    private int[] explicitSpecies = new int[16];
+    private double[] explicitState = new double[16 * 4];
+    private final List<GenerateBlock> blocks = new ArrayList<>();
+
+    public static SceneBuilder create(String name) {
+        return new SceneBuilder().name(name);
+    }
+
+    public SceneBuilder name(String newName) {
+        this.name = newName;
+        return this;
+    }
+
+    public SceneBuilder box(double width, double height, BoundaryKind boundary) {
+        this.box = new Box(width, height, boundary);
+        return this;
+    }
+
+    /** Adds a species and returns this builder; its index is the number of species added before it. */
+    public SceneBuilder species(Species s) {
+        species.add(s);
+        return this;
+    }
+
+    public int speciesIndex(String speciesName) {
+        for (int i = 0; i < species.size(); i++) {
+            if (species.get(i).name().equals(speciesName)) {
+                return i;
+            }
+        }
+        return -1;
+    }
+
+    public SceneBuilder effects(Effects newEffects) {
+        this.effects = newEffects;
+        return this;
+    }
+
+    public SceneBuilder until(double newUntil) {
+        this.until = newUntil;
+        return this;
+    }
+
+    /** Adds an explicit disc of species index {@code s}. */
+    public SceneBuilder disc(int s, double x, double y, double vx, double vy) {
+        if (explicitCount == explicitSpecies.length) {
+            explicitSpecies = Arrays.copyOf(explicitSpecies, 2 * explicitCount);
+            explicitState = Arrays.copyOf(explicitState, 8 * explicitCount);
+        }
+        explicitSpecies[explicitCount] = s;
+        explicitState[4 * explicitCount] = x;
+        explicitState[4 * explicitCount + 1] = y;
+        explicitState[4 * explicitCount + 2] = vx;
+        explicitState[4 * explicitCount + 3] = vy;
+        explicitCount++;
+        return this;
+    }
+
+    public SceneBuilder generate(GenerateBlock block) {
+        blocks.add(block);
+        return this;
+    }
+
+    public Scene build() {
+        checkHeader();
+        long total = explicitCount;
+        for (GenerateBlock b : blocks) {
+            total += b.count();
+        }
+        checkMemory(total);
+        int n = (int) total;
+        Discs d = new Discs(n);
+        for (int i = 0; i < explicitCount; i++) {
+            d.species[i] = explicitSpecies[i];
+            d.x[i] = explicitState[4 * i];
+            d.y[i] = explicitState[4 * i + 1];
+            d.vx[i] = explicitState[4 * i + 2];
+            d.vy[i] = explicitState[4 * i + 3];
+            checkExplicit(i, d);
+        }
+        int[] blockStarts = new int[blocks.size()];
+        int offset = explicitCount;
+        for (int b = 0; b < blocks.size(); b++) {
+            GenerateBlock block = blocks.get(b);
+            blockStarts[b] = offset;
+            String path = "generate[" + b + "]";
+            Species s = species.get(block.species());
+            LatticeGenerator.place(block, s, box, d.x, d.y, d.vx, d.vy, offset, path);
+            Arrays.fill(d.species, offset, offset + (int) block.count(), block.species());
+            offset += (int) block.count();
+        }
+        for (int i = 0; i < n; i++) {
+            Species s = species.get(d.species[i]);
+            d.radius[i] = s.radius();
+            d.invMass[i] = s.inverseMass();
+        }
+        checkInsideBox(d, blockStarts);
+        checkNoOverlaps(d, blockStarts);
+        return new Scene(name, box, species, effects, until, d, blockStarts);
+    }
+
+    private void checkHeader() {
+        if (box == null) {
+            throw new BadInputException("box: missing");
+        }
+        requirePositive("box.width", box.width());
+        requirePositive("box.height", box.height());
+        if (species.isEmpty() && (explicitCount > 0 || !blocks.isEmpty())) {
+            throw new BadInputException("species: at least one species is needed");
+        }
+        double largestDiameter = 0;
+        for (int i = 0; i < species.size(); i++) {
+            Species s = species.get(i);
+            requirePositive("species[" + i + "].radius", s.radius());
+            if (!s.fixed()) {
+                requirePositive("species[" + i + "].mass", s.mass());
+            }
+            largestDiameter = Math.max(largestDiameter, 2 * s.radius());
+        }
+        if (box.periodic() && (box.width() <= 2 * largestDiameter || box.height() <= 2 * largestDiameter)) {
+            throw new BadInputException(String.format(
+                    "box: a periodic box must exceed twice the largest diameter (%s) in width and height, got %s x %s",
+                    largestDiameter, box.width(), box.height()));
+        }
+        requirePositive("until", until);
+        requireFinite("effects.gravity[0]", effects.gravityX());
+        requireFinite("effects.gravity[1]", effects.gravityY());
+        requireUnitInterval("effects.restitution", effects.restitution());
+        requireUnitInterval("effects.wallRestitution", effects.wallRestitution());
+        if (!(effects.tc() >= 0) || Double.isInfinite(effects.tc())) {
+            throw new BadInputException("effects.tc: must be a finite number >= 0, got " + effects.tc());
+        }
+        for (int b = 0; b < blocks.size(); b++) {
+            GenerateBlock block = blocks.get(b);
+            String path = "generate[" + b + "]";
+            if (block.species() < 0 || block.species() >= species.size()) {
+                throw new BadInputException(path + ".species: unknown species");
+            }
+            if (block.count() < 0) {
+                throw new BadInputException(path + ".count: must be >= 0, got " + block.count());
+            }
+            if (!(block.jitter() >= 0 && block.jitter() <= 1)) {
+                throw new BadInputException(path + ".jitter: must lie in [0, 1], got " + block.jitter());
+            }
+            switch (block.velocity()) {
+                case VelocityDistribution.Uniform u -> requireNonNegative(path + ".velocity.scale", u.scale());
+                case VelocityDistribution.Maxwell m -> requireNonNegative(path + ".velocity.temperature", m.temperature());
+                case VelocityDistribution.AtRest r -> {
+                }
+            }
+        }
+    }
+
+    private void checkMemory(long total) {
+        long maxHeap = Runtime.getRuntime().maxMemory();
+        long needed = total * BYTES_PER_DISC_ESTIMATE;
+        if (total > Integer.MAX_VALUE - 16 || needed > maxHeap) {
+            throw new BadInputException(String.format(
+                    "the scene holds %d discs, which need about %d MiB of heap, but this JVM may use %d MiB "
+                            + "(set CAROM_JAVA_OPTS=-Xmx... or use fewer discs)",
+                    total, needed >> 20, maxHeap >> 20));
+        }
+    }
+
+    private void checkExplicit(int i, Discs d) {
+        String path = "particles[" + i + "]";
+        if (d.species[i] < 0 || d.species[i] >= species.size()) {
+            throw new BadInputException(path + ".species: unknown species");
+        }
+        requireFinite(path + ".x", d.x[i]);
+        requireFinite(path + ".y", d.y[i]);
+        requireFinite(path + ".vx", d.vx[i]);
+        requireFinite(path + ".vy", d.vy[i]);
+        if (species.get(d.species[i]).fixed() && (d.vx[i] != 0 || d.vy[i] != 0)) {
+            throw new BadInputException(path + ": disc " + i + " is of fixed species '"
+                    + species.get(d.species[i]).name() + "' and cannot have a velocity");
+        }
+    }
+
+    private void checkInsideBox(Discs d, int[] blockStarts) {
+        double w = box.width();
+        double h = box.height();
+        for (int i = 0; i < d.n; i++) {
+            double x = d.x[i];
+            double y = d.y[i];
+            boolean inside;
+            if (box.periodic()) {
+                inside = x >= 0 && x < w && y >= 0 && y < h;
+            } else {
+                double r = d.radius[i];
+                double slack = CONTACT_TOLERANCE * r + 4 * Math.ulp(Math.max(w, h));
+                inside = x - r >= -slack && x + r <= w + slack && y - r >= -slack && y + r <= h + slack;
+            }
+            if (!inside) {
+                throw new BadInputException(String.format("%s: disc %d at (%s, %s) with radius %s lies outside the %s box %s x %s",
+                        describe(blockStarts, i), i, x, y, d.radius[i], box.boundary().jsonName(), w, h));
+            }
+        }
+    }
+
+    private void checkNoOverlaps(Discs d, int[] blockStarts) {
+        if (d.n < 2) {
+            return;
+        }
+        Boundary boundary = Boundary.of(box);
+        double largestDiameter = 2 * d.maxRadius();
+        CellGrid grid = CellGrid.covering(box.width(), box.height(), largestDiameter, box.periodic(), 2L * d.n + 16);
+        CellLists lists = new CellLists();
+        lists.rebuild(grid, d.x, d.y, d.n);
+        double coordinateUlp = 4 * Math.ulp(Math.max(box.width(), box.height()));
+        for (int i = 0; i < d.n; i++) {
+            int cell = lists.cellOf[i];
+            for (int k = grid.neighbourStart[cell]; k < grid.neighbourStart[cell + 1]; k++) {
+                int other = grid.neighbours[k];
+                for (int m = lists.start[other]; m < lists.start[other + 1]; m++) {
+                    int j = lists.items[m];
+                    if (j <= i) {
+                        continue;
+                    }
+                    double dx = boundary.separationX(d.x[j] - d.x[i]);
+                    double dy = boundary.separationY(d.y[j] - d.y[i]);
+                    double sigma = d.radius[i] + d.radius[j];
+                    double dist = Math.sqrt(dx * dx + dy * dy);
+                    if (sigma - dist > CONTACT_TOLERANCE * sigma + coordinateUlp) {
+                        throw new BadInputException(String.format(
+                                "discs %d and %d overlap (%s and %s): centres %s apart, radii add up to %s",
+                                i, j, describe(blockStarts, i), describe(blockStarts, j), dist, sigma));
+                    }
+                }
+            }
+        }
+    }
+
+    /** The JSON origin of disc {@code id}: {@code particles[k]} or {@code generate[b]}. */
+    static String describe(int[] blockStarts, int id) {
+        int block = -1;
+        for (int b = 0; b < blockStarts.length; b++) {
+            if (id >= blockStarts[b]) {
+                block = b;
+            }
+        }
+        if (block < 0) {
+            return "particles[" + id + "]";
+        }
+        return "generate[" + block + "] disc " + (id - blockStarts[block]);
+    }
+
+    private static void requireFinite(String path, double v) {
+        if (!Double.isFinite(v)) {
+            throw new BadInputException(path + ": must be a finite number, got " + v);
+        }
+    }
+
+    private static void requirePositive(String path, double v) {
+        if (!(v > 0) || Double.isInfinite(v)) {
+            throw new BadInputException(path + ": must be a finite number > 0, got " + v);
+        }
+    }
+
+    private static void requireNonNegative(String path, double v) {
+        if (!(v >= 0) || Double.isInfinite(v)) {
+            throw new BadInputException(path + ": must be a finite number >= 0, got " + v);
+        }
+    }
+
+    private static void requireUnitInterval(String path, double v) {
+        if (!(v >= 0 && v <= 1)) {
+            throw new BadInputException(path + ": must lie in [0, 1], got " + v);
+        }
+    }
+}

@@ -1,0 +1,419 @@
+package carom.core.scene;
+
+import carom.core.BadInputException;
+import com.fasterxml.jackson.core.JsonLocation;
+import com.fasterxml.jackson.core.JsonParser;
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.core.json.JsonReadFeature;
+import com.fasterxml.jackson.databind.DeserializationFeature;
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.json.JsonMapper;
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.FileSystemException;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.Iterator;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+/**
+ * Reads a scene file (SPEC "Scene files") strictly: malformed JSON, duplicate keys, trailing content,
+ * non-finite numbers, wrong types, missing keys and unknown keys are all errors, so that a typo never
+ * silently changes the physics. The tree is walked by hand so that every error names its JSON path
+ * ({@code species[1].mass}); ranges, placement and overlaps are then checked by {@link SceneBuilder}.
+ */
+public final class SceneReader {
+    private static final ObjectMapper MAPPER = JsonMapper.builder()
+            .enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION)
+            .enable(DeserializationFeature.FAIL_ON_TRAILING_TOKENS)
+            .enable(DeserializationFeature.FAIL_ON_READING_DUP_TREE_KEY)
+            // Jackson's defaults already reject these; stated so that nobody relaxes them by accident.
+            .disable(JsonReadFeature.ALLOW_NON_NUMERIC_NUMBERS, JsonReadFeature.ALLOW_JAVA_COMMENTS,
+                    JsonReadFeature.ALLOW_YAML_COMMENTS, JsonReadFeature.ALLOW_TRAILING_COMMA)
+            .build();
+
+    private static final Set<String> TOP_KEYS =
+            Set.of("name", "box", "species", "particles", "generate", "effects", "until");
+    private static final Set<String> BOX_KEYS = Set.of("width", "height", "boundary");
+    private static final Set<String> SPECIES_KEYS = Set.of("name", "radius", "mass", "fixed");
+    private static final Set<String> PARTICLE_KEYS = Set.of("species", "x", "y", "vx", "vy");
+    private static final Set<String> GENERATE_KEYS = Set.of("species", "count", "layout", "jitter", "velocity", "seed");
+    private static final Set<String> UNIFORM_KEYS = Set.of("distribution", "scale");
+    private static final Set<String> MAXWELL_KEYS = Set.of("distribution", "temperature");
+    private static final List<String> EFFECTS = List.of("gravity", "restitution", "wallRestitution", "tc");
+
+    private SceneReader() {
+    }
+
+    /**
+     * Reads and validates a scene file. Any problem (I/O too) is a BadInputException whose message is
+     * "&lt;json path&gt;: &lt;what is wrong&gt;" (or names disc ids), WITHOUT the file name: the CLI
+     * prefixes "error: &lt;file&gt;: ".
+     */
+    public static Scene read(Path file) {
+        JsonNode root;
+        // Streamed rather than read into one array, so that file size is bounded by the heap only.
+        try (InputStream in = Files.newInputStream(file)) {
+            root = MAPPER.readTree(in);
+        } catch (JsonProcessingException e) {
+            throw malformed(e);
+        } catch (IOException e) {
+            throw new BadInputException("cannot read the file: " + ioReason(e));
+        }
+        return fromTree(root);
+    }
+
+    /** Same, from JSON text. */
+    public static Scene parse(String json) {
+        JsonNode root;
+        try {
+            root = MAPPER.readTree(json);
+        } catch (JsonProcessingException e) {
+            throw malformed(e);
+        }
+        return fromTree(root);
+    }
+
+    private static Scene fromTree(JsonNode root) {
+        if (root == null || root.isMissingNode()) {
+            throw new BadInputException("malformed JSON at line 1 column 1: the input is empty");
+        }
+        if (!root.isObject()) {
+            throw new BadInputException("top level: must be an object, got " + typeOf(root));
+        }
+        onlyKnownKeys(root, "", TOP_KEYS);
+        SceneBuilder builder = new SceneBuilder();
+        JsonNode name = root.get("name");
+        builder.name(name == null ? "unnamed" : string(name, "name"));
+        readBox(object(required(root, "", "box"), "box"), builder);
+        Map<String, Integer> speciesByName = new HashMap<>();
+        List<Species> species = readSpecies(root, builder, speciesByName);
+        JsonNode particles = root.get("particles");
+        if (particles != null) {
+            readParticles(array(particles, "particles"), speciesByName, species, builder);
+        }
+        JsonNode generate = root.get("generate");
+        if (generate != null) {
+            readGenerate(array(generate, "generate"), speciesByName, species, builder);
+        }
+        JsonNode effects = root.get("effects");
+        builder.effects(effects == null ? Effects.NONE : readEffects(object(effects, "effects")));
+        builder.until(number(required(root, "", "until"), "until"));
+        return builder.build();
+    }
+
+    private static void readBox(JsonNode box, SceneBuilder builder) {
+        onlyKnownKeys(box, "box", BOX_KEYS);
+        double width = requiredNumber(box, "box", "width");
+        double height = requiredNumber(box, "box", "height");
+        String boundary = string(required(box, "box", "boundary"), "box.boundary");
+        BoundaryKind kind = null;
+        for (BoundaryKind k : BoundaryKind.values()) {
+            if (k.jsonName().equals(boundary)) {
+                kind = k;
+            }
+        }
+        if (kind == null) {
+            throw new BadInputException("box.boundary: unknown boundary '" + boundary + "' (known: walls, periodic)");
+        }
+        builder.box(width, height, kind);
+    }
+
+    /** Adds every species to the builder, records each name's index and returns the species in order. */
+    private static List<Species> readSpecies(JsonNode root, SceneBuilder builder, Map<String, Integer> byName) {
+        JsonNode list = array(required(root, "", "species"), "species");
+        if (list.isEmpty()) {
+            throw new BadInputException("species: must declare at least one species");
+        }
+        List<Species> species = new ArrayList<>();
+        for (int i = 0; i < list.size(); i++) {
+            String path = "species[" + i + "]";
+            JsonNode s = object(list.get(i), path);
+            onlyKnownKeys(s, path, SPECIES_KEYS);
+            String name = string(required(s, path, "name"), path + ".name");
+            if (name.isEmpty()) {
+                throw new BadInputException(path + ".name: must not be empty");
+            }
+            Integer earlier = byName.putIfAbsent(name, i);
+            if (earlier != null) {
+                throw new BadInputException(path + ".name: duplicate species name '" + name
+                        + "' (already used by species[" + earlier + "])");
+            }
+            double radius = requiredNumber(s, path, "radius");
+            JsonNode fixedNode = s.get("fixed");
+            boolean fixed = fixedNode != null && bool(fixedNode, path + ".fixed");
+            if (fixed) {
+                if (s.has("mass")) {
+                    throw new BadInputException(path + ".mass: a fixed species has infinite mass and takes no 'mass'");
+                }
+                species.add(Species.fixed(name, radius));
+            } else {
+                if (!s.has("mass")) {
+                    throw new BadInputException(path + ".mass: missing (a mobile species needs a mass; "
+                            + "\"fixed\": true makes an immovable one)");
+                }
+                species.add(Species.mobile(name, radius, requiredNumber(s, path, "mass")));
+            }
+            builder.species(species.get(i));
+        }
+        return species;
+    }
+
+    private static void readParticles(JsonNode list, Map<String, Integer> speciesByName, List<Species> species,
+                                      SceneBuilder builder) {
+        // Scenes may list 100k+ discs: per disc, one path string and a few lookups, nothing more.
+        for (int i = 0; i < list.size(); i++) {
+            String path = "particles[" + i + "]";
+            JsonNode p = object(list.get(i), path);
+            onlyKnownKeys(p, path, PARTICLE_KEYS);
+            int s = speciesRef(p, path, speciesByName, species);
+            double x = requiredNumber(p, path, "x");
+            double y = requiredNumber(p, path, "y");
+            double vx = optionalNumber(p, path, "vx", 0);
+            double vy = optionalNumber(p, path, "vy", 0);
+            builder.disc(s, x, y, vx, vy);
+        }
+    }
+
+    private static void readGenerate(JsonNode list, Map<String, Integer> speciesByName, List<Species> species,
+                                     SceneBuilder builder) {
+        for (int b = 0; b < list.size(); b++) {
+            String path = "generate[" + b + "]";
+            JsonNode g = object(list.get(b), path);
+            onlyKnownKeys(g, path, GENERATE_KEYS);
+            int s = speciesRef(g, path, speciesByName, species);
+            long count = integer(required(g, path, "count"), path + ".count", 0, Integer.MAX_VALUE);
+            String layout = string(required(g, path, "layout"), path + ".layout");
+            if (!layout.equals("lattice")) {
+                throw new BadInputException(path + ".layout: unknown layout '" + layout + "' (known: lattice)");
+            }
+            double jitter = optionalNumber(g, path, "jitter", 0);
+            JsonNode velocityNode = g.get("velocity");
+            VelocityDistribution velocity = new VelocityDistribution.AtRest();
+            if (velocityNode != null) {
+                if (species.get(s).fixed()) {
+                    // The generator would drop it silently; a fixed disc never moves (SPEC).
+                    throw new BadInputException(path + ".velocity: species '" + species.get(s).name()
+                            + "' is fixed and cannot have a velocity");
+                }
+                velocity = readVelocity(object(velocityNode, path + ".velocity"), path + ".velocity");
+            }
+            JsonNode seedNode = g.get("seed");
+            long seed = seedNode == null ? 0 : integer(seedNode, path + ".seed", Long.MIN_VALUE, Long.MAX_VALUE);
+            builder.generate(new GenerateBlock(s, count, jitter, velocity, seed));
+        }
+    }
+
+    private static VelocityDistribution readVelocity(JsonNode v, String path) {
+        String distribution = string(required(v, path, "distribution"), path + ".distribution");
+        switch (distribution) {
+            case "uniform" -> {
+                onlyKnownKeys(v, path, UNIFORM_KEYS);
+                return new VelocityDistribution.Uniform(requiredNumber(v, path, "scale"));
+            }
+            case "maxwell" -> {
+                onlyKnownKeys(v, path, MAXWELL_KEYS);
+                return new VelocityDistribution.Maxwell(requiredNumber(v, path, "temperature"));
+            }
+            default -> throw new BadInputException(path + ".distribution: unknown distribution '" + distribution
+                    + "' (known: uniform, maxwell)");
+        }
+    }
+
+    private static Effects readEffects(JsonNode e) {
+        for (Iterator<String> keys = e.fieldNames(); keys.hasNext(); ) {
+            String key = keys.next();
+            if (!EFFECTS.contains(key)) {
+                throw new BadInputException("effects." + key + ": unknown effect (known: " + String.join(", ", EFFECTS) + ")");
+            }
+        }
+        Effects effects = Effects.NONE;
+        JsonNode gravity = e.get("gravity");
+        if (gravity != null) {
+            array(gravity, "effects.gravity");
+            if (gravity.size() != 2) {
+                throw new BadInputException("effects.gravity: must have exactly 2 components [gx, gy], got " + gravity.size());
+            }
+            effects = effects.withGravity(number(gravity.get(0), "effects.gravity[0]"),
+                    number(gravity.get(1), "effects.gravity[1]"));
+        }
+        double restitution = optionalNumber(e, "effects", "restitution", 1);
+        double wallRestitution = optionalNumber(e, "effects", "wallRestitution", 1);
+        return effects.withRestitution(restitution, wallRestitution).withTc(optionalNumber(e, "effects", "tc", 0));
+    }
+
+    private static int speciesRef(JsonNode o, String path, Map<String, Integer> speciesByName, List<Species> species) {
+        String name = string(required(o, path, "species"), path + ".species");
+        Integer index = speciesByName.get(name);
+        if (index == null) {
+            throw new BadInputException(path + ".species: unknown species '" + name + "' (declared: "
+                    + String.join(", ", species.stream().map(Species::name).toList()) + ")");
+        }
+        return index;
+    }
+
+    // ---- typed access with paths ----
+
+    private static String child(String path, String key) {
+        return path.isEmpty() ? key : path + "." + key;
+    }
+
+    private static void onlyKnownKeys(JsonNode o, String path, Set<String> known) {
+        for (Iterator<String> keys = o.fieldNames(); keys.hasNext(); ) {
+            String key = keys.next();
+            if (!known.contains(key)) {
+                throw new BadInputException(child(path, key) + ": unknown key (known: "
+                        + String.join(", ", known.stream().sorted().toList()) + ")");
+            }
+        }
+    }
+
+    private static JsonNode required(JsonNode o, String path, String key) {
+        JsonNode v = o.get(key);
+        if (v == null) {
+            throw new BadInputException(child(path, key) + ": missing");
+        }
+        return v;
+    }
+
+    private static double requiredNumber(JsonNode o, String path, String key) {
+        JsonNode v = required(o, path, key);
+        // Fast path without building the child path: explicit particle lists can be long.
+        if (v.isNumber() && Double.isFinite(v.doubleValue())) {
+            return v.doubleValue();
+        }
+        return number(v, child(path, key));
+    }
+
+    private static double optionalNumber(JsonNode o, String path, String key, double absent) {
+        return o.has(key) ? requiredNumber(o, path, key) : absent;
+    }
+
+    private static double number(JsonNode v, String path) {
+        if (!v.isNumber()) {
+            throw wrongType(path, "number", v);
+        }
+        double d = v.doubleValue();
+        if (!Double.isFinite(d)) {
+            // NaN and Infinity literals never parse; only a number too large for a double gets here.
+            throw new BadInputException(path + ": must be a finite number, got one beyond the range of a double");
+        }
+        return d;
+    }
+
+    /** An integral number in [min, max]; integral doubles such as 1e5 count as integers. */
+    private static long integer(JsonNode v, String path, long min, long max) {
+        double d = number(v, path);
+        long value;
+        if (v.isIntegralNumber()) {
+            if (!v.canConvertToLong()) {
+                throw new BadInputException(path + ": must be " + (d < 0 ? ">= " + min : "at most " + max) + ", got " + v);
+            }
+            value = v.longValue();
+        } else {
+            if (d != Math.rint(d)) {
+                throw new BadInputException(path + ": must be an integer, got " + v);
+            }
+            if (Math.abs(d) >= 0x1p63) {
+                throw new BadInputException(path + ": must be " + (d < 0 ? ">= " + min : "at most " + max) + ", got " + v);
+            }
+            value = (long) d;
+        }
+        if (value < min) {
+            throw new BadInputException(path + ": must be >= " + min + ", got " + v);
+        }
+        if (value > max) {
+            throw new BadInputException(path + ": must be at most " + max + ", got " + v);
+        }
+        return value;
+    }
+
+    private static String string(JsonNode v, String path) {
+        if (!v.isTextual()) {
+            throw wrongType(path, "string", v);
+        }
+        return v.textValue();
+    }
+
+    private static boolean bool(JsonNode v, String path) {
+        if (!v.isBoolean()) {
+            throw wrongType(path, "boolean", v);
+        }
+        return v.booleanValue();
+    }
+
+    private static JsonNode object(JsonNode v, String path) {
+        if (!v.isObject()) {
+            throw wrongType(path, "object", v);
+        }
+        return v;
+    }
+
+    private static JsonNode array(JsonNode v, String path) {
+        if (!v.isArray()) {
+            throw wrongType(path, "array", v);
+        }
+        return v;
+    }
+
+    private static BadInputException wrongType(String path, String expected, JsonNode actual) {
+        return new BadInputException(path + ": must be a" + (expected.startsWith("a") || expected.startsWith("o") ? "n " : " ")
+                + expected + ", got " + typeOf(actual));
+    }
+
+    private static String typeOf(JsonNode v) {
+        return v.getNodeType().name().toLowerCase(java.util.Locale.ROOT);
+    }
+
+    // ---- error messages for what Jackson rejects ----
+
+    private static BadInputException malformed(JsonProcessingException e) {
+        String reason = readableReason(e);
+        JsonLocation at = e.getLocation();
+        if (at != null && at.getLineNr() > 0) {
+            return new BadInputException(
+                    "malformed JSON at line " + at.getLineNr() + " column " + at.getColumnNr() + ": " + reason);
+        }
+        return new BadInputException("malformed JSON: " + reason);
+    }
+
+    /** Jackson's own wording, first line only, with the advice to switch on lenient features removed. */
+    private static String readableReason(JsonProcessingException e) {
+        String original = e.getOriginalMessage() == null ? e.getClass().getSimpleName() : e.getOriginalMessage();
+        String line = original.lines().findFirst().orElse("").strip();
+        if (line.startsWith("Duplicate field ")) {
+            return "duplicate key " + line.substring("Duplicate field ".length());
+        }
+        if (line.startsWith("Trailing token")) {
+            return "unexpected content after the end of the scene object";
+        }
+        if (line.startsWith("Non-standard token")) {
+            int end = line.indexOf(':');
+            return (end > 0 ? line.substring(0, end) : line) + " (NaN and Infinity are not JSON numbers)";
+        }
+        if (line.contains("ALLOW_COMMENTS") || line.contains("comment")) {
+            return "comments are not allowed in JSON";
+        }
+        return line.length() > 200 ? line.substring(0, 200) + "..." : line;
+    }
+
+    private static String ioReason(IOException e) {
+        if (e instanceof NoSuchFileException) {
+            return "no such file";
+        }
+        if (e instanceof AccessDeniedException) {
+            return "permission denied";
+        }
+        if (e instanceof FileSystemException fse && fse.getReason() != null) {
+            return fse.getReason();
+        }
+        return e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+    }
+}

@@ -1,0 +1,278 @@
+package carom.engines.serial;
+
+import carom.core.engine.ProgressListener;
+import carom.core.engine.RunOptions;
+import carom.core.engine.RunResult;
+import carom.core.engine.SimulationStuckException;
+import carom.core.grid.CellGrid;
+import carom.core.grid.CellLists;
+import carom.core.grid.StepGrid;
+import carom.core.observe.Observables;
+import carom.core.observe.Pressure;
+import carom.core.observe.VirialAccumulator;
+import carom.core.physics.Boundary;
+import carom.core.physics.Flight;
+import carom.core.physics.PairLaw;
+import carom.core.physics.Physics;
+import carom.core.queue.ThreadedBucketQueue;
+import carom.core.scene.Scene;
+import carom.core.state.Discs;
+import java.util.Map;
+
+/**
+ * One run of the serial engine.
+ *
+ * <h2>Algorithm (Schrock 2016, ch. 2-3, made exact)</h2>
+ * Per step: synchronise every disc to the step start (the epoch; local clocks restart at 0 so they
+ * never grow large), bin discs into the {@link StepGrid}, choose the step length from the largest
+ * speed, put every collision of the step between neighbouring cells into the
+ * {@link ThreadedBucketQueue}, then process them in time order. After each collision the
+ * participants' potentials are removed and re-predicted against their neighbourhood. A collision that
+ * makes a disc fast enough to outrun the grid within the rest of the step ends the step early, so
+ * the guarantee holds exactly; the rest is found in the next step.
+ *
+ * <h2>Invariants</h2>
+ * <ul>
+ *   <li>Every disc stays within {@code slack} of its binned position until the step end.</li>
+ *   <li>The queue holds exactly the potentials, within the step, of each disc's current trajectory
+ *       against its neighbourhood (eager removal; no stale events).</li>
+ *   <li>Events are processed in nondecreasing time; ties in any order (SPEC).</li>
+ * </ul>
+ */
+final class SerialRun {
+    private static final int PRESSURE_BLOCKS = 20;
+
+    private final Scene scene;
+    private final Discs d;
+    private final int n;
+    private final double until;
+    private final Flight flight;
+    private final Boundary boundary;
+    private final int walls;
+    private final double pairRestitution;
+    private final double wallRestitution;
+    private final StepGrid stepGrid;
+    private final CellGrid grid;
+    private final CellLists cells = new CellLists();
+    private final ThreadedBucketQueue queue = new ThreadedBucketQueue();
+    private final double[] startX;
+    private final double[] startY;
+    private final ProgressListener progress;
+    private final VirialAccumulator virial;
+    private final long stuckLimit;
+
+    private double stepEnd;
+    private long pairCollisions;
+    private long wallCollisions;
+    private long predictions;
+    private long steps;
+    private long earlyStepEnds;
+    private double lastEventTime = Double.NaN;
+    private long eventsAtLastTime;
+
+    SerialRun(Scene scene, RunOptions options) {
+        this.scene = scene;
+        this.d = scene.newDiscs();
+        this.n = d.n;
+        this.until = options.until();
+        Physics physics = Physics.of(scene);
+        this.flight = physics.flight;
+        this.boundary = physics.boundary;
+        this.walls = boundary.wallCount();
+        this.pairRestitution = physics.pairRestitution;
+        this.wallRestitution = physics.wallRestitution;
+        double cellFactor = options.tunable("cellFactor", 1.5);
+        if (!(cellFactor > 1)) {
+            throw new carom.core.BadInputException("engine option cellFactor: must be > 1, got " + cellFactor);
+        }
+        this.stepGrid = StepGrid.plan(scene.box(), 2 * d.maxRadius(), cellFactor, n);
+        this.grid = stepGrid.grid;
+        this.startX = new double[n];
+        this.startY = new double[n];
+        this.progress = options.progress();
+        this.virial = boundary.periodic() ? new VirialAccumulator(0, until, PRESSURE_BLOCKS) : null;
+        this.stuckLimit = Math.max(100_000L, 10L * n);
+    }
+
+    RunResult run() {
+        long started = System.nanoTime();
+        double energyStart = Observables.kineticEnergy(d);
+        double[] momentumStart = Observables.momentum(d);
+        double epoch = 0;
+        while (epoch < until) {
+            double remaining = until - epoch;
+            double length = step(epoch, remaining);
+            epoch = length >= remaining ? until : epoch + length;
+            progress.simulatedTime(epoch);
+        }
+        for (int i = 0; i < n; i++) {
+            d.t[i] = until;
+        }
+        double seconds = (System.nanoTime() - started) * 1e-9;
+        double energyEnd = Observables.kineticEnergy(d);
+        Pressure pressure = virial == null ? null
+                : virial.pressure(Observables.mobileCount(d), 0.5 * (energyStart + energyEnd), scene.box().area());
+        return new RunResult("serial", true, d, until, pairCollisions, wallCollisions, pairCollisions + wallCollisions,
+                energyStart, energyEnd, momentumStart, Observables.momentum(d), pressure, 0, seconds,
+                Map.of("steps", steps, "predictions", predictions, "earlyStepEnds", earlyStepEnds));
+    }
+
+    /** Runs one step from local time 0 (absolute {@code epoch}); returns its length. */
+    private double step(double epoch, double remaining) {
+        steps++;
+        stepEnd = stepGrid.stepLength(d.maxSpeed(), remaining);
+        cells.rebuild(grid, d.x, d.y, n);
+        System.arraycopy(d.x, 0, startX, 0, n);
+        System.arraycopy(d.y, 0, startY, 0, n);
+        queue.reset(n, stepEnd, Math.max(16, n));
+        findStepPotentials();
+        processUntilStepEnd(epoch);
+        double end = stepEnd;
+        for (int i = 0; i < n; i++) {
+            flight.advance(d, i, end);
+            d.x[i] = boundary.wrapX(d.x[i]);
+            d.y[i] = boundary.wrapY(d.y[i]);
+            d.t[i] = 0;
+        }
+        return end;
+    }
+
+    private void findStepPotentials() {
+        for (int i = 0; i < n; i++) {
+            predictWalls(i, 0);
+            int cell = cells.cellOf[i];
+            for (int k = grid.neighbourStart[cell], kEnd = grid.neighbourStart[cell + 1]; k < kEnd; k++) {
+                int other = grid.neighbours[k];
+                for (int m = cells.start[other], mEnd = cells.start[other + 1]; m < mEnd; m++) {
+                    int j = cells.items[m];
+                    if (j > i) {
+                        predictPair(i, j, 0);
+                    }
+                }
+            }
+        }
+    }
+
+    private void processUntilStepEnd(double epoch) {
+        int node;
+        while ((node = queue.peekMin()) >= 0) {
+            double now = queue.time(node);
+            if (now > stepEnd) {
+                return;
+            }
+            int a = queue.discA(node);
+            int b = queue.discB(node);
+            guardAgainstEndlessInstant(epoch, now, a, b);
+            if (b >= 0) {
+                collidePair(epoch, now, a, b);
+            } else {
+                collideWall(now, a, -1 - b);
+            }
+        }
+    }
+
+    private void collidePair(double epoch, double now, int a, int b) {
+        flight.advance(d, a, now);
+        flight.advance(d, b, now);
+        double dx = boundary.separationX(d.x[b] - d.x[a]);
+        double dy = boundary.separationY(d.y[b] - d.y[a]);
+        double w = PairLaw.collide(d, a, b, dx, dy, pairRestitution);
+        pairCollisions++;
+        if (virial != null) {
+            virial.add(epoch + now, w);
+        }
+        // A fixed partner's trajectory did not change: its other potentials stay valid.
+        boolean aMobile = d.invMass[a] > 0;
+        boolean bMobile = d.invMass[b] > 0;
+        if (aMobile) {
+            queue.removeAllOf(a);
+        }
+        if (bMobile) {
+            queue.removeAllOf(b);
+        }
+        if (aMobile) {
+            afterVelocityChange(a, now);
+        }
+        if (bMobile) {
+            afterVelocityChange(b, now);
+        }
+    }
+
+    private void collideWall(double now, int i, int wall) {
+        flight.advance(d, i, now);
+        boundary.reflect(d, i, wall, wallRestitution);
+        wallCollisions++;
+        queue.removeAllOf(i);
+        afterVelocityChange(i, now);
+    }
+
+    /** Keeps the grid guarantee for disc i's new velocity, then re-predicts its potentials. */
+    private void afterVelocityChange(int i, double now) {
+        double ex = d.x[i] - startX[i];
+        double ey = d.y[i] - startY[i];
+        double speed = Math.sqrt(d.vx[i] * d.vx[i] + d.vy[i] * d.vy[i]);
+        double end = stepGrid.latestStepEnd(now, Math.sqrt(ex * ex + ey * ey), speed, stepEnd);
+        if (end < stepEnd) {
+            stepEnd = end;
+            earlyStepEnds++;
+        }
+        predictWalls(i, now);
+        int cell = cells.cellOf[i];
+        for (int k = grid.neighbourStart[cell], kEnd = grid.neighbourStart[cell + 1]; k < kEnd; k++) {
+            int other = grid.neighbours[k];
+            for (int m = cells.start[other], mEnd = cells.start[other + 1]; m < mEnd; m++) {
+                int j = cells.items[m];
+                if (j != i) {
+                    predictPair(i, j, now);
+                }
+            }
+        }
+    }
+
+    private void predictPair(int i, int j, double now) {
+        double xi = flight.x(d, i, now);
+        double yi = flight.y(d, i, now);
+        double dx = boundary.separationX(flight.x(d, j, now) - xi);
+        double dy = boundary.separationY(flight.y(d, j, now) - yi);
+        double dt = PairLaw.timeToContact(dx, dy, d.vx[j] - d.vx[i], d.vy[j] - d.vy[i], d.radius[i] + d.radius[j]);
+        double t = now + dt;
+        if (t <= stepEnd) {
+            queue.add(t, i, j);
+            predictions++;
+        }
+    }
+
+    private void predictWalls(int i, double now) {
+        if (walls == 0 || d.invMass[i] == 0) {
+            return;
+        }
+        double x = flight.x(d, i, now);
+        double y = flight.y(d, i, now);
+        for (int w = 0; w < walls; w++) {
+            double t = now + boundary.timeToWall(w, x, y, d.vx[i], d.vy[i], d.radius[i]);
+            if (t <= stepEnd) {
+                queue.add(t, i, -1 - w);
+                predictions++;
+            }
+        }
+    }
+
+    /**
+     * Elastic hard discs have finitely many collisions at one instant; endlessly many means resting
+     * contact, which is not modelled. Stop with the discs named instead of hanging.
+     */
+    private void guardAgainstEndlessInstant(double epoch, double now, int a, int b) {
+        if (now != lastEventTime) {
+            lastEventTime = now;
+            eventsAtLastTime = 0;
+            return;
+        }
+        if (++eventsAtLastTime > stuckLimit) {
+            String with = b >= 0 ? "disc " + b : "wall " + (-1 - b);
+            throw new SimulationStuckException(String.format(
+                    "more than %d collisions at the single instant t = %s, the last between disc %d (%s) and %s: "
+                            + "resting contact is not modelled; separate the discs or give them velocities",
+                    stuckLimit, epoch + now, a, scene.originOf(a), with));
+        }
+    }
+}
