@@ -24,5 +24,13 @@ public interface Engine {
      */
     void checkSupports(Scene scene);
 
+    /**
+     * The engine options ({@code --option key=value}) this engine understands; any other key is bad
+     * input, so that a typo never silently changes a run.
+     */
+    default java.util.Set<String> tunables() {
+        return java.util.Set.of();
+    }
+
     RunResult run(Scene scene, RunOptions options);
 }

@@ -50,20 +50,32 @@ public final class StepGrid {
         return cells <= 2 ? Double.POSITIVE_INFINITY : (cellSide - maxDiameter) / 2;
     }
 
-    /** Length of a step that starts with largest speed {@code maxSpeed}, at most {@code remaining}. */
-    public double stepLength(double maxSpeed, double remaining) {
-        double dt = maxSpeed > 0 ? slack / maxSpeed : Double.POSITIVE_INFINITY;
-        return Math.min(dt, remaining);
+    /**
+     * Length of a step that starts with largest speed {@code maxSpeed} under acceleration at most
+     * {@code maxAcceleration}, at most {@code remaining}: no disc travels more than the slack.
+     */
+    public double stepLength(double maxSpeed, double maxAcceleration, double remaining) {
+        return Math.min(timeToTravel(slack, maxSpeed, maxAcceleration), remaining);
+    }
+
+    /** Time to travel {@code distance} from speed v under acceleration a: root of v t + a t^2/2 = distance. */
+    private static double timeToTravel(double distance, double v, double a) {
+        if (a == 0) {
+            return v > 0 ? distance / v : Double.POSITIVE_INFINITY;
+        }
+        return 2 * distance / (v + Math.sqrt(v * v + 2 * a * distance));
     }
 
     /**
      * The latest a step may end once a disc, {@code displacement} away from where it was binned at
-     * local time {@code now}, moves on at {@code speed}: so that it stays within the slack.
+     * local time {@code now}, moves on at {@code speed} under {@code acceleration}: so that it stays
+     * within the slack.
      */
-    public double latestStepEnd(double now, double displacement, double speed, double stepEnd) {
-        if (speed == 0 || displacement + speed * (stepEnd - now) <= slack) {
+    public double latestStepEnd(double now, double displacement, double speed, double acceleration, double stepEnd) {
+        double rest = stepEnd - now;
+        if (displacement + (speed + 0.5 * acceleration * rest) * rest <= slack) {
             return stepEnd;
         }
-        return now + Math.max(0, slack - displacement) / speed;
+        return now + timeToTravel(Math.max(0, slack - displacement), speed, acceleration);
     }
 }

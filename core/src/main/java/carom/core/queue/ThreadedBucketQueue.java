@@ -78,7 +78,12 @@ public final class ThreadedBucketQueue {
         double slice = t * bucketsPerTime;
         int bucket = slice < buckets ? (int) slice : buckets - 1;
         if (bucket < cursor) {
-            bucket = cursor; // rounding only: events are never earlier than the one being processed
+            // Rounding only (events are never earlier than the one being processed), or a queue
+            // drained by peekMin, whose cursor ran past the last bucket.
+            if (cursor == buckets) {
+                cursor = buckets - 1;
+            }
+            bucket = cursor;
         }
         bucketOf[node] = bucket;
         int head = bucketHead[bucket];

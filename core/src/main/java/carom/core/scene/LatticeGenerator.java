@@ -9,7 +9,7 @@ import java.util.SplittableRandom;
  * {@code jitter} times the free gap in each axis; then draws velocities.
  *
  * <p>Random draws, all from one {@code SplittableRandom(seed)}: first the x and y jitter of every disc
- * in id order, then the velocity components of every disc in id order.
+ * in id order (none when jitter is 0), then the velocity components of every disc in id order.
  */
 final class LatticeGenerator {
     private LatticeGenerator() {

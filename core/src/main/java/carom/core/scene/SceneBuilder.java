@@ -127,6 +127,9 @@ public final class SceneBuilder {
         }
         checkInsideBox(d, blockStarts);
         checkNoOverlaps(d, blockStarts);
+        if (effects.hasGravity()) {
+            checkNoneRestingOnWalls(d, blockStarts);
+        }
         return new Scene(name, box, species, effects, until, d, blockStarts);
     }
 
@@ -187,7 +190,7 @@ public final class SceneBuilder {
         long needed = total * BYTES_PER_DISC_ESTIMATE;
         if (total > Integer.MAX_VALUE - 16 || needed > maxHeap) {
             throw new BadInputException(String.format(
-                    "the scene holds %d discs, which need about %d MiB of heap, but this JVM may use %d MiB "
+                    "generate: the scene holds %d discs, which need about %d MiB of heap, but this JVM may use %d MiB "
                             + "(set CAROM_JAVA_OPTS=-Xmx... or use fewer discs)",
                     total, needed >> 20, maxHeap >> 20));
         }
@@ -252,13 +255,64 @@ public final class SceneBuilder {
                     double dy = boundary.separationY(d.y[j] - d.y[i]);
                     double sigma = d.radius[i] + d.radius[j];
                     double dist = Math.sqrt(dx * dx + dy * dy);
-                    if (sigma - dist > CONTACT_TOLERANCE * sigma + coordinateUlp) {
+                    double tolerance = CONTACT_TOLERANCE * sigma + coordinateUlp;
+                    if (sigma - dist > tolerance) {
                         throw new BadInputException(String.format(
                                 "discs %d and %d overlap (%s and %s): centres %s apart, radii add up to %s",
                                 i, j, describe(blockStarts, i), describe(blockStarts, j), dist, sigma));
                     }
+                    if (dist - sigma <= tolerance && effects.hasGravity() && (d.invMass[i] == 0) != (d.invMass[j] == 0)) {
+                        checkNotRestingOnPeg(d, blockStarts, i, j, dx / dist, dy / dist);
+                    }
                 }
             }
+        }
+    }
+
+    /**
+     * SPEC: resting contact is not modelled, so a disc may not start touching a wall that gravity
+     * presses it against unless it moves away from it.
+     */
+    private void checkNoneRestingOnWalls(Discs d, int[] blockStarts) {
+        double gx = effects.gravityX();
+        double gy = effects.gravityY();
+        double coordinateUlp = 4 * Math.ulp(Math.max(box.width(), box.height()));
+        for (int i = 0; i < d.n; i++) {
+            if (d.invMass[i] == 0) {
+                continue;
+            }
+            double r = d.radius[i];
+            double tolerance = CONTACT_TOLERANCE * r + coordinateUlp;
+            String wall = null;
+            if (d.x[i] - r <= tolerance && gx < 0 && d.vx[i] <= 0) {
+                wall = "left";
+            } else if (box.width() - r - d.x[i] <= tolerance && gx > 0 && d.vx[i] >= 0) {
+                wall = "right";
+            } else if (d.y[i] - r <= tolerance && gy < 0 && d.vy[i] <= 0) {
+                wall = "bottom";
+            } else if (box.height() - r - d.y[i] <= tolerance && gy > 0 && d.vy[i] >= 0) {
+                wall = "top";
+            }
+            if (wall != null && !box.periodic()) {
+                throw new BadInputException(String.format(
+                        "%s: disc %d rests on the %s wall under gravity; resting contact is not modelled: "
+                                + "lift it or give it a velocity away from the wall", describe(blockStarts, i), i, wall));
+            }
+        }
+    }
+
+    /** Same for a mobile disc touching a fixed one: (nx, ny) is the unit vector from i to j. */
+    private void checkNotRestingOnPeg(Discs d, int[] blockStarts, int i, int j, double nx, double ny) {
+        int mobile = d.invMass[i] == 0 ? j : i;
+        int peg = mobile == i ? j : i;
+        double sign = mobile == i ? 1 : -1; // unit vector from the mobile disc to the peg
+        double pressing = sign * (effects.gravityX() * nx + effects.gravityY() * ny);
+        double approaching = sign * (d.vx[mobile] * nx + d.vy[mobile] * ny);
+        if (pressing > 0 && approaching >= 0) {
+            throw new BadInputException(String.format(
+                    "%s: disc %d rests on fixed disc %d (%s) under gravity; resting contact is not modelled: "
+                            + "lift it or give it a velocity away from the fixed disc",
+                    describe(blockStarts, mobile), mobile, peg, describe(blockStarts, peg)));
         }
     }
 

@@ -387,7 +387,13 @@ public final class SceneReader {
     /** Jackson's own wording, first line only, with the advice to switch on lenient features removed. */
     private static String readableReason(JsonProcessingException e) {
         String original = e.getOriginalMessage() == null ? e.getClass().getSimpleName() : e.getOriginalMessage();
-        String line = original.lines().findFirst().orElse("").strip();
+        // Jackson names the source of a location inline; keep just the line and column.
+        String line = original.lines().findFirst().orElse("").strip()
+                .replaceAll("\\[Source: .*?; line: (\\d+), column: (\\d+)\\]", "line $1 column $2")
+                .replaceAll("\\[Source: .*?; line: (\\d+)\\]", "line $1");
+        if (line.startsWith("Unexpected close marker") && line.contains("for root")) {
+            return "unexpected content after the end of the scene object";
+        }
         if (line.startsWith("Duplicate field ")) {
             return "duplicate key " + line.substring("Duplicate field ".length());
         }

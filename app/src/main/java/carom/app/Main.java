@@ -1,0 +1,74 @@
+package carom.app;
+
+import java.io.OutputStreamWriter;
+import java.io.PrintStream;
+import java.io.PrintWriter;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Spec;
+
+/**
+ * The {@code carom} command line. {@link #run} does all the work against given streams so that tests
+ * can drive it in-process; {@link #main} only turns its result into the process's exit status.
+ */
+@Command(name = "carom",
+        mixinStandardHelpOptions = true,
+        versionProvider = VersionProvider.class,
+        description = "Exact event-driven simulation of hard discs in 2D.",
+        subcommands = {SimulateCommand.class, EnginesCommand.class})
+public final class Main implements Runnable {
+    /** Exit status for a bad scene, bad option or other bad input. */
+    public static final int BAD_INPUT = 2;
+    /** Exit status for a failure inside carom itself. */
+    public static final int INTERNAL_FAILURE = 1;
+
+    @Spec
+    CommandSpec spec;
+
+    public static void main(String[] args) {
+        System.exit(run(System.out, System.err, args));
+    }
+
+    /** Runs one carom command line, writing to {@code out} and {@code err}; returns the exit status. */
+    public static int run(PrintStream out, PrintStream err, String... args) {
+        PrintWriter outWriter = new PrintWriter(new OutputStreamWriter(out, out.charset()), true);
+        PrintWriter errWriter = new PrintWriter(new OutputStreamWriter(err, err.charset()), true);
+        ErrorReporting errors = new ErrorReporting(errWriter, ErrorReporting.debugFromEnvironment());
+        // simulate draws its progress bar only on a real terminal, so it is told which streams these are.
+        CommandLine cl = new CommandLine(new Main(), new CommandFactory(out, err));
+        cl.setOut(outWriter);
+        cl.setErr(errWriter);
+        cl.setParameterExceptionHandler(errors::usageError);
+        cl.setExecutionExceptionHandler(errors::executionError);
+        try {
+            return cl.execute(args);
+        } catch (OutOfMemoryError e) {
+            // picocli lets Errors through; the heap is mostly free again once the run's arrays are gone.
+            return errors.outOfMemory(e);
+        } catch (Throwable e) {
+            return errors.internalFailure(e);
+        } finally {
+            outWriter.flush();
+            errWriter.flush();
+        }
+    }
+
+    /** {@code carom} alone: say which commands exist rather than doing nothing. */
+    @Override
+    public void run() {
+        throw new ParameterException(spec.commandLine(), "missing command: use 'carom simulate SCENE.json' or 'carom engines'");
+    }
+
+    /** Hands the raw streams to the command that needs to know what they are. */
+    private record CommandFactory(PrintStream out, PrintStream err) implements CommandLine.IFactory {
+        @Override
+        public <K> K create(Class<K> cls) throws Exception {
+            if (cls == SimulateCommand.class) {
+                return cls.cast(new SimulateCommand(out, err));
+            }
+            return CommandLine.defaultFactory().create(cls);
+        }
+    }
+}

@@ -1,0 +1,136 @@
+package carom.app;
+
+import carom.core.engine.ProgressListener;
+import java.io.PrintStream;
+import java.util.Locale;
+
+/**
+ * A progress bar on an interactive stderr, {@code [=====     ]  42%  t=4.2/10}, redrawn by a daemon
+ * thread from the latest simulated time the engine reported. The engine's side is one volatile write,
+ * so reporting costs it nothing measurable. Short runs never show a bar: it appears only after
+ * {@link #DELAY_MILLIS}, and it is erased when the run ends.
+ */
+final class ProgressBar implements ProgressListener, AutoCloseable {
+    static final long DELAY_MILLIS = 2000;
+    private static final long PERIOD_MILLIS = 200;
+    private static final int WIDTH = 30;
+
+    private final PrintStream err;
+    private final double until;
+    private final Thread painter;
+    private volatile double time;
+    /** Length of what is on screen, to erase it; touched only by the painter until it has stopped. */
+    private int drawn;
+
+    private ProgressBar(PrintStream err, double until, boolean visible) {
+        this.err = err;
+        this.until = until;
+        if (visible) {
+            painter = new Thread(this::paint, "carom-progress");
+            painter.setDaemon(true);
+            painter.start();
+        } else {
+            painter = null;
+        }
+    }
+
+    /**
+     * A bar that shows when {@code err} is the process's stderr and a terminal; otherwise (tests, pipes,
+     * files) one that only records the time and never draws.
+     */
+    static ProgressBar forRun(PrintStream err, double until) {
+        return new ProgressBar(err, until, err == System.err && Terminal.interactive());
+    }
+
+    @Override
+    public void simulatedTime(double t) {
+        time = t;
+    }
+
+    private void paint() {
+        try {
+            Thread.sleep(DELAY_MILLIS);
+            while (!Thread.currentThread().isInterrupted()) {
+                draw(render(time, until));
+                Thread.sleep(PERIOD_MILLIS);
+            }
+        } catch (InterruptedException e) {
+            // close() asks us to stop.
+        }
+    }
+
+    private void draw(String bar) {
+        StringBuilder sb = new StringBuilder("\r").append(bar);
+        for (int i = bar.length(); i < drawn; i++) {
+            sb.append(' ');
+        }
+        drawn = bar.length();
+        err.print(sb);
+        err.flush();
+    }
+
+    static String render(double t, double until) {
+        double fraction = until > 0 ? Math.max(0, Math.min(1, t / until)) : 0;
+        int filled = (int) Math.round(fraction * WIDTH);
+        StringBuilder sb = new StringBuilder(WIDTH + 32).append('[');
+        for (int i = 0; i < WIDTH; i++) {
+            sb.append(i < filled ? '=' : ' ');
+        }
+        return sb.append(']').append(String.format(Locale.ROOT, " %3d%%  t=", (int) Math.floor(100 * fraction)))
+                .append(compact(t)).append('/').append(compact(until)).toString();
+    }
+
+    /** Four significant digits without trailing zeros: 4.2, 10, 1.235e+06. */
+    static String compact(double v) {
+        String s = String.format(Locale.ROOT, "%.4g", v);
+        if (s.indexOf('.') < 0 || s.indexOf('e') >= 0) {
+            return s;
+        }
+        int end = s.length();
+        while (s.charAt(end - 1) == '0') {
+            end--;
+        }
+        if (s.charAt(end - 1) == '.') {
+            end--;
+        }
+        return s.substring(0, end);
+    }
+
+    /** Stops redrawing and erases the bar, so that the summary or an error starts on a clean line. */
+    @Override
+    public void close() {
+        if (painter == null) {
+            return;
+        }
+        painter.interrupt();
+        try {
+            painter.join();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        if (drawn > 0) {
+            err.print("\r" + " ".repeat(drawn) + "\r");
+            err.flush();
+        }
+    }
+
+    /** Whether stderr goes to a person. */
+    static final class Terminal {
+        private Terminal() {
+        }
+
+        static boolean interactive() {
+            java.io.Console console = System.console();
+            if (console == null) {
+                return false;
+            }
+            // Since Java 22 System.console() may exist for redirected streams; Console.isTerminal()
+            // (absent in 21, which we compile for) tells them apart.
+            try {
+                return (Boolean) java.io.Console.class.getMethod("isTerminal").invoke(console);
+            } catch (ReflectiveOperationException e) {
+                return true;
+            }
+        }
+    }
+}

@@ -1,0 +1,64 @@
+package carom.app;
+
+import carom.core.engine.RunResult;
+import carom.core.observe.Pressure;
+import java.io.PrintWriter;
+import java.nio.charset.Charset;
+import java.util.Locale;
+import java.util.Map;
+import java.util.TreeMap;
+
+/**
+ * What {@code simulate} prints when no output file is asked for: aligned {@code key  value} lines for a
+ * person to read. Physical quantities keep full precision ({@link Double#toString}); timings are rounded.
+ */
+final class ReadableSummary {
+    private static final int KEY_WIDTH = 22;
+
+    private ReadableSummary() {
+    }
+
+    static void print(String sceneName, int particles, int threads, RunResult r, PrintWriter out, Charset charset) {
+        String plusMinus = charset.newEncoder().canEncode('\u00b1') ? " \u00b1 " : " +/- ";
+        line(out, "scene", sceneName);
+        line(out, "engine", r.engine() + (r.exact() ? " (exact)" : " (relaxed)"));
+        line(out, "discs", Integer.toString(particles));
+        line(out, "until", Double.toString(r.until()));
+        line(out, "threads", Integer.toString(threads));
+        line(out, "pair collisions", Long.toString(r.pairCollisions()));
+        line(out, "wall collisions", Long.toString(r.wallCollisions()));
+        line(out, "events", Long.toString(r.events()));
+        line(out, "wall seconds", String.format(Locale.ROOT, "%.3f", r.wallSeconds()));
+        line(out, "collisions per second", String.format(Locale.ROOT, "%.4g", r.collisionsPerSecond()));
+        line(out, "energy initial", Double.toString(r.kineticEnergyStart()));
+        line(out, "energy final", Double.toString(r.kineticEnergyEnd()));
+        line(out, "energy drift", String.format(Locale.ROOT, "%.3e", r.energyDrift()));
+        line(out, "momentum initial", vector(r.momentumStart()));
+        line(out, "momentum final", vector(r.momentumEnd()));
+        Pressure p = r.pressure();
+        if (p != null) {
+            line(out, "pressure Z", String.format(Locale.ROOT, "%.6g%s%.2g  (P = %.6g%s%.2g, %d blocks)",
+                    p.compressibility(), plusMinus, p.compressibilityError(),
+                    p.pressure(), plusMinus, p.pressureError(), p.blocks()));
+        }
+        line(out, "causality violations", Long.toString(r.causalityViolations()));
+        Map<String, Long> counters = r.counters() == null ? Map.of() : new TreeMap<>(r.counters());
+        if (!counters.isEmpty()) {
+            out.println("counters");
+            counters.forEach((k, v) -> line(out, "  " + k, Long.toString(v)));
+        }
+        out.flush();
+    }
+
+    private static void line(PrintWriter out, String key, String value) {
+        StringBuilder sb = new StringBuilder(KEY_WIDTH + value.length() + 2).append(key);
+        do {
+            sb.append(' ');
+        } while (sb.length() < KEY_WIDTH);
+        out.println(sb.append(' ').append(value));
+    }
+
+    private static String vector(double[] v) {
+        return "(" + v[0] + ", " + v[1] + ")";
+    }
+}

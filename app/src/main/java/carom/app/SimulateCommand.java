@@ -1,0 +1,161 @@
+package carom.app;
+
+import carom.core.BadInputException;
+import carom.core.engine.Engine;
+import carom.core.engine.RunOptions;
+import carom.core.engine.RunResult;
+import carom.core.scene.Scene;
+import carom.core.scene.SceneReader;
+import carom.engines.EngineCatalog;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.PrintStream;
+import java.nio.charset.Charset;
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import java.util.function.Supplier;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code carom simulate}: read a scene, run it on an engine, write the final state and a summary.
+ *
+ * <p>Everything that can be wrong with the input is checked before the run starts (the scene, the
+ * engine and whether it supports the scene, the options, the output directories), so that a long run
+ * is never thrown away at the end. Output files appear whole or not at all ({@link AtomicOutput}).
+ */
+@Command(name = "simulate", mixinStandardHelpOptions = true, sortOptions = false,
+        description = "Simulate a scene to its end time. Without --out or --summary, print a readable summary.")
+final class SimulateCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "SCENE.json", description = "The scene file.")
+    String sceneFile;
+
+    @Option(names = "--engine", paramLabel = "NAME",
+            description = "Engine to run (see 'carom engines'); default: the exact serial reference.")
+    String engineName;
+
+    @Option(names = "--until", paramLabel = "T", description = "Simulated end time, overriding the scene's.")
+    Double until;
+
+    @Option(names = "--threads", paramLabel = "K",
+            description = "Worker threads for parallel engines; default: the available processors.")
+    Integer threads;
+
+    @Option(names = "--out", paramLabel = "FINAL.csv", description = "Write the final state here (id,x,y,vx,vy).")
+    Path out;
+
+    @Option(names = "--summary", paramLabel = "SUMMARY.json", description = "Write the run's summary here as JSON.")
+    Path summary;
+
+    @Option(names = "--option", paramLabel = "KEY=VALUE",
+            description = "Engine tunable, for example cellFactor=2; may be repeated.")
+    Map<String, String> tunables = new LinkedHashMap<>();
+
+    /** What stdout can encode (whether to print a plus-minus sign). */
+    private final Charset stdoutCharset;
+    /** The raw stderr, for the progress bar (which must know whether it is a terminal). */
+    private final PrintStream err;
+
+    SimulateCommand(PrintStream out, PrintStream err) {
+        this.stdoutCharset = out.charset();
+        this.err = err;
+    }
+
+    @Override
+    public Integer call() {
+        Scene fromFile = aboutScene(() -> SceneReader.read(scenePath()));
+        Engine engine = aboutScene(() -> engineName == null ? EngineCatalog.defaultEngine() : EngineCatalog.byName(engineName));
+        Scene scene = until == null ? fromFile : fromFile.withUntil(checkedUntil(until));
+        int workers = threads == null ? Runtime.getRuntime().availableProcessors() : checkedThreads(threads);
+        aboutScene(() -> {
+            engine.checkSupports(scene);
+            return null;
+        });
+        checkTunables(engine);
+        checkOutputs();
+
+        RunResult result;
+        try (ProgressBar bar = ProgressBar.forRun(err, scene.until())) {
+            RunOptions options = new RunOptions(scene.until(), workers, bar, tunables);
+            result = aboutScene(() -> engine.run(scene, options));
+        }
+
+        if (out == null && summary == null) {
+            ReadableSummary.print(scene.name(), scene.size(), workers, result, spec.commandLine().getOut(), stdoutCharset);
+            return 0;
+        }
+        try (AtomicOutput files = new AtomicOutput()) {
+            if (out != null) {
+                files.stage(out, w -> FinalStateCsv.write(result.finalState(), w));
+            }
+            if (summary != null) {
+                ObjectNode json = SummaryJson.toJson(scene.name(), scene.size(), workers, result);
+                files.stage(summary, w -> SummaryJson.write(json, w));
+            }
+            files.commit();
+        }
+        return 0;
+    }
+
+    private Path scenePath() {
+        try {
+            return Path.of(sceneFile);
+        } catch (InvalidPathException e) {
+            throw new BadInputException("not a valid file name: " + e.getReason());
+        }
+    }
+
+    private static double checkedUntil(double t) {
+        if (!(t > 0) || Double.isInfinite(t)) {
+            throw new BadInputException("--until: must be a finite number > 0, got " + t);
+        }
+        return t;
+    }
+
+    private static int checkedThreads(int k) {
+        if (k < 1) {
+            throw new BadInputException("--threads: must be at least 1, got " + k);
+        }
+        return k;
+    }
+
+    /** An option key the engine does not know is a typo, never silently ignored. */
+    private void checkTunables(Engine engine) {
+        for (String key : tunables.keySet()) {
+            if (!engine.tunables().contains(key)) {
+                String known = engine.tunables().isEmpty() ? "none" : String.join(", ", new java.util.TreeSet<>(engine.tunables()));
+                throw new BadInputException("--option " + key + ": engine " + engine.name()
+                        + " has no such option (known: " + known + ")");
+            }
+        }
+    }
+
+    private void checkOutputs() {
+        if (out != null && summary != null && out.toAbsolutePath().normalize().equals(summary.toAbsolutePath().normalize())) {
+            throw new BadInputException("--out and --summary name the same file " + out);
+        }
+        if (out != null) {
+            AtomicOutput.checkWritable(out, "--out");
+        }
+        if (summary != null) {
+            AtomicOutput.checkWritable(summary, "--summary");
+        }
+    }
+
+    /** Bad input found while handling the scene names the scene file, as SPEC asks. */
+    private <T> T aboutScene(Supplier<T> step) {
+        try {
+            return step.get();
+        } catch (BadInputException e) {
+            throw new BadInputException(sceneFile + ": " + e.getMessage());
+        }
+    }
+}

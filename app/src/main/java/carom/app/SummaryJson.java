@@ -1,0 +1,99 @@
+package carom.app;
+
+import carom.core.engine.RunResult;
+import carom.core.observe.Pressure;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.SerializationFeature;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.IOException;
+import java.io.Writer;
+import java.util.Map;
+import java.util.TreeMap;
+
+/**
+ * SUMMARY.json: SPEC's keys ({@code engine, exact, particles, until, collisions, kineticEnergy,
+ * momentum, wallSeconds}) plus what a benchmark needs to compare runs: the scene, threads, events,
+ * throughput, energy drift, causality violations, the pressure of periodic scenes, the engine's
+ * counters and the machine it ran on.
+ */
+final class SummaryJson {
+    private static final ObjectMapper MAPPER = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
+
+    private SummaryJson() {
+    }
+
+    static ObjectNode toJson(String sceneName, int particles, int threads, RunResult r) {
+        ObjectNode root = MAPPER.createObjectNode();
+        root.put("scene", sceneName);
+        root.put("engine", r.engine());
+        root.put("exact", r.exact());
+        root.put("particles", particles);
+        number(root, "until", r.until());
+        root.put("threads", threads);
+
+        ObjectNode collisions = root.putObject("collisions");
+        collisions.put("pair", r.pairCollisions());
+        collisions.put("wall", r.wallCollisions());
+        root.put("events", r.events());
+        number(root, "wallSeconds", r.wallSeconds());
+        number(root, "collisionsPerSecond", r.collisionsPerSecond());
+
+        ObjectNode energy = root.putObject("kineticEnergy");
+        number(energy, "initial", r.kineticEnergyStart());
+        number(energy, "final", r.kineticEnergyEnd());
+        number(root, "energyDrift", r.energyDrift());
+
+        ObjectNode momentum = root.putObject("momentum");
+        vector(momentum.putArray("initial"), r.momentumStart());
+        vector(momentum.putArray("final"), r.momentumEnd());
+
+        root.put("causalityViolations", r.causalityViolations());
+        Pressure p = r.pressure();
+        if (p != null) {
+            ObjectNode pressure = root.putObject("pressure");
+            number(pressure, "Z", p.compressibility());
+            number(pressure, "Zerror", p.compressibilityError());
+            number(pressure, "P", p.pressure());
+            number(pressure, "Perror", p.pressureError());
+            pressure.put("blocks", p.blocks());
+        }
+        ObjectNode counters = root.putObject("counters");
+        // Counters in a stable order, so that summaries diff cleanly.
+        Map<String, Long> sorted = r.counters() == null ? Map.of() : new TreeMap<>(r.counters());
+        sorted.forEach(counters::put);
+
+        ObjectNode machine = root.putObject("machine");
+        machine.put("cores", Runtime.getRuntime().availableProcessors());
+        machine.put("java", System.getProperty("java.version"));
+        machine.put("os", System.getProperty("os.name") + " " + System.getProperty("os.version")
+                + " " + System.getProperty("os.arch"));
+        return root;
+    }
+
+    static void write(ObjectNode summary, Writer w) throws IOException {
+        // The writer belongs to the caller, who closes it.
+        MAPPER.writer().without(com.fasterxml.jackson.core.JsonGenerator.Feature.AUTO_CLOSE_TARGET)
+                .writeValue(w, summary);
+        w.write('\n');
+    }
+
+    /** JSON has no NaN or infinity (an error bar from too few blocks may be NaN): those become null. */
+    private static void number(ObjectNode node, String key, double v) {
+        if (Double.isFinite(v)) {
+            node.put(key, v);
+        } else {
+            node.putNull(key);
+        }
+    }
+
+    private static void vector(ArrayNode array, double[] v) {
+        for (double c : v) {
+            if (Double.isFinite(c)) {
+                array.add(c);
+            } else {
+                array.addNull();
+            }
+        }
+    }
+}

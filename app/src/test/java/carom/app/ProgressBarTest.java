@@ -1,0 +1,34 @@
+package carom.app;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import org.junit.jupiter.api.Test;
+
+class ProgressBarTest {
+    @Test
+    void rendersFractionPercentAndTime() {
+        assertThat(ProgressBar.render(4.2, 10)).isEqualTo("[" + "=".repeat(13) + " ".repeat(17) + "]  42%  t=4.2/10");
+        assertThat(ProgressBar.render(0, 10)).isEqualTo("[" + " ".repeat(30) + "]   0%  t=0/10");
+        assertThat(ProgressBar.render(10, 10)).isEqualTo("[" + "=".repeat(30) + "] 100%  t=10/10");
+    }
+
+    @Test
+    void compactNumbers() {
+        assertThat(ProgressBar.compact(4.2)).isEqualTo("4.2");
+        assertThat(ProgressBar.compact(10)).isEqualTo("10");
+        assertThat(ProgressBar.compact(0.125)).isEqualTo("0.125");
+        assertThat(ProgressBar.compact(1234567)).isEqualTo("1.235e+06");
+    }
+
+    @Test
+    void neverDrawsOnAStreamThatIsNotTheTerminal() {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        PrintStream err = new PrintStream(bytes, true);
+        try (ProgressBar bar = ProgressBar.forRun(err, 10)) {
+            bar.simulatedTime(5);
+        }
+        assertThat(bytes.size()).isZero();
+    }
+}

@@ -1,0 +1,194 @@
+package carom.app;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** {@code carom simulate} when all is well. */
+class SimulateCommandTest {
+    private static final ObjectMapper JSON = new ObjectMapper();
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void writesTheFinalStateAndTheSummaryAndNothingToTheConsole() throws IOException {
+        Path scene = Scenes.write(dir, "head-on.json", Scenes.headOn());
+        Path csv = dir.resolve("final.csv");
+        Path summary = dir.resolve("summary.json");
+
+        Cli r = Cli.run("simulate", scene.toString(), "--out", csv.toString(), "--summary", summary.toString());
+
+        assertThat(r.status()).as(r.err()).isZero();
+        assertThat(r.out()).isEmpty();
+        assertThat(r.err()).isEmpty();
+
+        List<String> lines = Files.readAllLines(csv);
+        assertThat(lines).hasSize(3);
+        assertThat(lines.get(0)).isEqualTo("id,x,y,vx,vy");
+        double[][] rows = lines.stream().skip(1).map(SimulateCommandTest::parseRow).toArray(double[][]::new);
+        assertThat(rows[0][0]).isEqualTo(0);
+        assertThat(rows[1][0]).isEqualTo(1);
+        // Disc 0 bounced off the left wall at t = 6.5 and has moved 3.5 to the right since; disc 1 mirrors it.
+        assertThat(rows[0][1]).isCloseTo(4.0, within(1e-9));
+        assertThat(rows[0][2]).isCloseTo(2.0, within(1e-12));
+        assertThat(rows[0][3]).isCloseTo(1.0, within(1e-12));
+        assertThat(rows[0][4]).isCloseTo(0.0, within(1e-12));
+        assertThat(rows[1][1]).isCloseTo(6.0, within(1e-9));
+        assertThat(rows[1][3]).isCloseTo(-1.0, within(1e-12));
+
+        JsonNode s = JSON.readTree(summary.toFile());
+        assertThat(s.get("engine").asText()).isEqualTo("serial");
+        assertThat(s.get("exact").isBoolean()).isTrue();
+        assertThat(s.get("exact").asBoolean()).isTrue();
+        assertThat(s.get("particles").asInt()).isEqualTo(2);
+        assertThat(s.get("until").asDouble()).isEqualTo(10.0);
+        assertThat(s.get("scene").asText()).isEqualTo("head-on");
+        assertThat(s.at("/collisions/pair").asLong()).isEqualTo(1);
+        assertThat(s.at("/collisions/wall").asLong()).isEqualTo(2);
+        assertThat(s.get("events").asLong()).isGreaterThanOrEqualTo(3);
+        assertThat(s.at("/kineticEnergy/initial").asDouble()).isCloseTo(1.0, within(1e-12));
+        assertThat(s.at("/kineticEnergy/final").asDouble()).isCloseTo(1.0, within(1e-12));
+        assertThat(s.get("energyDrift").asDouble()).isCloseTo(0.0, within(1e-12));
+        for (String when : List.of("initial", "final")) {
+            JsonNode p = s.at("/momentum/" + when);
+            assertThat(p.isArray()).isTrue();
+            assertThat(p.size()).isEqualTo(2);
+            assertThat(p.get(0).asDouble()).isCloseTo(0.0, within(1e-12));
+            assertThat(p.get(1).asDouble()).isCloseTo(0.0, within(1e-12));
+        }
+        assertThat(s.get("wallSeconds").isNumber()).isTrue();
+        assertThat(s.get("wallSeconds").asDouble()).isGreaterThanOrEqualTo(0);
+        assertThat(s.get("collisionsPerSecond").isNumber()).isTrue();
+        assertThat(s.get("causalityViolations").asLong()).isZero();
+        assertThat(s.get("threads").asInt()).isGreaterThanOrEqualTo(1);
+        assertThat(s.get("counters").isObject()).isTrue();
+        assertThat(s.at("/machine/cores").asInt()).isEqualTo(Runtime.getRuntime().availableProcessors());
+        assertThat(s.at("/machine/java").asText()).isEqualTo(System.getProperty("java.version"));
+        assertThat(s.at("/machine/os").asText()).isNotBlank();
+        // Walls: no pressure.
+        assertThat(s.has("pressure")).isFalse();
+
+        assertThat(filesIn(dir)).containsExactlyInAnyOrder("head-on.json", "final.csv", "summary.json");
+    }
+
+    @Test
+    void printsAReadableSummaryWithoutOutputFiles() {
+        Path scene = Scenes.write(dir, "head-on.json", Scenes.headOn());
+
+        Cli r = Cli.run("simulate", scene.toString());
+
+        assertThat(r.status()).as(r.err()).isZero();
+        assertThat(r.err()).isEmpty();
+        assertThat(r.out()).containsPattern("(?m)^scene +head-on$")
+                .containsPattern("(?m)^engine +serial \\(exact\\)$")
+                .containsPattern("(?m)^discs +2$")
+                .containsPattern("(?m)^until +10\\.0$")
+                .containsPattern("(?m)^pair collisions +1$")
+                .containsPattern("(?m)^wall collisions +2$")
+                .containsPattern("(?m)^energy initial +1\\.0$")
+                .containsPattern("(?m)^causality violations +0$")
+                .doesNotContain("pressure");
+        // Every value starts in the same column, after at least two spaces.
+        List<String> keyed = r.out().lines().filter(l -> !l.equals("counters")).toList();
+        int column = keyed.get(0).indexOf("head-on");
+        for (String line : keyed) {
+            assertThat(line.substring(column - 2, column)).as(line).isEqualTo("  ");
+            assertThat(line.charAt(column)).as(line).isNotEqualTo(' ');
+        }
+        assertThat(filesIn(dir)).containsExactly("head-on.json");
+    }
+
+    @Test
+    void untilOnTheCommandLineOverridesTheScene() throws IOException {
+        Path scene = Scenes.write(dir, "head-on.json", Scenes.headOn());
+        Path summary = dir.resolve("s.json");
+
+        // By t = 5 the discs have met once and not yet reached the walls (t = 6.5).
+        Cli r = Cli.run("simulate", scene.toString(), "--until", "5", "--threads", "3", "--summary", summary.toString());
+
+        assertThat(r.status()).as(r.err()).isZero();
+        assertThat(r.out()).isEmpty();
+        JsonNode s = JSON.readTree(summary.toFile());
+        assertThat(s.get("until").asDouble()).isEqualTo(5.0);
+        assertThat(s.at("/collisions/pair").asLong()).isEqualTo(1);
+        assertThat(s.at("/collisions/wall").asLong()).isZero();
+        assertThat(s.get("threads").asInt()).isEqualTo(3);
+        assertThat(filesIn(dir)).containsExactlyInAnyOrder("head-on.json", "s.json");
+    }
+
+    @Test
+    void finalStateAloneReplacesAnExistingFile() throws IOException {
+        Path scene = Scenes.write(dir, "head-on.json", Scenes.headOn());
+        Path csv = Files.writeString(dir.resolve("final.csv"), "old content\n");
+
+        Cli r = Cli.run("simulate", scene.toString(), "--engine", "serial", "--out", csv.toString());
+
+        assertThat(r.status()).as(r.err()).isZero();
+        assertThat(r.out()).isEmpty();
+        assertThat(Files.readAllLines(csv)).hasSize(3).first().isEqualTo("id,x,y,vx,vy");
+        assertThat(filesIn(dir)).containsExactlyInAnyOrder("head-on.json", "final.csv");
+    }
+
+    @Test
+    void periodicScenesReportThePressure() throws IOException {
+        Path scene = Scenes.write(dir, "gas.json", Scenes.periodic());
+        Path summary = dir.resolve("s.json");
+
+        Cli r = Cli.run("simulate", scene.toString(), "--summary", summary.toString());
+
+        assertThat(r.status()).as(r.err()).isZero();
+        JsonNode p = JSON.readTree(summary.toFile()).get("pressure");
+        assertThat(p).isNotNull();
+        for (String key : List.of("Z", "Zerror", "P", "Perror", "blocks")) {
+            assertThat(p.has(key)).as(key).isTrue();
+        }
+        // A dilute gas of hard discs: Z a little above the ideal gas's 1.
+        assertThat(p.get("Z").asDouble()).isBetween(1.0, 2.0);
+
+        Cli readable = Cli.run("simulate", scene.toString());
+        assertThat(readable.out()).containsPattern("(?m)^pressure Z +\\d");
+    }
+
+    @Test
+    void engineOptionsReachTheEngine() throws IOException {
+        Path scene = Scenes.write(dir, "head-on.json", Scenes.headOn());
+        Path summary = dir.resolve("s.json");
+
+        Cli r = Cli.run("simulate", scene.toString(), "--option", "cellFactor=2", "--summary", summary.toString());
+        assertThat(r.status()).as(r.err()).isZero();
+        assertThat(JSON.readTree(summary.toFile()).at("/collisions/wall").asLong()).isEqualTo(2);
+
+        // The serial engine parses cellFactor as a number, so a bad value proves the option got there.
+        Cli bad = Cli.run("simulate", scene.toString(), "--option", "cellFactor=wide");
+        assertThat(bad.status()).isEqualTo(2);
+        assertThat(bad.firstErrorLine()).startsWith("error: " + scene + ": ").contains("cellFactor");
+    }
+
+    private static double[] parseRow(String line) {
+        String[] f = line.split(",", -1);
+        assertThat(f).hasSize(5);
+        double[] v = new double[5];
+        for (int i = 0; i < 5; i++) {
+            v[i] = Double.parseDouble(f[i]);
+        }
+        return v;
+    }
+
+    static List<String> filesIn(Path dir) {
+        try (Stream<Path> s = Files.list(dir)) {
+            return s.map(p -> p.getFileName().toString()).sorted().toList();
+        } catch (IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+}

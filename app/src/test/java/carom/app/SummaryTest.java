@@ -1,0 +1,85 @@
+package carom.app;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import carom.core.engine.RunResult;
+import carom.core.observe.Pressure;
+import carom.core.state.Discs;
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.charset.StandardCharsets;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+
+/** The JSON and readable summaries of a hand-made result. */
+class SummaryTest {
+    private static RunResult result(Pressure pressure) {
+        return new RunResult("fast", false, new Discs(3), 2.0, 40, 10, 55, 3.0, 2.7,
+                new double[] {0.5, -0.25}, new double[] {0.5, -0.25}, pressure, 4, 0.5,
+                Map.of("steps", 20L, "messages", 7L));
+    }
+
+    @Test
+    void jsonCarriesEveryField() throws IOException {
+        StringWriter w = new StringWriter();
+        SummaryJson.write(SummaryJson.toJson("gas", 3, 8, result(new Pressure(1.25, 0.01, 0.4, 0.003, 12))), w);
+        JsonNode s = new ObjectMapper().readTree(w.toString());
+
+        assertThat(s.get("engine").asText()).isEqualTo("fast");
+        assertThat(s.get("exact").asBoolean()).isFalse();
+        assertThat(s.get("scene").asText()).isEqualTo("gas");
+        assertThat(s.get("particles").asInt()).isEqualTo(3);
+        assertThat(s.get("threads").asInt()).isEqualTo(8);
+        assertThat(s.get("until").asDouble()).isEqualTo(2.0);
+        assertThat(s.at("/collisions/pair").asLong()).isEqualTo(40);
+        assertThat(s.at("/collisions/wall").asLong()).isEqualTo(10);
+        assertThat(s.get("events").asLong()).isEqualTo(55);
+        assertThat(s.get("collisionsPerSecond").asDouble()).isEqualTo(100.0);
+        assertThat(s.get("energyDrift").asDouble()).isCloseTo(-0.1, org.assertj.core.api.Assertions.within(1e-12));
+        assertThat(s.at("/momentum/final/1").asDouble()).isEqualTo(-0.25);
+        assertThat(s.get("causalityViolations").asLong()).isEqualTo(4);
+        assertThat(s.at("/pressure/Z").asDouble()).isEqualTo(1.25);
+        assertThat(s.at("/pressure/Zerror").asDouble()).isEqualTo(0.01);
+        assertThat(s.at("/pressure/P").asDouble()).isEqualTo(0.4);
+        assertThat(s.at("/pressure/Perror").asDouble()).isEqualTo(0.003);
+        assertThat(s.at("/pressure/blocks").asInt()).isEqualTo(12);
+        assertThat(s.at("/counters/steps").asLong()).isEqualTo(20);
+        assertThat(s.at("/counters/messages").asLong()).isEqualTo(7);
+        // Pretty printed.
+        assertThat(w.toString()).contains("\n  \"engine\" : \"fast\"");
+    }
+
+    @Test
+    void nonFiniteNumbersBecomeNullSoTheJsonStaysValid() throws IOException {
+        StringWriter w = new StringWriter();
+        SummaryJson.write(SummaryJson.toJson("gas", 3, 1, result(new Pressure(1.25, Double.NaN, 0.4, Double.NaN, 1))), w);
+        JsonNode s = new ObjectMapper().readTree(w.toString());
+        assertThat(s.at("/pressure/Zerror").isNull()).isTrue();
+        assertThat(s.at("/pressure/Z").asDouble()).isEqualTo(1.25);
+    }
+
+    @Test
+    void readableSummaryShowsPressureAndCounters() {
+        StringWriter w = new StringWriter();
+        ReadableSummary.print("gas", 3, 8, result(new Pressure(1.25, 0.01, 0.4, 0.003, 12)), new PrintWriter(w),
+                StandardCharsets.UTF_8);
+        assertThat(w.toString()).containsPattern("(?m)^engine +fast \\(relaxed\\)$")
+                .containsPattern("(?m)^pressure Z +1\\.25000 \u00b1 0\\.010 ")
+                .containsPattern("(?m)^causality violations +4$")
+                .containsPattern("(?m)^energy drift +-1\\.000e-01$")
+                .containsPattern("(?m)^momentum final +\\(0\\.5, -0\\.25\\)$")
+                .containsPattern("(?m)^  messages +7$")
+                .containsPattern("(?m)^  steps +20$");
+    }
+
+    @Test
+    void readableSummaryAvoidsCharactersTheConsoleCannotShow() {
+        StringWriter w = new StringWriter();
+        ReadableSummary.print("gas", 3, 8, result(new Pressure(1.25, 0.01, 0.4, 0.003, 12)), new PrintWriter(w),
+                StandardCharsets.US_ASCII);
+        assertThat(w.toString()).contains("1.25000 +/- 0.010").doesNotContain("\u00b1");
+    }
+}

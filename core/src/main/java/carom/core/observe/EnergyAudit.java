@@ -1,0 +1,36 @@
+package carom.core.observe;
+
+import carom.core.physics.Flight;
+import carom.core.state.Discs;
+
+/**
+ * Test mode: checks after every event that the total mechanical energy (kinetic plus gravity's
+ * potential) has not grown, since collisions may only keep or dissipate it. O(N) per event, so only
+ * for small scenes in tests ({@code auditEnergy=true} engine option).
+ */
+public final class EnergyAudit {
+    private static final double TOLERANCE = 1e-9;
+    private double previous = Double.NaN;
+
+    /** Throws IllegalStateException if the energy at local {@code time} exceeds the last one. */
+    public void check(Discs d, Flight flight, double time, double absoluteTime) {
+        double energy = 0;
+        double scale = 0;
+        for (int i = 0; i < d.n; i++) {
+            if (d.invMass[i] == 0) {
+                continue;
+            }
+            double vx = flight.vx(d, i, time);
+            double vy = flight.vy(d, i, time);
+            double kinetic = 0.5 * (vx * vx + vy * vy) / d.invMass[i];
+            double potential = flight.potentialEnergy(d, i, time);
+            energy += kinetic + potential;
+            scale += kinetic + Math.abs(potential);
+        }
+        if (previous == previous && energy > previous + TOLERANCE * Math.max(scale, 1e-300)) {
+            throw new IllegalStateException(String.format(
+                    "energy grew from %s to %s at t = %s", previous, energy, absoluteTime));
+        }
+        previous = energy;
+    }
+}
