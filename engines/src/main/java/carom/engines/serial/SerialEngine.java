@@ -1,18 +1,18 @@
 package carom.engines.serial;
 
-import carom.core.BadInputException;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
-import carom.core.scene.Effects;
 import carom.core.scene.Scene;
+import java.util.Set;
 
 /**
  * The thesis's single-thread algorithm, made exact: time steps over a grid whose cells no disc can
  * outrun within a step, potential collisions of the step found between neighbouring cells and
  * processed in time order from the thesis's six-linked threaded bucket queue.
  *
- * <p>Tunables: {@code cellFactor} (cell side over the largest diameter, default 1.5).
+ * <p>Tunables: {@code cellFactor} (cell side over the largest diameter, default 2);
+ * {@code auditEnergy} (test mode: check after every event that energy did not grow; O(N) per event).
  */
 public final class SerialEngine implements Engine {
     @Override
@@ -30,16 +30,14 @@ public final class SerialEngine implements Engine {
         return "the thesis's single-thread time-stepped grid algorithm with its six-linked bucket queue (reference)";
     }
 
+    /** Supports every effect of SPEC: walls, periodic, fixed discs, gravity, restitution, TC model. */
     @Override
     public void checkSupports(Scene scene) {
-        Effects e = scene.effects();
-        if (e.hasGravity()) {
-            throw new BadInputException("effects.gravity: engine " + name() + " does not support gravity yet");
-        }
-        if (e.dissipativePairs() || e.dissipativeWalls()) {
-            throw new BadInputException("effects.restitution: engine " + name()
-                    + " does not support restitution below 1 yet");
-        }
+    }
+
+    @Override
+    public Set<String> tunables() {
+        return Set.of("cellFactor", "auditEnergy");
     }
 
     @Override

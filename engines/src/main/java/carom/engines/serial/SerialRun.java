@@ -7,6 +7,7 @@ import carom.core.engine.SimulationStuckException;
 import carom.core.grid.CellGrid;
 import carom.core.grid.CellLists;
 import carom.core.grid.StepGrid;
+import carom.core.observe.EnergyAudit;
 import carom.core.observe.Observables;
 import carom.core.observe.Pressure;
 import carom.core.observe.VirialAccumulator;
@@ -14,6 +15,7 @@ import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
 import carom.core.physics.PairLaw;
 import carom.core.physics.Physics;
+import carom.core.physics.Restitution;
 import carom.core.queue.ThreadedBucketQueue;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
@@ -41,6 +43,7 @@ import java.util.Map;
  */
 final class SerialRun {
     private static final int PRESSURE_BLOCKS = 20;
+    private static final String[] WALL_NAMES = {"left", "right", "bottom", "top"};
 
     private final Scene scene;
     private final Discs d;
@@ -48,9 +51,13 @@ final class SerialRun {
     private final double until;
     private final Flight flight;
     private final Boundary boundary;
-    private final int walls;
-    private final double pairRestitution;
-    private final double wallRestitution;
+    /** The walls, or null in a periodic box. */
+    private final Boundary.Walls walls;
+    private final Restitution restitution;
+    private final double acceleration;
+    /** Bounce heights below this mean a dissipative disc has come to rest (not modelled). */
+    private final double restHeight;
+    private final EnergyAudit audit;
     private final StepGrid stepGrid;
     private final CellGrid grid;
     private final CellLists cells = new CellLists();
@@ -78,10 +85,12 @@ final class SerialRun {
         Physics physics = Physics.of(scene);
         this.flight = physics.flight;
         this.boundary = physics.boundary;
-        this.walls = boundary.wallCount();
-        this.pairRestitution = physics.pairRestitution;
-        this.wallRestitution = physics.wallRestitution;
-        double cellFactor = options.tunable("cellFactor", 1.5);
+        this.walls = boundary instanceof Boundary.Walls w ? w : null;
+        this.restitution = physics.restitution;
+        this.acceleration = flight.maxAcceleration();
+        this.restHeight = 1e-12 * Math.max(scene.box().width(), scene.box().height());
+        this.audit = Boolean.parseBoolean(options.tunables().getOrDefault("auditEnergy", "false")) ? new EnergyAudit() : null;
+        double cellFactor = options.tunable("cellFactor", 2.0);
         if (!(cellFactor > 1)) {
             throw new carom.core.BadInputException("engine option cellFactor: must be > 1, got " + cellFactor);
         }
@@ -120,7 +129,7 @@ final class SerialRun {
     /** Runs one step from local time 0 (absolute {@code epoch}); returns its length. */
     private double step(double epoch, double remaining) {
         steps++;
-        stepEnd = stepGrid.stepLength(d.maxSpeed(), remaining);
+        stepEnd = stepGrid.stepLength(d.maxSpeed(), acceleration, remaining);
         cells.rebuild(grid, d.x, d.y, n);
         System.arraycopy(d.x, 0, startX, 0, n);
         System.arraycopy(d.y, 0, startY, 0, n);
@@ -166,7 +175,10 @@ final class SerialRun {
             if (b >= 0) {
                 collidePair(epoch, now, a, b);
             } else {
-                collideWall(now, a, -1 - b);
+                collideWall(epoch, now, a, -1 - b);
+            }
+            if (audit != null) {
+                audit.check(d, flight, now, epoch + now);
             }
         }
     }
@@ -176,14 +188,24 @@ final class SerialRun {
         flight.advance(d, b, now);
         double dx = boundary.separationX(d.x[b] - d.x[a]);
         double dy = boundary.separationY(d.y[b] - d.y[a]);
-        double w = PairLaw.collide(d, a, b, dx, dy, pairRestitution);
+        double e = restitution.pair(a, b, epoch + now);
+        boolean aMobile = d.invMass[a] > 0;
+        boolean bMobile = d.invMass[b] > 0;
+        if (e < 1 && !(aMobile && bMobile)) {
+            checkNotResting(epoch + now, aMobile ? a : b, approachSpeed(a, b, dx, dy), "fixed disc " + (aMobile ? b : a));
+        }
+        double w = PairLaw.collide(d, a, b, dx, dy, e);
         pairCollisions++;
+        if (aMobile) {
+            restitution.collided(a, epoch + now);
+        }
+        if (bMobile) {
+            restitution.collided(b, epoch + now);
+        }
         if (virial != null) {
             virial.add(epoch + now, w);
         }
         // A fixed partner's trajectory did not change: its other potentials stay valid.
-        boolean aMobile = d.invMass[a] > 0;
-        boolean bMobile = d.invMass[b] > 0;
         if (aMobile) {
             queue.removeAllOf(a);
         }
@@ -198,9 +220,15 @@ final class SerialRun {
         }
     }
 
-    private void collideWall(double now, int i, int wall) {
+    private void collideWall(double epoch, double now, int i, int wall) {
         flight.advance(d, i, now);
-        boundary.reflect(d, i, wall, wallRestitution);
+        double e = restitution.wall(i, epoch + now);
+        if (e < 1) {
+            double normalSpeed = wall == Boundary.LEFT || wall == Boundary.RIGHT ? d.vx[i] : d.vy[i];
+            checkNotResting(epoch + now, i, Math.abs(normalSpeed), WALL_NAMES[wall] + " wall");
+        }
+        boundary.reflect(d, i, wall, e);
+        restitution.collided(i, epoch + now);
         wallCollisions++;
         queue.removeAllOf(i);
         afterVelocityChange(i, now);
@@ -211,7 +239,7 @@ final class SerialRun {
         double ex = d.x[i] - startX[i];
         double ey = d.y[i] - startY[i];
         double speed = Math.sqrt(d.vx[i] * d.vx[i] + d.vy[i] * d.vy[i]);
-        double end = stepGrid.latestStepEnd(now, Math.sqrt(ex * ex + ey * ey), speed, stepEnd);
+        double end = stepGrid.latestStepEnd(now, Math.sqrt(ex * ex + ey * ey), speed, acceleration, stepEnd);
         if (end < stepEnd) {
             stepEnd = end;
             earlyStepEnds++;
@@ -230,12 +258,7 @@ final class SerialRun {
     }
 
     private void predictPair(int i, int j, double now) {
-        double xi = flight.x(d, i, now);
-        double yi = flight.y(d, i, now);
-        double dx = boundary.separationX(flight.x(d, j, now) - xi);
-        double dy = boundary.separationY(flight.y(d, j, now) - yi);
-        double dt = PairLaw.timeToContact(dx, dy, d.vx[j] - d.vx[i], d.vy[j] - d.vy[i], d.radius[i] + d.radius[j]);
-        double t = now + dt;
+        double t = now + flight.timeToContact(d, i, j, now, stepEnd, boundary);
         if (t <= stepEnd) {
             queue.add(t, i, j);
             predictions++;
@@ -243,17 +266,34 @@ final class SerialRun {
     }
 
     private void predictWalls(int i, double now) {
-        if (walls == 0 || d.invMass[i] == 0) {
+        if (walls == null || d.invMass[i] == 0) {
             return;
         }
-        double x = flight.x(d, i, now);
-        double y = flight.y(d, i, now);
-        for (int w = 0; w < walls; w++) {
-            double t = now + boundary.timeToWall(w, x, y, d.vx[i], d.vy[i], d.radius[i]);
+        for (int w = 0; w < 4; w++) {
+            double t = now + flight.timeToWall(d, i, w, now, walls);
             if (t <= stepEnd) {
                 queue.add(t, i, -1 - w);
                 predictions++;
             }
+        }
+    }
+
+    private double approachSpeed(int a, int b, double dx, double dy) {
+        double dist = Math.sqrt(dx * dx + dy * dy);
+        return Math.abs(((d.vx[a] - d.vx[b]) * dx + (d.vy[a] - d.vy[b]) * dy) / dist);
+    }
+
+    /**
+     * Under gravity a dissipative disc bouncing on a wall or a fixed disc without the TC model bounces
+     * ever lower, endlessly often: once its bounce would rise less than rounding, it rests, which is
+     * not modelled. Stop with the disc named instead of stalling.
+     */
+    private void checkNotResting(double time, int disc, double normalSpeed, String against) {
+        if (acceleration > 0 && normalSpeed * normalSpeed < 2 * acceleration * restHeight) {
+            throw new SimulationStuckException(String.format(
+                    "disc %d (%s) came to rest against the %s at t = %s: resting contact is not modelled; "
+                            + "use the TC model (effects.tc > 0) or restitution 1",
+                    disc, scene.originOf(disc), against, time));
         }
     }
 
