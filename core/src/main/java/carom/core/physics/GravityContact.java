@@ -58,8 +58,18 @@ public final class GravityContact {
         double c2 = vx * vx + vy * vy + 2 * (px * sx + py * sy);
         double c1 = 2 * (px * vx + py * vy);
         double c0 = px * px + py * py - sigma * sigma;
-        if (c0 <= 0 && (c1 < 0 || (c1 == 0 && c2 < 0))) {
+        // Touching and closing (beyond a rounding-level slide), or at rest and pressed in: now.
+        double p2 = px * px + py * py;
+        double v2 = vx * vx + vy * vy;
+        if (c0 <= 0 && (PairLaw.closing(0.5 * c1, p2, v2) || (v2 == 0 && c2 < 0))) {
             return 0;
+        }
+        if (c0 <= 0 && c1 <= 0 && c2 < 0) {
+            // Sliding along the peg within rounding while pressed into it: collide as soon as the
+            // inward normal speed stands out from rounding, instead of sinking in.
+            double threshold = -2 * PairLaw.GRAZING * Math.sqrt(p2 * v2);
+            double t = (threshold - c1) / (2 * c2);
+            return t <= window ? Math.max(0, t) : Double.POSITIVE_INFINITY;
         }
         if (!(window > 0)) {
             return Double.POSITIVE_INFINITY;

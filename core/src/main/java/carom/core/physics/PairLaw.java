@@ -10,7 +10,8 @@ import carom.core.state.Discs;
  * <ul>
  *   <li>b >= 0 (receding or sliding): no event, even if they overlap by rounding, so an overlapped pair
  *       separates instead of colliding forever;</li>
- *   <li>c <= 0 and b < 0 (touching or overlapped, approaching): they collide now;</li>
+ *   <li>c <= 0 and b < 0 (touching or overlapped, approaching): they collide now, unless the normal
+ *       speed is within rounding of a tangential slide ({@link #closing});</li>
  *   <li>otherwise t = c / (-b + sqrt(b^2 - v^2 c)) if the discriminant is positive: the form that
  *       avoids cancellation between -b and the root.</li>
  * </ul>
@@ -34,17 +35,30 @@ public final class PairLaw {
         if (b >= 0) {
             return Double.POSITIVE_INFINITY;
         }
-        double c = dx * dx + dy * dy - sigma * sigma;
-        if (c <= 0) {
-            return 0;
-        }
+        double r2 = dx * dx + dy * dy;
+        double c = r2 - sigma * sigma;
         double v2 = dvx * dvx + dvy * dvy;
+        if (c <= 0) {
+            return closing(b, r2, v2) ? 0 : Double.POSITIVE_INFINITY;
+        }
         double discriminant = b * b - v2 * c;
         if (discriminant <= 0) {
             return Double.POSITIVE_INFINITY;
         }
         return c / (Math.sqrt(discriminant) - b);
     }
+
+    /**
+     * Whether a touching pair with r.v = b is really closing: its normal speed must stand out from the
+     * rounding of a tangential slide ({@link #GRAZING} of the relative speed). Otherwise the impulse
+     * would be lost in rounding and the same pair would "collide now" again, forever.
+     */
+    public static boolean closing(double b, double r2, double v2) {
+        return b < 0 && b * b > GRAZING * GRAZING * r2 * v2;
+    }
+
+    /** Relative normal speed below which touching discs are taken to slide past each other. */
+    public static final double GRAZING = 1e-10;
 
     /**
      * Applies the impulse of a collision between i and j in contact now, both at the same clock.

@@ -17,6 +17,9 @@ public final class BruteForceReference {
     public record Result(Discs state, long pairCollisions, long wallCollisions) {
     }
 
+    /** Scenes judged here are small and short; more events than this means a loop, not physics. */
+    private static final long MAX_EVENTS = 10_000_000;
+
     private BruteForceReference() {
     }
 
@@ -27,7 +30,10 @@ public final class BruteForceReference {
         long pairs = 0;
         long walls = 0;
         double now = 0;
-        while (true) {
+        for (long events = 0; ; events++) {
+            if (events > MAX_EVENTS) {
+                throw new IllegalStateException("brute-force reference: more than " + MAX_EVENTS + " events by t = " + now);
+            }
             double best = Double.POSITIVE_INFINITY;
             int bestA = -1;
             int bestB = 0;
@@ -64,10 +70,10 @@ public final class BruteForceReference {
             if (bestB >= 0) {
                 double dx = boundary.separationX(d.x[bestB] - d.x[bestA]);
                 double dy = boundary.separationY(d.y[bestB] - d.y[bestA]);
-                PairLaw.collide(d, bestA, bestB, dx, dy, physics.pairRestitution);
+                PairLaw.collide(d, bestA, bestB, dx, dy, physics.restitution.pair(bestA, bestB, now));
                 pairs++;
             } else {
-                boundary.reflect(d, bestA, -1 - bestB, physics.wallRestitution);
+                boundary.reflect(d, bestA, -1 - bestB, physics.restitution.wall(bestA, now));
                 walls++;
             }
         }

@@ -1,9 +1,11 @@
 package carom.engines.reference;
 
 import carom.core.scene.BoundaryKind;
+import carom.core.scene.GenerateBlock;
 import carom.core.scene.Scene;
 import carom.core.scene.SceneBuilder;
 import carom.core.scene.Species;
+import carom.core.scene.VelocityDistribution;
 import java.util.SplittableRandom;
 
 /**
@@ -61,5 +63,50 @@ public final class RandomScenes {
             b.disc(species, x, y, speed * (2 * random.nextDouble() - 1), speed * (2 * random.nextDouble() - 1));
         }
         return b.until(1.5 + random.nextDouble()).build();
+    }
+
+    /**
+     * {@code n} equal discs (radius 0.5, mass 1) at packing fraction {@code phi} in a square box, on
+     * SPEC's lattice with jitter 0.5 and Maxwell velocities at temperature 1 (kT = 1 per disc).
+     * {@code n} should be a perfect square so the lattice fits up to phi = pi/4 (0.785).
+     */
+    public static Scene dense(int n, double phi, boolean periodic, long seed, double until) {
+        double side = Math.sqrt(n * Math.PI * 0.25 / phi);
+        return SceneBuilder.create(String.format("dense-%d-%s-%s-%d", n, phi, periodic ? "periodic" : "walls", seed))
+                .box(side, side, periodic ? BoundaryKind.PERIODIC : BoundaryKind.WALLS)
+                .species(Species.mobile("d", 0.5, 1))
+                .generate(new GenerateBlock(0, n, 0.5, new VelocityDistribution.Maxwell(1), seed))
+                .until(until).build();
+    }
+
+    /**
+     * A small box (walls or periodic) of heavy discs (mass 1, speed 1) with a few very light ones (mass
+     * 1e-3, nearly at rest): every heavy-light collision throws a light disc off at up to twice the heavy speed, far
+     * beyond the step's speed budget, so the serial engine must end steps early.
+     */
+    public static Scene lightAmongHeavy(long seed) {
+        SplittableRandom random = new SplittableRandom(seed);
+        double side = 9 + 3 * random.nextDouble();
+        boolean periodic = random.nextInt(3) == 0;
+        SceneBuilder b = SceneBuilder.create("light-among-heavy-" + seed)
+                .box(side, side, periodic ? BoundaryKind.PERIODIC : BoundaryKind.WALLS)
+                .species(Species.mobile("heavy", 0.5, 1.0))
+                .species(Species.mobile("light", 0.25, 1e-3));
+        int cols = (int) Math.floor(side / 1.5);
+        int light = 0;
+        for (int r = 0; r < cols; r++) {
+            for (int c = 0; c < cols; c++) {
+                double x = (c + 0.5) * side / cols + 0.2 * (random.nextDouble() - 0.5);
+                double y = (r + 0.5) * side / cols + 0.2 * (random.nextDouble() - 0.5);
+                if (light < 4 && random.nextInt(6) == 0) {
+                    light++;
+                    b.disc(1, x, y, 0.05 * (random.nextDouble() - 0.5), 0.05 * (random.nextDouble() - 0.5));
+                } else {
+                    double angle = 2 * Math.PI * random.nextDouble();
+                    b.disc(0, x, y, Math.cos(angle), Math.sin(angle));
+                }
+            }
+        }
+        return b.until(0.8 + 0.4 * random.nextDouble()).build();
     }
 }
