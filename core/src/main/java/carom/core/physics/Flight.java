@@ -48,6 +48,15 @@ public abstract sealed class Flight permits Flight.Straight, Flight.Parabolic {
     /** Time from {@code now} until disc i touches {@code wall} while moving toward it, or +Infinity. */
     public abstract double timeToWall(Discs d, int i, int wall, double now, Boundary.Walls walls);
 
+    /**
+     * Time from {@code now} until disc i's centre leaves the slab lo <= x <= hi (a cell's column), or
+     * +Infinity. For engines that schedule cell crossings.
+     */
+    public abstract double timeToLeaveX(Discs d, int i, double now, double lo, double hi);
+
+    /** Same along y (a cell's row). */
+    public abstract double timeToLeaveY(Discs d, int i, double now, double lo, double hi);
+
     /** Free flight without forces: r(t) = r0 + v0 (t - t0). */
     public static final class Straight extends Flight {
         private Straight() {
@@ -103,6 +112,26 @@ public abstract sealed class Flight permits Flight.Straight, Flight.Parabolic {
         @Override
         public double timeToWall(Discs d, int i, int wall, double now, Boundary.Walls walls) {
             return walls.timeToWall(wall, x(d, i, now), y(d, i, now), d.vx[i], d.vy[i], d.radius[i]);
+        }
+
+        @Override
+        public double timeToLeaveX(Discs d, int i, double now, double lo, double hi) {
+            return leave(x(d, i, now), d.vx[i], lo, hi);
+        }
+
+        @Override
+        public double timeToLeaveY(Discs d, int i, double now, double lo, double hi) {
+            return leave(y(d, i, now), d.vy[i], lo, hi);
+        }
+
+        private static double leave(double p, double v, double lo, double hi) {
+            if (v > 0) {
+                return Math.max(0, (hi - p) / v);
+            }
+            if (v < 0) {
+                return Math.max(0, (lo - p) / v);
+            }
+            return Double.POSITIVE_INFINITY;
         }
     }
 
@@ -185,6 +214,20 @@ public abstract sealed class Flight permits Flight.Straight, Flight.Parabolic {
             double sign = iFixed ? 1 : -1;
             return GravityContact.firstContact(sign * dx, sign * dy, vx(d, mobile, now), vy(d, mobile, now), gx, gy,
                     sigma, horizon - now);
+        }
+
+        @Override
+        public double timeToLeaveX(Discs d, int i, double now, double lo, double hi) {
+            return d.invMass[i] == 0 ? Double.POSITIVE_INFINITY : leave(x(d, i, now), vx(d, i, now), gx, lo, hi);
+        }
+
+        @Override
+        public double timeToLeaveY(Discs d, int i, double now, double lo, double hi) {
+            return d.invMass[i] == 0 ? Double.POSITIVE_INFINITY : leave(y(d, i, now), vy(d, i, now), gy, lo, hi);
+        }
+
+        private static double leave(double p, double v, double a, double lo, double hi) {
+            return Math.min(GravityContact.firstWallHit(hi - p, -v, -a), GravityContact.firstWallHit(p - lo, v, a));
         }
 
         @Override
