@@ -37,6 +37,13 @@ carom_find_jdk() {
 }
 if carom_home=$(carom_find_jdk); then
   JAVA_HOME="$carom_home"; export JAVA_HOME
+  # Maven's bundled Guava calls sun.misc.Unsafe, which JDK 24+ warns about on every build.
+  if [ "$(carom_jdk_major "$JAVA_HOME")" -ge 24 ] 2>/dev/null; then
+    case "${MAVEN_OPTS:-}" in
+      *sun-misc-unsafe-memory-access*) ;;
+      *) MAVEN_OPTS="${MAVEN_OPTS:-} --sun-misc-unsafe-memory-access=allow"; export MAVEN_OPTS ;;
+    esac
+  fi
 else
   echo "error: carom needs a JDK 21 or newer and found none (JAVA_HOME=${JAVA_HOME:-unset}, /usr/lib/jvm, /opt, ~/.sdkman): install one (for example Temurin 21 or 25) and set JAVA_HOME to it" >&2
   exit 1

@@ -3,7 +3,7 @@ package carom.engines.serial;
 import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
-import carom.core.engine.SimulationStuckException;
+import carom.core.engine.StallGuard;
 import carom.core.grid.CellGrid;
 import carom.core.grid.CellLists;
 import carom.core.grid.StepGrid;
@@ -55,8 +55,6 @@ final class SerialRun {
     private final Boundary.Walls walls;
     private final Restitution restitution;
     private final double acceleration;
-    /** Bounce heights below this mean a dissipative disc has come to rest (not modelled). */
-    private final double restHeight;
     private final EnergyAudit audit;
     private final StepGrid stepGrid;
     private final CellGrid grid;
@@ -66,7 +64,7 @@ final class SerialRun {
     private final double[] startY;
     private final ProgressListener progress;
     private final VirialAccumulator virial;
-    private final long stuckLimit;
+    private final StallGuard stallGuard;
 
     private double stepEnd;
     private long pairCollisions;
@@ -74,8 +72,6 @@ final class SerialRun {
     private long predictions;
     private long steps;
     private long earlyStepEnds;
-    private double lastEventTime = Double.NaN;
-    private long eventsAtLastTime;
 
     SerialRun(Scene scene, RunOptions options) {
         this.scene = scene;
@@ -88,7 +84,6 @@ final class SerialRun {
         this.walls = boundary instanceof Boundary.Walls w ? w : null;
         this.restitution = physics.restitution;
         this.acceleration = flight.maxAcceleration();
-        this.restHeight = 1e-12 * Math.max(scene.box().width(), scene.box().height());
         this.audit = Boolean.parseBoolean(options.tunables().getOrDefault("auditEnergy", "false")) ? new EnergyAudit() : null;
         double cellFactor = options.tunable("cellFactor", 2.0);
         if (!(cellFactor > 1)) {
@@ -100,7 +95,7 @@ final class SerialRun {
         this.startY = new double[n];
         this.progress = options.progress();
         this.virial = boundary.periodic() ? new VirialAccumulator(0, until, PRESSURE_BLOCKS) : null;
-        this.stuckLimit = Math.max(100_000L, 10L * n);
+        this.stallGuard = new StallGuard(scene, acceleration);
     }
 
     RunResult run() {
@@ -171,7 +166,7 @@ final class SerialRun {
             }
             int a = queue.discA(node);
             int b = queue.discB(node);
-            guardAgainstEndlessInstant(epoch, now, a, b);
+            stallGuard.event(epoch + now, a, b);
             if (b >= 0) {
                 collidePair(epoch, now, a, b);
             } else {
@@ -192,7 +187,8 @@ final class SerialRun {
         boolean aMobile = d.invMass[a] > 0;
         boolean bMobile = d.invMass[b] > 0;
         if (e < 1 && !(aMobile && bMobile)) {
-            checkNotResting(epoch + now, aMobile ? a : b, approachSpeed(a, b, dx, dy), "fixed disc " + (aMobile ? b : a));
+            stallGuard.dissipativeContact(epoch + now, aMobile ? a : b, approachSpeed(a, b, dx, dy),
+                    "fixed disc " + (aMobile ? b : a));
         }
         double w = PairLaw.collide(d, a, b, dx, dy, e);
         pairCollisions++;
@@ -225,7 +221,7 @@ final class SerialRun {
         double e = restitution.wall(i, epoch + now);
         if (e < 1) {
             double normalSpeed = wall == Boundary.LEFT || wall == Boundary.RIGHT ? d.vx[i] : d.vy[i];
-            checkNotResting(epoch + now, i, Math.abs(normalSpeed), WALL_NAMES[wall] + " wall");
+            stallGuard.dissipativeContact(epoch + now, i, Math.abs(normalSpeed), WALL_NAMES[wall] + " wall");
         }
         boundary.reflect(d, i, wall, e);
         restitution.collided(i, epoch + now);
@@ -281,38 +277,5 @@ final class SerialRun {
     private double approachSpeed(int a, int b, double dx, double dy) {
         double dist = Math.sqrt(dx * dx + dy * dy);
         return Math.abs(((d.vx[a] - d.vx[b]) * dx + (d.vy[a] - d.vy[b]) * dy) / dist);
-    }
-
-    /**
-     * Under gravity a dissipative disc bouncing on a wall or a fixed disc without the TC model bounces
-     * ever lower, endlessly often: once its bounce would rise less than rounding, it rests, which is
-     * not modelled. Stop with the disc named instead of stalling.
-     */
-    private void checkNotResting(double time, int disc, double normalSpeed, String against) {
-        if (acceleration > 0 && normalSpeed * normalSpeed < 2 * acceleration * restHeight) {
-            throw new SimulationStuckException(String.format(
-                    "disc %d (%s) came to rest against the %s at t = %s: resting contact is not modelled; "
-                            + "use the TC model (effects.tc > 0) or restitution 1",
-                    disc, scene.originOf(disc), against, time));
-        }
-    }
-
-    /**
-     * Elastic hard discs have finitely many collisions at one instant; endlessly many means resting
-     * contact, which is not modelled. Stop with the discs named instead of hanging.
-     */
-    private void guardAgainstEndlessInstant(double epoch, double now, int a, int b) {
-        if (now != lastEventTime) {
-            lastEventTime = now;
-            eventsAtLastTime = 0;
-            return;
-        }
-        if (++eventsAtLastTime > stuckLimit) {
-            String with = b >= 0 ? "disc " + b : "wall " + (-1 - b);
-            throw new SimulationStuckException(String.format(
-                    "more than %d collisions at the single instant t = %s, the last between disc %d (%s) and %s: "
-                            + "resting contact is not modelled; separate the discs or give them velocities",
-                    stuckLimit, epoch + now, a, scene.originOf(a), with));
-        }
     }
 }

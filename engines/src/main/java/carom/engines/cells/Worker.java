@@ -1,0 +1,50 @@
+package carom.engines.cells;
+
+import carom.core.engine.StallGuard;
+import carom.core.observe.VirialAccumulator;
+import carom.core.scene.Scene;
+
+/**
+ * What one unit of scheduled work (a stripe row, an actor) counts and defers. Single writer: a
+ * worker is used by one thread at a time, and the schedulers sum workers after joining them.
+ */
+public final class Worker {
+    long pairCollisions;
+    long wallCollisions;
+    long staleEvents;
+    long violations;
+    long preempted;
+    long overruns;
+    long predictions;
+    final VirialAccumulator virial;
+    final StallGuard stallGuard;
+    /** Predictions deferred because they reach beyond the worker's band: disc, its stamp, band row. */
+    int[] deferred = new int[48];
+    int deferredCount;
+
+    Worker(Scene scene, double until, double acceleration, boolean periodic) {
+        this.virial = periodic ? new VirialAccumulator(0, until, CellStepWork.PRESSURE_BLOCKS) : null;
+        this.stallGuard = new StallGuard(scene, acceleration);
+    }
+
+    void defer(int disc, int stamp, int bandRow) {
+        if (deferredCount + 3 > deferred.length) {
+            deferred = java.util.Arrays.copyOf(deferred, 2 * deferred.length);
+        }
+        deferred[deferredCount++] = disc;
+        deferred[deferredCount++] = stamp;
+        deferred[deferredCount++] = bandRow;
+    }
+
+    public long pairCollisions() {
+        return pairCollisions;
+    }
+
+    public long wallCollisions() {
+        return wallCollisions;
+    }
+
+    public long violations() {
+        return violations;
+    }
+}
