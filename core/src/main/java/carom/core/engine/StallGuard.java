@@ -9,27 +9,37 @@ import carom.core.scene.Scene;
  * <ul>
  *   <li>Elastic hard discs have finitely many collisions at one instant; endlessly many means resting
  *       contact, which is not modelled ({@link #event}).</li>
- *   <li>Under gravity a dissipative disc bouncing on a wall or a fixed disc without the TC model
- *       bounces ever lower, endlessly often: once its bounce would rise less than rounding
- *       (1e-12 of the box), it rests ({@link #dissipativeContact}).</li>
+ *   <li>Under gravity a disc that bounces on a wall or fixed disc gravity presses it into, so low that
+ *       the bounce would rise less than rounding (1e-12 of the box), is resting or sliding on it
+ *       ({@link #wallContact}, {@link #pegContact}): a dissipative disc without the TC model ends up
+ *       there, and so does one stopped dead on a peg, whatever the restitution.</li>
  * </ul>
  */
 public final class StallGuard {
     private final Scene scene;
     private final long limit;
-    private final double acceleration;
+    private static final String[] WALL_NAMES = {"left", "right", "bottom", "top"};
+    private final double gravityX;
+    private final double gravityY;
     private final double restHeight;
     private double lastTime = Double.NaN;
     private long atLastTime;
 
-    public StallGuard(Scene scene, double acceleration) {
+    public StallGuard(Scene scene) {
         this.scene = scene;
         this.limit = Math.max(100_000L, 10L * scene.size());
-        this.acceleration = acceleration;
+        this.gravityX = scene.effects().gravityX();
+        this.gravityY = scene.effects().gravityY();
         this.restHeight = 1e-12 * Math.max(scene.box().width(), scene.box().height());
     }
 
-    /** Called for every collision at absolute time {@code time} between disc a and disc b (or wall -1 - b). */
+    /** The partner of an event that is disc a reaching a cell side (engines that schedule crossings). */
+    public static final int CELL_SIDE = Integer.MIN_VALUE;
+
+    /**
+     * Called for every event at absolute time {@code time} of disc a with disc b, wall -1 - b, or
+     * {@link #CELL_SIDE}. Disc ids are the scene's.
+     */
     public void event(double time, int a, int b) {
         if (time != lastTime) {
             lastTime = time;
@@ -37,7 +47,7 @@ public final class StallGuard {
             return;
         }
         if (++atLastTime > limit) {
-            String with = b >= 0 ? "disc " + b : "wall " + (-1 - b);
+            String with = b >= 0 ? "disc " + b : (b == CELL_SIDE ? "a cell side" : "wall " + (-1 - b));
             throw new SimulationStuckException(String.format(
                     "more than %d collisions at the single instant t = %s, the last between disc %d (%s) and %s: "
                             + "resting contact is not modelled; separate the discs or give them velocities",
@@ -46,14 +56,44 @@ public final class StallGuard {
     }
 
     /**
-     * Called before a dissipative collision of mobile disc {@code disc} with something immovable, with
-     * its normal approach speed.
+     * Called before every collision of mobile disc {@code disc} with wall {@code wall} (Boundary.LEFT,
+     * RIGHT, BOTTOM, TOP) in a scene with gravity, with its velocity. Elastic too: a disc sliding
+     * along a floor it touches makes endless rounding-level bounces whatever the restitution.
      */
-    public void dissipativeContact(double time, int disc, double normalSpeed, String against) {
-        if (acceleration > 0 && normalSpeed * normalSpeed < 2 * acceleration * restHeight) {
+    public void wallContact(double time, int disc, int wall, double vx, double vy) {
+        double nx = wall == 0 ? -1 : (wall == 1 ? 1 : 0);
+        double ny = wall == 2 ? -1 : (wall == 3 ? 1 : 0);
+        check(time, disc, nx, ny, vx, vy, Double.POSITIVE_INFINITY, WALL_NAMES[wall] + " wall");
+    }
+
+    /**
+     * Called before every collision of mobile disc {@code disc} with fixed disc {@code peg} in a scene
+     * with gravity: (nx, ny) is the unit vector from the disc to the peg, {@code distance} their
+     * centre distance.
+     */
+    public void pegContact(double time, int disc, int peg, double nx, double ny, double vx, double vy,
+                                      double distance) {
+        check(time, disc, nx, ny, vx, vy, distance, "fixed disc " + peg);
+    }
+
+    /**
+     * At rest against a surface means: gravity presses the disc into it, the bounce would rise less
+     * than rounding, and the disc is slow enough to stay on the surface (tangential speed squared at
+     * most the pressing acceleration times the curvature radius; any speed on a flat wall). A disc
+     * that merely grazes a peg's side, or slides past it fast, is not resting.
+     */
+    private void check(double time, int disc, double nx, double ny, double vx, double vy, double curvature,
+                       String against) {
+        double pressing = gravityX * nx + gravityY * ny;
+        if (pressing <= 0) {
+            return;
+        }
+        double normal = vx * nx + vy * ny;
+        double tangential2 = Math.max(0, vx * vx + vy * vy - normal * normal);
+        if (normal * normal < 2 * pressing * restHeight && tangential2 <= pressing * curvature) {
             throw new SimulationStuckException(String.format(
-                    "disc %d (%s) came to rest against the %s at t = %s: resting contact is not modelled; "
-                            + "use the TC model (effects.tc > 0) or restitution 1",
+                    "disc %d (%s) came to rest against the %s at t = %s: resting and sliding contact are not "
+                            + "modelled (without the TC model, dissipative discs end up there: set effects.tc > 0)",
                     disc, scene.originOf(disc), against, time));
         }
     }

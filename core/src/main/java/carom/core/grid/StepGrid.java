@@ -60,6 +60,9 @@ public final class StepGrid {
 
     /** Time to travel {@code distance} from speed v under acceleration a: root of v t + a t^2/2 = distance. */
     private static double timeToTravel(double distance, double v, double a) {
+        if (distance == Double.POSITIVE_INFINITY) {
+            return Double.POSITIVE_INFINITY; // an axis that cannot be outrun (and no NaN from Inf/Inf)
+        }
         if (a == 0) {
             return v > 0 ? distance / v : Double.POSITIVE_INFINITY;
         }

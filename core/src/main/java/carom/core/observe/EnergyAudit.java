@@ -12,6 +12,21 @@ public final class EnergyAudit {
     private static final double TOLERANCE = 1e-9;
     private double previous = Double.NaN;
 
+    private EnergyAudit() {
+    }
+
+    /**
+     * An audit for this scene. With gravity in a periodic box potential energy is unbounded (a disc
+     * falls forever, re-entering at the top), so there is no energy to audit: that is bad input.
+     */
+    public static EnergyAudit forScene(carom.core.scene.Scene scene) {
+        if (scene.box().periodic() && scene.effects().hasGravity()) {
+            throw new carom.core.BadInputException("engine option auditEnergy: needs a walled box when there is "
+                    + "gravity (in a periodic box a falling disc's potential energy has no bound)");
+        }
+        return new EnergyAudit();
+    }
+
     /** Throws IllegalStateException if the energy at local {@code time} exceeds the last one. */
     public void check(Discs d, Flight flight, double time, double absoluteTime) {
         double energy = 0;

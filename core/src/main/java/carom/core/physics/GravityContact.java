@@ -64,8 +64,9 @@ public final class GravityContact {
         if (c0 <= 0 && (PairLaw.closing(0.5 * c1, p2, v2) || (v2 == 0 && c2 < 0))) {
             return 0;
         }
-        if (c0 <= 0 && c1 <= 0 && c2 < 0) {
-            // Sliding along the peg within rounding while pressed into it: collide as soon as the
+        if (c0 <= 0 && c2 < 0 && (c1 <= 0 || c0 - c1 * c1 / (4 * c2) <= 0)) {
+            // Touching within rounding and pressed in, with no room to leave first (the distance
+            // function's peak, c0 - c1^2 / 4c2 near t = 0, stays at contact): collide as soon as the
             // inward normal speed stands out from rounding, instead of sinking in.
             double threshold = -2 * PairLaw.GRAZING * Math.sqrt(p2 * v2);
             double t = (threshold - c1) / (2 * c2);

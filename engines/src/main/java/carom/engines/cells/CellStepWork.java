@@ -68,6 +68,8 @@ public final class CellStepWork {
     private final Boundary.Walls walls;
     private final Restitution restitution;
     private final double acceleration;
+    /** Under gravity every contact with something immovable is checked for rest (StallGuard). */
+    private final boolean gravity;
     private final StepGrid stepGrid;
     private final double stepFactor;
     public final CellGrid grid;
@@ -104,6 +106,7 @@ public final class CellStepWork {
         this.walls = boundary instanceof Boundary.Walls w ? w : null;
         this.restitution = physics.restitution;
         this.acceleration = flight.maxAcceleration();
+        this.gravity = acceleration > 0;
         this.stepGrid = StepGrid.plan(scene.box(), 2 * d.maxRadius(), cellFactor, n);
         this.grid = stepGrid.grid;
         this.heaps = new CellHeap[grid.cellCount()];
@@ -118,7 +121,7 @@ public final class CellStepWork {
     }
 
     public Worker newWorker() {
-        return new Worker(scene, until, acceleration, boundary.periodic());
+        return new Worker(scene, until, boundary.periodic());
     }
 
     public double until() {
@@ -261,10 +264,12 @@ public final class CellStepWork {
         double e = restitution.pair(a, b, epoch + now);
         boolean aMobile = d.invMass[a] > 0;
         boolean bMobile = d.invMass[b] > 0;
-        if (e < 1 && !(aMobile && bMobile)) {
+        if (gravity && aMobile != bMobile) {
+            int mobile = aMobile ? a : b;
             double dist = Math.sqrt(dx * dx + dy * dy);
-            double normal = Math.abs(((d.vx[a] - d.vx[b]) * dx + (d.vy[a] - d.vy[b]) * dy) / dist);
-            w.stallGuard.dissipativeContact(epoch + now, aMobile ? a : b, normal, "fixed disc " + (aMobile ? b : a));
+            double toPeg = aMobile ? 1 / dist : -1 / dist;
+            w.stallGuard.pegContact(epoch + now, mobile, aMobile ? b : a, dx * toPeg, dy * toPeg,
+                    d.vx[mobile], d.vy[mobile], dist);
         }
         double virial = PairLaw.collide(d, a, b, dx, dy, e);
         w.pairCollisions++;
@@ -282,9 +287,8 @@ public final class CellStepWork {
     private void collideWall(double now, int i, int wall, int band, Worker w) {
         flight.advance(d, i, now);
         double e = restitution.wall(i, epoch + now);
-        if (e < 1) {
-            double normal = wall == Boundary.LEFT || wall == Boundary.RIGHT ? d.vx[i] : d.vy[i];
-            w.stallGuard.dissipativeContact(epoch + now, i, Math.abs(normal), "wall " + wall);
+        if (gravity) {
+            w.stallGuard.wallContact(epoch + now, i, wall, d.vx[i], d.vy[i]);
         }
         boundary.reflect(d, i, wall, e);
         w.wallCollisions++;

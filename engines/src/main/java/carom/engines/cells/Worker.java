@@ -22,9 +22,9 @@ public final class Worker {
     int[] deferred = new int[48];
     int deferredCount;
 
-    Worker(Scene scene, double until, double acceleration, boolean periodic) {
+    Worker(Scene scene, double until, boolean periodic) {
         this.virial = periodic ? new VirialAccumulator(0, until, CellStepWork.PRESSURE_BLOCKS) : null;
-        this.stallGuard = new StallGuard(scene, acceleration);
+        this.stallGuard = new StallGuard(scene);
     }
 
     void defer(int disc, int stamp, int bandRow) {

@@ -43,7 +43,6 @@ import java.util.Map;
  */
 final class SerialRun {
     private static final int PRESSURE_BLOCKS = 20;
-    private static final String[] WALL_NAMES = {"left", "right", "bottom", "top"};
 
     private final Scene scene;
     private final Discs d;
@@ -55,6 +54,8 @@ final class SerialRun {
     private final Boundary.Walls walls;
     private final Restitution restitution;
     private final double acceleration;
+    /** Under gravity every contact with something immovable is checked for rest (StallGuard). */
+    private final boolean gravity;
     private final EnergyAudit audit;
     private final StepGrid stepGrid;
     private final CellGrid grid;
@@ -84,7 +85,9 @@ final class SerialRun {
         this.walls = boundary instanceof Boundary.Walls w ? w : null;
         this.restitution = physics.restitution;
         this.acceleration = flight.maxAcceleration();
-        this.audit = Boolean.parseBoolean(options.tunables().getOrDefault("auditEnergy", "false")) ? new EnergyAudit() : null;
+        this.gravity = acceleration > 0;
+        this.audit = Boolean.parseBoolean(options.tunables().getOrDefault("auditEnergy", "false"))
+                ? EnergyAudit.forScene(scene) : null;
         double cellFactor = options.tunable("cellFactor", 2.0);
         if (!(cellFactor > 1)) {
             throw new carom.core.BadInputException("engine option cellFactor: must be > 1, got " + cellFactor);
@@ -95,7 +98,7 @@ final class SerialRun {
         this.startY = new double[n];
         this.progress = options.progress();
         this.virial = boundary.periodic() ? new VirialAccumulator(0, until, PRESSURE_BLOCKS) : null;
-        this.stallGuard = new StallGuard(scene, acceleration);
+        this.stallGuard = new StallGuard(scene);
     }
 
     RunResult run() {
@@ -186,9 +189,12 @@ final class SerialRun {
         double e = restitution.pair(a, b, epoch + now);
         boolean aMobile = d.invMass[a] > 0;
         boolean bMobile = d.invMass[b] > 0;
-        if (e < 1 && !(aMobile && bMobile)) {
-            stallGuard.dissipativeContact(epoch + now, aMobile ? a : b, approachSpeed(a, b, dx, dy),
-                    "fixed disc " + (aMobile ? b : a));
+        if (gravity && aMobile != bMobile) {
+            int mobile = aMobile ? a : b;
+            double dist = Math.sqrt(dx * dx + dy * dy);
+            double toPeg = aMobile ? 1 / dist : -1 / dist;
+            stallGuard.pegContact(epoch + now, mobile, aMobile ? b : a, dx * toPeg, dy * toPeg,
+                    d.vx[mobile], d.vy[mobile], dist);
         }
         double w = PairLaw.collide(d, a, b, dx, dy, e);
         pairCollisions++;
@@ -219,9 +225,8 @@ final class SerialRun {
     private void collideWall(double epoch, double now, int i, int wall) {
         flight.advance(d, i, now);
         double e = restitution.wall(i, epoch + now);
-        if (e < 1) {
-            double normalSpeed = wall == Boundary.LEFT || wall == Boundary.RIGHT ? d.vx[i] : d.vy[i];
-            stallGuard.dissipativeContact(epoch + now, i, Math.abs(normalSpeed), WALL_NAMES[wall] + " wall");
+        if (gravity) {
+            stallGuard.wallContact(epoch + now, i, wall, d.vx[i], d.vy[i]);
         }
         boundary.reflect(d, i, wall, e);
         restitution.collided(i, epoch + now);
@@ -272,10 +277,5 @@ final class SerialRun {
                 predictions++;
             }
         }
-    }
-
-    private double approachSpeed(int a, int b, double dx, double dy) {
-        double dist = Math.sqrt(dx * dx + dy * dy);
-        return Math.abs(((d.vx[a] - d.vx[b]) * dx + (d.vy[a] - d.vy[b]) * dy) / dist);
     }
 }

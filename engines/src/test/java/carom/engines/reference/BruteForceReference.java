@@ -1,17 +1,37 @@
 package carom.engines.reference;
 
+import carom.core.engine.SimulationStuckException;
 import carom.core.observe.Observables;
 import carom.core.physics.Boundary;
+import carom.core.physics.Flight;
 import carom.core.physics.PairLaw;
 import carom.core.physics.Physics;
+import carom.core.physics.Restitution;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
 
 /**
  * The judge of every engine on small scenes: no grid, no queue, no lazy motion. Each iteration looks
  * at every pair and every wall, advances every disc to the earliest event and resolves it. O(N^2) per
- * event, so only for a few dozen discs. Shares only the two-body laws with the engines
- * ({@link PairLaw}, {@link Boundary}), which have analytic tests of their own.
+ * event, so only for a few dozen discs. Shares only the two-body laws with the engines: how a disc
+ * flies and when two discs or a disc and a wall meet ({@link Flight}, {@link PairLaw}, {@link Boundary}),
+ * what a contact does ({@link PairLaw#collide}, {@link Boundary#reflect}) and which restitution it gets
+ * ({@link Restitution}), each of which has analytic tests of its own.
+ *
+ * <p>Every disc's clock is the absolute time of the last event (no epochs); periodic positions are
+ * wrapped after every advance. Effects: gravity through {@code physics.flight}, restitution and the TC
+ * model through {@code physics.restitution}, which is told of every collision of a mobile disc.
+ *
+ * <p>Periodic boxes: predictions see each pair's nearest image at the time they are made, so the judge
+ * never looks further ahead than a pair could move before another image might come into contact; when
+ * nothing happens within that window it advances every disc to its end and looks again.
+ *
+ * <p>Resting contact is not modelled (SPEC): a dissipative disc bouncing on a wall or a fixed disc
+ * without the TC model bounces ever lower, endlessly often. The judge stops such a run with
+ * {@link SimulationStuckException} naming the disc, by the rule the serial engine documents: a
+ * dissipative bounce against a wall or fixed disc whose normal speed would lift the disc less than
+ * {@code 1e-12} of the box size. It also stops when more than {@code max(100000, 10 N)} collisions
+ * happen at one instant.
  */
 public final class BruteForceReference {
     public record Result(Discs state, long pairCollisions, long wallCollisions) {
@@ -19,6 +39,7 @@ public final class BruteForceReference {
 
     /** Scenes judged here are small and short; more events than this means a loop, not physics. */
     private static final long MAX_EVENTS = 10_000_000;
+    private static final String[] WALL_NAMES = {"left", "right", "bottom", "top"};
 
     private BruteForceReference() {
     }
@@ -26,10 +47,22 @@ public final class BruteForceReference {
     public static Result run(Scene scene, double until) {
         Discs d = scene.newDiscs();
         Physics physics = Physics.of(scene);
+        Flight flight = physics.flight;
         Boundary boundary = physics.boundary;
+        Boundary.Walls walls = boundary instanceof Boundary.Walls w ? w : null;
+        Restitution restitution = physics.restitution;
+        double acceleration = flight.maxAcceleration();
+        double restHeight = 1e-12 * Math.max(scene.box().width(), scene.box().height());
+        long stuckLimit = Math.max(100_000L, 10L * d.n);
+        // Periodic: a pair can meet another image than its nearest one only after their separation changed
+        // by at least half the box minus the contact distance along some axis.
+        double periodicLimit = boundary.periodic()
+                ? 0.5 * Math.min(boundary.width, boundary.height) - 2 * d.maxRadius() : 0;
         long pairs = 0;
-        long walls = 0;
+        long wallHits = 0;
         double now = 0;
+        double lastTime = Double.NaN;
+        long atLastTime = 0;
         for (long events = 0; ; events++) {
             if (events > MAX_EVENTS) {
                 throw new IllegalStateException("brute-force reference: more than " + MAX_EVENTS + " events by t = " + now);
@@ -38,9 +71,9 @@ public final class BruteForceReference {
             int bestA = -1;
             int bestB = 0;
             for (int i = 0; i < d.n; i++) {
-                if (d.invMass[i] > 0) {
-                    for (int w = 0; w < boundary.wallCount(); w++) {
-                        double t = boundary.timeToWall(w, d.x[i], d.y[i], d.vx[i], d.vy[i], d.radius[i]);
+                if (walls != null && d.invMass[i] > 0) {
+                    for (int w = 0; w < 4; w++) {
+                        double t = flight.timeToWall(d, i, w, now, walls);
                         if (t < best) {
                             best = t;
                             bestA = i;
@@ -49,10 +82,7 @@ public final class BruteForceReference {
                     }
                 }
                 for (int j = i + 1; j < d.n; j++) {
-                    double dx = boundary.separationX(d.x[j] - d.x[i]);
-                    double dy = boundary.separationY(d.y[j] - d.y[i]);
-                    double t = PairLaw.timeToContact(dx, dy, d.vx[j] - d.vx[i], d.vy[j] - d.vy[i],
-                            d.radius[i] + d.radius[j]);
+                    double t = flight.timeToContact(d, i, j, now, until, boundary);
                     if (t < best) {
                         best = t;
                         bestA = i;
@@ -61,32 +91,108 @@ public final class BruteForceReference {
                 }
             }
             double next = now + best;
-            if (bestA < 0 || next > until) {
-                moveAll(d, boundary, until - now);
-                return new Result(d, pairs, walls);
+            if (periodicLimit > 0) {
+                // Predictions see each pair's nearest image at now only; never look further than a pair
+                // can move before another image could come into contact.
+                double window = imageWindow(d, periodicLimit, acceleration);
+                if (next > now + window && now + window < until) {
+                    now += window;
+                    advanceAll(d, flight, boundary, now);
+                    events--;
+                    continue;
+                }
             }
-            moveAll(d, boundary, best);
+            if (bestA < 0 || next > until) {
+                advanceAll(d, flight, boundary, until);
+                return new Result(d, pairs, wallHits);
+            }
+            advanceAll(d, flight, boundary, next);
             now = next;
+            if (now != lastTime) {
+                lastTime = now;
+                atLastTime = 0;
+            } else if (++atLastTime > stuckLimit) {
+                throw new SimulationStuckException(String.format(
+                        "brute-force reference: more than %d collisions at the single instant t = %s, the last of disc %d",
+                        stuckLimit, now, bestA));
+            }
             if (bestB >= 0) {
-                double dx = boundary.separationX(d.x[bestB] - d.x[bestA]);
-                double dy = boundary.separationY(d.y[bestB] - d.y[bestA]);
-                PairLaw.collide(d, bestA, bestB, dx, dy, physics.restitution.pair(bestA, bestB, now));
+                int a = bestA;
+                int b = bestB;
+                double dx = boundary.separationX(d.x[b] - d.x[a]);
+                double dy = boundary.separationY(d.y[b] - d.y[a]);
+                double e = restitution.pair(a, b, now);
+                boolean aMobile = d.invMass[a] > 0;
+                boolean bMobile = d.invMass[b] > 0;
+                if (e < 1 && aMobile != bMobile) {
+                    double dist = Math.sqrt(dx * dx + dy * dy);
+                    double normal = ((d.vx[a] - d.vx[b]) * dx + (d.vy[a] - d.vy[b]) * dy) / dist;
+                    stopIfResting(acceleration, restHeight, aMobile ? a : b, normal, now, "fixed disc " + (aMobile ? b : a));
+                }
+                PairLaw.collide(d, a, b, dx, dy, e);
+                if (aMobile) {
+                    restitution.collided(a, now);
+                }
+                if (bMobile) {
+                    restitution.collided(b, now);
+                }
                 pairs++;
             } else {
-                boundary.reflect(d, bestA, -1 - bestB, physics.restitution.wall(bestA, now));
-                walls++;
+                int wall = -1 - bestB;
+                double e = restitution.wall(bestA, now);
+                if (e < 1) {
+                    double normal = wall == Boundary.LEFT || wall == Boundary.RIGHT ? d.vx[bestA] : d.vy[bestA];
+                    stopIfResting(acceleration, restHeight, bestA, normal, now, WALL_NAMES[wall] + " wall");
+                }
+                boundary.reflect(d, bestA, wall, e);
+                restitution.collided(bestA, now);
+                wallHits++;
             }
         }
     }
 
-    private static void moveAll(Discs d, Boundary boundary, double dt) {
+    /**
+     * A time within which no pair's separation changes by {@code limit / 2} or more along an axis: two
+     * discs at speeds up to vmax under an acceleration difference up to {@code acceleration} (a mobile
+     * disc against a fixed one) drift apart by at most 2 vmax t + acceleration t^2 / 2.
+     */
+    private static double imageWindow(Discs d, double limit, double acceleration) {
+        double vmax = d.maxSpeed();
+        double distance = 0.5 * limit;
+        return 2 * distance / (2 * vmax + Math.sqrt(4 * vmax * vmax + 2 * acceleration * distance));
+    }
+
+    private static void stopIfResting(double acceleration, double restHeight, int disc, double normalSpeed, double now,
+                                      String against) {
+        if (acceleration > 0 && normalSpeed * normalSpeed < 2 * acceleration * restHeight) {
+            throw new SimulationStuckException(String.format(
+                    "brute-force reference: disc %d came to rest against the %s at t = %s", disc, against, now));
+        }
+    }
+
+    /** Every disc to absolute time {@code time} (its clock becomes {@code time}), periodic positions wrapped. */
+    private static void advanceAll(Discs d, Flight flight, Boundary boundary, double time) {
         for (int i = 0; i < d.n; i++) {
-            d.x[i] = boundary.wrapX(d.x[i] + d.vx[i] * dt);
-            d.y[i] = boundary.wrapY(d.y[i] + d.vy[i] * dt);
+            flight.advance(d, i, time);
+            d.x[i] = boundary.wrapX(d.x[i]);
+            d.y[i] = boundary.wrapY(d.y[i]);
         }
     }
 
     public static double kineticEnergy(Result r) {
         return Observables.kineticEnergy(r.state());
+    }
+
+    /** Kinetic plus gravity's potential energy of the mobile discs (walls boxes: positions are not wrapped). */
+    public static double mechanicalEnergy(Scene scene, Discs d) {
+        Flight flight = Physics.of(scene).flight;
+        double energy = 0;
+        for (int i = 0; i < d.n; i++) {
+            if (d.invMass[i] > 0) {
+                energy += 0.5 * (d.vx[i] * d.vx[i] + d.vy[i] * d.vy[i]) / d.invMass[i]
+                        + flight.potentialEnergy(d, i, d.t[i]);
+            }
+        }
+        return energy;
     }
 }

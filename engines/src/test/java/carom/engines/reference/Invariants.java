@@ -55,6 +55,24 @@ public final class Invariants {
         return result;
     }
 
+    /**
+     * The invariants that hold whatever the effects (gravity and restitution change energy and
+     * momentum): a finite state, fixed discs in place, every disc inside the box, no overlaps.
+     */
+    public static void noOverlapsAndInside(Scene scene, Discs d) {
+        String name = scene.name();
+        Discs initial = scene.newDiscs();
+        for (int i = 0; i < d.n; i++) {
+            assertThat(Double.isFinite(d.x[i]) && Double.isFinite(d.y[i]) && Double.isFinite(d.vx[i])
+                    && Double.isFinite(d.vy[i]))
+                    .as("%s: disc %d is finite: (%s, %s) v (%s, %s)", name, i, d.x[i], d.y[i], d.vx[i], d.vy[i])
+                    .isTrue();
+        }
+        fixedDiscsStayPut(name, initial, d);
+        insideBox(name, scene.box(), d);
+        noOverlaps(name, scene.box(), d);
+    }
+
     static void noNaN(String name, Discs d, double until) {
         for (int i = 0; i < d.n; i++) {
             assertThat(Double.isFinite(d.x[i]) && Double.isFinite(d.y[i]) && Double.isFinite(d.vx[i])

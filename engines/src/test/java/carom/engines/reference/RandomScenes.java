@@ -1,6 +1,7 @@
 package carom.engines.reference;
 
 import carom.core.scene.BoundaryKind;
+import carom.core.scene.Effects;
 import carom.core.scene.GenerateBlock;
 import carom.core.scene.Scene;
 import carom.core.scene.SceneBuilder;
@@ -63,6 +64,73 @@ public final class RandomScenes {
             b.disc(species, x, y, speed * (2 * random.nextDouble() - 1), speed * (2 * random.nextDouble() - 1));
         }
         return b.until(1.5 + random.nextDouble()).build();
+    }
+
+    /**
+     * Seeded random small scenes with effects: gravity (mostly downward, sometimes any direction, 2 to
+     * 10), pair restitution and wall restitution each 1 or in [0.5, 1), the TC model off or tc = 1e-3,
+     * fixed pegs in half of them; walls in three of four, periodic otherwise. Six to twenty-five discs of
+     * two mobile species placed by rejection sampling with gaps of at least 0.05 to every wall and disc,
+     * so no disc starts resting on a wall or peg (SPEC). Horizons of 0.7 to 1.1 keep the runs short of
+     * chaos: the serial engine must match {@link BruteForceReference} to 1e-8 on them.
+     */
+    public static Scene effects(long seed) {
+        SplittableRandom random = new SplittableRandom(seed);
+        boolean periodic = random.nextInt(4) == 0;
+        // At least three grid cells (of twice the largest diameter, 1) per axis: see the disabled test
+        // SerialEffectsTest.gravityInABoxOfAtMostTwoGridCellsPerAxisStaysFinite for smaller boxes.
+        double width = 6.5 + 4.5 * random.nextDouble();
+        double height = 6.5 + 4.5 * random.nextDouble();
+        double[] radii = {0.2 + 0.1 * random.nextDouble(), 0.35 + 0.15 * random.nextDouble(), 0.2 + 0.2 * random.nextDouble()};
+        double g = 2 + 8 * random.nextDouble();
+        double angle = random.nextInt(4) == 0 ? 2 * Math.PI * random.nextDouble() : -0.5 * Math.PI + 0.5 * (random.nextDouble() - 0.5);
+        double restitution = random.nextInt(4) == 0 ? 1 : 0.5 + 0.5 * random.nextDouble();
+        double wallRestitution = random.nextInt(4) == 0 ? 1 : 0.5 + 0.5 * random.nextDouble();
+        double tc = random.nextBoolean() ? 1e-3 : 0;
+        Effects effects = Effects.NONE.withGravity(g * Math.cos(angle), g * Math.sin(angle))
+                .withRestitution(restitution, wallRestitution).withTc(tc);
+        SceneBuilder b = SceneBuilder.create(String.format("effects-%d-g%.2f-e%.2f-w%.2f-tc%s", seed, g, restitution,
+                        wallRestitution, tc))
+                .box(width, height, periodic ? BoundaryKind.PERIODIC : BoundaryKind.WALLS)
+                .species(Species.mobile("small", radii[0], 1.0))
+                .species(Species.mobile("large", radii[1], 1 + 3 * random.nextDouble()))
+                .effects(effects);
+        boolean pegs = random.nextBoolean();
+        if (pegs) {
+            b.species(Species.fixed("peg", radii[2]));
+        }
+        double gap = 0.05;
+        int count = 6 + random.nextInt(20);
+        double[] xs = new double[count];
+        double[] ys = new double[count];
+        double[] rs = new double[count];
+        int placed = 0;
+        for (int attempt = 0; placed < count && attempt < 10_000; attempt++) {
+            int species = pegs && random.nextInt(4) == 0 ? 2 : random.nextInt(2);
+            double r = radii[species];
+            double x = r + gap + (width - 2 * r - 2 * gap) * random.nextDouble();
+            double y = r + gap + (height - 2 * r - 2 * gap) * random.nextDouble();
+            boolean free = true;
+            for (int k = 0; k < placed && free; k++) {
+                double dx = x - xs[k];
+                double dy = y - ys[k];
+                if (periodic) {
+                    dx -= width * Math.rint(dx / width);
+                    dy -= height * Math.rint(dy / height);
+                }
+                free = dx * dx + dy * dy > (r + rs[k] + gap) * (r + rs[k] + gap);
+            }
+            if (!free) {
+                continue;
+            }
+            xs[placed] = x;
+            ys[placed] = y;
+            rs[placed] = r;
+            placed++;
+            double speed = species == 2 ? 0 : 2 * random.nextDouble();
+            b.disc(species, x, y, speed * (2 * random.nextDouble() - 1), speed * (2 * random.nextDouble() - 1));
+        }
+        return b.until(0.7 + 0.4 * random.nextDouble()).build();
     }
 
     /**

@@ -1,0 +1,727 @@
+package carom.engines.fast;
+
+import carom.core.BadInputException;
+import carom.core.engine.ProgressListener;
+import carom.core.engine.RunOptions;
+import carom.core.engine.RunResult;
+import carom.core.engine.StallGuard;
+import carom.core.observe.EnergyAudit;
+import carom.core.observe.Observables;
+import carom.core.observe.Pressure;
+import carom.core.observe.VirialAccumulator;
+import carom.core.physics.Boundary;
+import carom.core.physics.Flight;
+import carom.core.physics.PairLaw;
+import carom.core.physics.Physics;
+import carom.core.physics.Restitution;
+import carom.core.scene.Scene;
+import carom.core.state.Discs;
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.Map;
+
+/**
+ * One run of the fast engine: every disc to {@code until}, exactly, in one thread.
+ *
+ * <h2>Algorithm</h2>
+ * Each mobile disc has exactly one scheduled event, the earliest of: its pair collisions with discs
+ * in its 3x3 cell neighbourhood, its wall hits, and its crossing out of its cell (Smallenburg 2022,
+ * "Efficient event-driven simulations of hard spheres", Eur. Phys. J. E 45, 22; the classic Rapaport
+ * scheme with one event per particle). Events sit in Paul's calendar queue ({@link CalendarQueue}).
+ * <ul>
+ *   <li>Collision of i and j: both advance, collide ({@link PairLaw#collide}), bump their collision
+ *       counters, and re-predict against their whole neighbourhood.</li>
+ *   <li>Pair event whose partner's counter changed since prediction: stale; re-predict the disc.</li>
+ *   <li>Cell crossing: move the disc to the new cell and predict it only against the row or column
+ *       of cells that enters its neighbourhood, plus its remembered best candidate (its trajectory is
+ *       unchanged, so every other old candidate is still later than that one). Under gravity with
+ *       fixed discs the whole neighbourhood is re-predicted, because a mobile-fixed contact is only
+ *       searched up to the disc's next crossing (the {@code horizon} of the quartic search).</li>
+ * </ul>
+ *
+ * <h2>Invariants</h2>
+ * <ul>
+ *   <li>Cells are at least the largest diameter wide, so touching discs are always in neighbouring
+ *       cells; a disc changes cell only at its crossing event (its logical cell may differ from the
+ *       cell of its rounded position by rounding, which no prediction depends on).</li>
+ *   <li>A disc's scheduled time is at most the time of its next real event (every contact is found
+ *       from at least one side since either disc last changed trajectory or cell); fixed discs are
+ *       never scheduled; a mobile disc without any event (at rest, no gravity) is not queued.</li>
+ *   <li>Local times: disc clocks and event times count from {@code epoch}; every
+ *       {@link #RESYNC_SPANS} calendar spans all discs are advanced, clocks restart at 0 and the queue is
+ *       rebuilt with a re-estimated slice width, so clocks stay small and keep their precision.</li>
+ *   <li>Periodic positions stay within rounding of their logical cell: at a crossing through the box
+ *       edge the position moves by exactly one box length, never by {@code wrapX}, whose rounding
+ *       could put the disc on the wrong side of its cell.</li>
+ * </ul>
+ *
+ * <h2>Layout</h2>
+ * Discs are renumbered along a Morton curve of their initial cells (neighbours close in memory);
+ * during the run {@code d.species[k]} holds internal disc k's original id (no physics reads species),
+ * saving a permutation array; the final state is copied back in original id order. Per-disc state is
+ * flat primitive arrays; no allocation per event.
+ */
+final class FastRun {
+    private static final int PRESSURE_BLOCKS = 20;
+    /** Scheduled event kinds: the best candidate (pair or wall), or a crossing through a cell side. */
+    private static final byte HIT = 0;
+    private static final byte CROSS_LEFT = 1;
+    private static final byte CROSS_RIGHT = 2;
+    private static final byte CROSS_DOWN = 3;
+    private static final byte CROSS_UP = 4;
+    /** Re-predict in full (small periodic axes, where the nearest image can switch within a cell). */
+    private static final byte RECHECK = 5;
+    /** Candidate codes: j >= 0 a disc, -1 - w wall w, NONE nothing. */
+    private static final int NONE = Integer.MIN_VALUE;
+    private static final int NIL = -1;
+    /** Calendar span = SPAN_MEANS mean event delays; clocks re-anchored every RESYNC_SPANS spans. */
+    private static final double SPAN_MEANS = 4;
+    private static final double RESYNC_SPANS = 4;
+    private static final double INF = Double.POSITIVE_INFINITY;
+
+    private final Scene scene;
+    private final int n;
+    private final double until;
+    private final Discs d;
+    private final Flight flight;
+    private final Boundary boundary;
+    private final Boundary.Walls walls;
+    private final boolean periodic;
+    private final Restitution restitution;
+    private final double acceleration;
+    /** Under gravity every contact with something immovable is checked for rest (StallGuard). */
+    private final boolean gravity;
+    private final EnergyAudit audit;
+    private final VirialAccumulator virial;
+    private final ProgressListener progress;
+    private final StallGuard stallGuard;
+    private final double energyStart;
+    private final double[] momentumStart;
+
+    // Grid: cell = row * cols + col; head[cell] -> cellNext chain.
+    private final int cols;
+    private final int rows;
+    private final double cellW;
+    private final double cellH;
+    private final double width;
+    private final double height;
+    private final int[] cellHead;
+    private final int[] cellNext;
+    /** Each disc's logical cell as {@code row << 16 | col} (no division on hot paths; axes <= 65535 cells). */
+    private final int[] cellOf;
+    /** Re-predict the whole neighbourhood after a crossing (gravity with fixed discs; small grids). */
+    private final boolean fullOnCross;
+    /**
+     * Periodic axes with fewer than 4 cells: two discs in neighbouring cells may be half a box apart,
+     * so the nearest image of a pair can switch with no crossing; such a disc is re-predicted in full
+     * whenever it has moved {@code recheckX} (or {@code recheckY}) since its last prediction, 0 if not
+     * needed. Why that suffices: contact needs |dx| <= sigma < L/2, so after a switch at |dx| = L/2 the
+     * pair must close by L/2 - sigma = 2 * recheck, so one of the two moves recheck first and then
+     * predicts with the right image (every column is in every neighbourhood on such an axis).
+     */
+    private final double recheckX;
+    private final double recheckY;
+
+    // Events: time in the queue; kind, best candidate and its counter at prediction here.
+    private final CalendarQueue queue;
+    private final byte[] kind;
+    private final int[] partner;
+    private final int[] partnerCount;
+    /** Velocity changes of each disc: a prediction against j is valid while count[j] is unchanged. */
+    private final int[] count;
+
+    private double epoch;
+    private double untilLocal;
+    private double resyncAt;
+    private long pairCollisions;
+    private long wallCollisions;
+    private long events;
+    private long crossings;
+    private long staleEvents;
+    private long predictions;
+    private long resyncs;
+    /** Side through which the last {@link #crossing} leaves (a crossing kind). */
+    private byte crossKind;
+
+    FastRun(Scene scene, RunOptions options) {
+        this.scene = scene;
+        this.until = options.until();
+        Discs src = scene.newDiscs();
+        this.n = src.n;
+        Physics physics = Physics.of(scene);
+        this.flight = physics.flight;
+        this.boundary = physics.boundary;
+        this.walls = boundary instanceof Boundary.Walls w ? w : null;
+        this.periodic = walls == null;
+        this.restitution = physics.restitution;
+        this.acceleration = flight.maxAcceleration();
+        this.gravity = acceleration > 0;
+        this.width = scene.box().width();
+        this.height = scene.box().height();
+        this.audit = Boolean.parseBoolean(options.tunables().getOrDefault("auditEnergy", "false")) ? EnergyAudit.forScene(scene) : null;
+        this.virial = periodic ? new VirialAccumulator(0, until, PRESSURE_BLOCKS) : null;
+        this.progress = options.progress();
+        this.stallGuard = new StallGuard(scene);
+        this.energyStart = Observables.kineticEnergy(src);
+        this.momentumStart = Observables.momentum(src);
+
+        double cellFactor = options.tunable("cellFactor", 1.0);
+        if (!(cellFactor >= 1) || Double.isInfinite(cellFactor)) {
+            throw new BadInputException("engine option cellFactor: must be >= 1, got " + cellFactor);
+        }
+        // A hair wider than the diameter, so that rounding at a cell side can never hide a contact.
+        double minCell = 2 * src.maxRadius() * cellFactor * (1 + 1e-9);
+        long c = cellsAlong(width, minCell);
+        long r = cellsAlong(height, minCell);
+        long cap = Math.max(64, 4L * n);
+        while (c * r > cap) {
+            double shrink = Math.sqrt((double) c * r / cap) * 1.0001;
+            c = Math.max(1, (long) (c / shrink));
+            r = Math.max(1, (long) (r / shrink));
+        }
+        // Coarser cells stay valid (only wider than needed): cap each axis so (row, col) packs in an int.
+        this.cols = (int) Math.min(c, 0xFFFF);
+        this.rows = (int) Math.min(r, 0xFFFF);
+        this.cellW = width / cols;
+        this.cellH = height / rows;
+        double maxDiameter = 2 * src.maxRadius();
+        this.recheckX = periodic && cols < 4 ? 0.5 * (0.5 * width - maxDiameter) : 0;
+        this.recheckY = periodic && rows < 4 ? 0.5 * (0.5 * height - maxDiameter) : 0;
+        this.fullOnCross = (acceleration > 0 && scene.hasFixedDiscs()) || recheckX > 0 || recheckY > 0;
+        this.cellHead = new int[cols * rows];
+        this.cellNext = new int[n];
+        this.cellOf = new int[n];
+        Arrays.fill(cellHead, NIL);
+
+        this.d = new Discs(n);
+        int[] order = mortonOrder(src);
+        for (int k = 0; k < n; k++) {
+            int o = order[k];
+            d.x[k] = src.x[o];
+            d.y[k] = src.y[o];
+            d.vx[k] = src.vx[o];
+            d.vy[k] = src.vy[o];
+            d.radius[k] = src.radius[o];
+            d.invMass[k] = src.invMass[o];
+            d.species[k] = o;
+        }
+        for (int k = n - 1; k >= 0; k--) {
+            int row = rowOf(d.y[k]);
+            int col = colOf(d.x[k]);
+            int cell = row * cols + col;
+            cellOf[k] = row << 16 | col;
+            cellNext[k] = cellHead[cell];
+            cellHead[cell] = k;
+        }
+
+        int buckets = Integer.highestOneBit(Math.max(64, n / 2 - 1)) << 1;
+        this.queue = new CalendarQueue(n, buckets);
+        this.kind = new byte[n];
+        this.partner = new int[n];
+        this.partnerCount = new int[n];
+        this.count = new int[n];
+        Arrays.fill(partner, NONE);
+    }
+
+    private static long cellsAlong(double length, double minCell) {
+        double k = Math.floor(length / minCell);
+        return k >= 1 ? (long) Math.min(k, 1 << 30) : 1;
+    }
+
+    private int colOf(double x) {
+        int col = (int) (x / cellW);
+        return col < 0 ? 0 : (col >= cols ? cols - 1 : col);
+    }
+
+    private int rowOf(double y) {
+        int row = (int) (y / cellH);
+        return row < 0 ? 0 : (row >= rows ? rows - 1 : row);
+    }
+
+    /** Disc ids sorted by the Morton code of their cell (LSD radix sort, two 16-bit passes). */
+    private int[] mortonOrder(Discs src) {
+        int shiftC = Math.max(0, 32 - Integer.numberOfLeadingZeros(cols - 1) - 16);
+        int shiftR = Math.max(0, 32 - Integer.numberOfLeadingZeros(rows - 1) - 16);
+        int[] key = new int[n];
+        int[] ids = new int[n];
+        for (int i = 0; i < n; i++) {
+            key[i] = spread(colOf(src.x[i]) >>> shiftC) | (spread(rowOf(src.y[i]) >>> shiftR) << 1);
+            ids[i] = i;
+        }
+        int[] ids2 = new int[n];
+        int[] key2 = new int[n];
+        int[] counts = new int[1 << 16];
+        for (int pass = 0; pass < 2; pass++) {
+            int shift = 16 * pass;
+            Arrays.fill(counts, 0);
+            for (int i = 0; i < n; i++) {
+                counts[(key[i] >>> shift) & 0xFFFF]++;
+            }
+            int sum = 0;
+            for (int b = 0; b < counts.length; b++) {
+                int cnt = counts[b];
+                counts[b] = sum;
+                sum += cnt;
+            }
+            for (int i = 0; i < n; i++) {
+                int at = counts[(key[i] >>> shift) & 0xFFFF]++;
+                ids2[at] = ids[i];
+                key2[at] = key[i];
+            }
+            int[] t = ids;
+            ids = ids2;
+            ids2 = t;
+            t = key;
+            key = key2;
+            key2 = t;
+        }
+        return ids;
+    }
+
+    private static int spread(int v) {
+        v &= 0xFFFF;
+        v = (v | (v << 8)) & 0x00FF00FF;
+        v = (v | (v << 4)) & 0x0F0F0F0F;
+        v = (v | (v << 2)) & 0x33333333;
+        return (v | (v << 1)) & 0x55555555;
+    }
+
+    RunResult run() {
+        long started = System.nanoTime();
+        double[] t = queue.time;
+        for (int i = 0; i < n; i++) {
+            if (d.invMass[i] > 0) {
+                t[i] = predictFull(i, 0);
+            }
+        }
+        replan(0);
+        loop();
+        double seconds = (System.nanoTime() - started) * 1e-9;
+        Discs out = finalState();
+        double energyEnd = Observables.kineticEnergy(out);
+        Pressure pressure = virial == null ? null
+                : virial.pressure(Observables.mobileCount(out), 0.5 * (energyStart + energyEnd), scene.box().area());
+        Map<String, Long> counters = new HashMap<>();
+        counters.put("events", events);
+        counters.put("cellCrossings", crossings);
+        counters.put("staleEvents", staleEvents);
+        counters.put("predictions", predictions);
+        counters.put("resyncs", resyncs);
+        counters.put("bytesPerDisc", n == 0 ? 0 : Math.round((double) bytes() / n));
+        return new RunResult("fast", true, out, until, pairCollisions, wallCollisions, events,
+                energyStart, energyEnd, momentumStart, Observables.momentum(out), pressure, 0, seconds,
+                Map.copyOf(counters));
+    }
+
+    /** Heap held by this run's per-disc and per-cell arrays, in bytes. */
+    private long bytes() {
+        long perDiscDoubles = 7L * 8 * n; // x, y, vx, vy, t, radius, invMass
+        long discs = perDiscDoubles + 4L * n; // species (holds the original id)
+        return discs + queue.bytes() + n + 4L * n * 3 + 4L * n * 2 + 4L * cellHead.length;
+    }
+
+    private void loop() {
+        double[] t = queue.time;
+        untilLocal = until - epoch;
+        long progressMark = 0;
+        while (true) {
+            int i = queue.peek();
+            if (i < 0) {
+                return;
+            }
+            double now = t[i];
+            if (now > untilLocal) {
+                return;
+            }
+            if (now >= resyncAt) {
+                resync(now);
+                continue;
+            }
+            queue.pollTop();
+            events++;
+            int other = partner[i];
+            stallGuard.event(epoch + now, d.species[i],
+                    kind[i] != HIT ? StallGuard.CELL_SIDE : (other >= 0 ? d.species[other] : other));
+            byte k = kind[i];
+            if (k == RECHECK) {
+                flight.advance(d, i, now);
+                queue.insert(i, predictFull(i, now));
+            } else if (k != HIT) {
+                crossCell(i, now, k);
+            } else {
+                int p = partner[i];
+                if (p >= 0) {
+                    if (count[p] != partnerCount[i]) {
+                        staleEvents++;
+                        flight.advance(d, i, now);
+                        queue.insert(i, predictFull(i, now));
+                    } else {
+                        collidePair(i, p, now);
+                    }
+                } else {
+                    collideWall(i, -1 - p, now);
+                }
+            }
+            if (events - progressMark >= (1 << 16)) {
+                progressMark = events;
+                progress.simulatedTime(epoch + now);
+            }
+        }
+    }
+
+    private void collidePair(int a, int b, double now) {
+        double abs = epoch + now;
+        flight.advance(d, a, now);
+        flight.advance(d, b, now);
+        double dx = boundary.separationX(d.x[b] - d.x[a]);
+        double dy = boundary.separationY(d.y[b] - d.y[a]);
+        double e = restitution.pair(a, b, abs);
+        boolean bMobile = d.invMass[b] > 0;
+        if (gravity && !bMobile) {
+            double dist = Math.sqrt(dx * dx + dy * dy);
+            stallGuard.pegContact(abs, d.species[a], d.species[b], dx / dist, dy / dist, d.vx[a], d.vy[a], dist);
+        }
+        double w = PairLaw.collide(d, a, b, dx, dy, e);
+        pairCollisions++;
+        restitution.collided(a, abs);
+        count[a]++;
+        if (bMobile) {
+            restitution.collided(b, abs);
+            count[b]++;
+        }
+        if (virial != null) {
+            virial.add(abs, w);
+        }
+        if (audit != null) {
+            audit.check(d, flight, now, abs);
+        }
+        queue.insert(a, predictFull(a, now));
+        if (bMobile) {
+            queue.remove(b);
+            queue.insert(b, predictFull(b, now));
+        }
+    }
+
+    private void collideWall(int i, int wall, double now) {
+        double abs = epoch + now;
+        flight.advance(d, i, now);
+        double e = restitution.wall(i, abs);
+        if (gravity) {
+            stallGuard.wallContact(abs, d.species[i], wall, d.vx[i], d.vy[i]);
+        }
+        boundary.reflect(d, i, wall, e);
+        restitution.collided(i, abs);
+        count[i]++;
+        wallCollisions++;
+        if (audit != null) {
+            audit.check(d, flight, now, abs);
+        }
+        queue.insert(i, predictFull(i, now));
+    }
+
+    /** Moves disc i into the neighbouring cell through side {@code k} and re-predicts it. */
+    private void crossCell(int i, double now, byte k) {
+        crossings++;
+        flight.advance(d, i, now);
+        int packed = cellOf[i];
+        int col = packed & 0xFFFF;
+        int row = packed >>> 16;
+        int old = row * cols + col;
+        switch (k) {
+            case CROSS_LEFT -> {
+                if (--col < 0) {
+                    col = cols - 1;
+                    d.x[i] += width;
+                }
+            }
+            case CROSS_RIGHT -> {
+                if (++col == cols) {
+                    col = 0;
+                    d.x[i] -= width;
+                }
+            }
+            case CROSS_DOWN -> {
+                if (--row < 0) {
+                    row = rows - 1;
+                    d.y[i] += height;
+                }
+            }
+            default -> {
+                if (++row == rows) {
+                    row = 0;
+                    d.y[i] -= height;
+                }
+            }
+        }
+        // Unlink from the old cell (a cell holds a handful of discs) and push onto the new one.
+        int h = cellHead[old];
+        if (h == i) {
+            cellHead[old] = cellNext[i];
+        } else {
+            while (cellNext[h] != i) {
+                h = cellNext[h];
+            }
+            cellNext[h] = cellNext[i];
+        }
+        int cell = row * cols + col;
+        cellOf[i] = row << 16 | col;
+        cellNext[i] = cellHead[cell];
+        cellHead[cell] = i;
+        queue.insert(i, fullOnCross ? predictFull(i, now) : predictAfterCrossing(i, now, k, col, row));
+    }
+
+    /**
+     * Time until disc i (clock {@code now}) leaves its cell; sets {@link #crossKind}. Outer sides of a
+     * walled box are at infinity: the walls turn the disc back first.
+     */
+    private double crossing(int i, double now) {
+        int packed = cellOf[i];
+        int col = packed & 0xFFFF;
+        int row = packed >>> 16;
+        double loX = col > 0 ? col * cellW : (periodic ? 0 : -INF);
+        double hiX = col < cols - 1 ? (col + 1) * cellW : (periodic ? width : INF);
+        double loY = row > 0 ? row * cellH : (periodic ? 0 : -INF);
+        double hiY = row < rows - 1 ? (row + 1) * cellH : (periodic ? height : INF);
+        double tx = flight.timeToLeaveX(d, i, now, loX, hiX);
+        double ty = flight.timeToLeaveY(d, i, now, loY, hiY);
+        if (recheckX > 0 || recheckY > 0) {
+            double tr = INF;
+            if (recheckX > 0) {
+                double x = flight.x(d, i, now);
+                tr = flight.timeToLeaveX(d, i, now, x - recheckX, x + recheckX);
+            }
+            if (recheckY > 0) {
+                double y = flight.y(d, i, now);
+                tr = Math.min(tr, flight.timeToLeaveY(d, i, now, y - recheckY, y + recheckY));
+            }
+            if (tr < tx && tr < ty) {
+                crossKind = RECHECK;
+                return tr;
+            }
+        }
+        if (tx <= ty) {
+            if (tx == INF) {
+                return INF;
+            }
+            double v = flight.vx(d, i, now + tx);
+            boolean right = v > 0 || (v == 0 && flight.x(d, i, now + tx) > 0.5 * (loX + hiX));
+            crossKind = right ? CROSS_RIGHT : CROSS_LEFT;
+            return tx;
+        }
+        double v = flight.vy(d, i, now + ty);
+        boolean up = v > 0 || (v == 0 && flight.y(d, i, now + ty) > 0.5 * (loY + hiY));
+        crossKind = up ? CROSS_UP : CROSS_DOWN;
+        return ty;
+    }
+
+    /**
+     * Predicts mobile disc i, whose clock is {@code now}, against its walls, its cell side and every
+     * disc in its 3x3 neighbourhood; records kind and best candidate; returns the event's local time.
+     */
+    private double predictFull(int i, double now) {
+        double best = INF;
+        int bestP = NONE;
+        if (walls != null) {
+            for (int w = 0; w < 4; w++) {
+                double t = flight.timeToWall(d, i, w, now, walls);
+                if (t < best) {
+                    best = t;
+                    bestP = -1 - w;
+                }
+            }
+        }
+        double cross = crossing(i, now);
+        byte ck = crossKind;
+        double horizon = now + cross;
+        int packed = cellOf[i];
+        int col = packed & 0xFFFF;
+        int row = packed >>> 16;
+        for (int dr = -1; dr <= 1; dr++) {
+            int r = row + dr;
+            if (r < 0 || r >= rows) {
+                if (!periodic) {
+                    continue;
+                }
+                r = r < 0 ? r + rows : r - rows;
+            }
+            int base = r * cols;
+            for (int dc = -1; dc <= 1; dc++) {
+                int c = col + dc;
+                if (c < 0 || c >= cols) {
+                    if (!periodic) {
+                        continue;
+                    }
+                    c = c < 0 ? c + cols : c - cols;
+                }
+                for (int j = cellHead[base + c]; j != NIL; j = cellNext[j]) {
+                    if (j != i) {
+                        double t = flight.timeToContact(d, i, j, now, horizon, boundary);
+                        if (t < best) {
+                            best = t;
+                            bestP = j;
+                        }
+                    }
+                }
+            }
+        }
+        predictions++;
+        return schedule(i, now, best, bestP, cross, ck);
+    }
+
+    /**
+     * After disc i crossed into cell (col, row) through side {@code k} at {@code now} (its clock): its
+     * trajectory is unchanged, so its remembered best candidate is still the earliest of the cells it
+     * saw; add the three cells that just entered its neighbourhood.
+     */
+    private double predictAfterCrossing(int i, double now, byte k, int col, int row) {
+        int bestP = partner[i];
+        double cross = crossing(i, now);
+        byte ck = crossKind;
+        double horizon = now + cross;
+        double best = INF;
+        if (bestP >= 0) {
+            if (count[bestP] != partnerCount[i]) {
+                return predictFull(i, now);
+            }
+            best = flight.timeToContact(d, i, bestP, now, horizon, boundary);
+        } else if (bestP != NONE) {
+            best = flight.timeToWall(d, i, -1 - bestP, now, walls);
+        }
+        if (best == INF) {
+            bestP = NONE;
+        }
+        boolean alongX = k == CROSS_LEFT || k == CROSS_RIGHT;
+        int fixedLine;
+        if (alongX) {
+            int c = k == CROSS_RIGHT ? col + 1 : col - 1;
+            if (c < 0 || c >= cols) {
+                if (!periodic) {
+                    return schedule(i, now, best, bestP, cross, ck);
+                }
+                c = c < 0 ? c + cols : c - cols;
+            }
+            fixedLine = c;
+        } else {
+            int r = k == CROSS_UP ? row + 1 : row - 1;
+            if (r < 0 || r >= rows) {
+                if (!periodic) {
+                    return schedule(i, now, best, bestP, cross, ck);
+                }
+                r = r < 0 ? r + rows : r - rows;
+            }
+            fixedLine = r;
+        }
+        for (int s = -1; s <= 1; s++) {
+            int cell;
+            if (alongX) {
+                int r = row + s;
+                if (r < 0 || r >= rows) {
+                    if (!periodic) {
+                        continue;
+                    }
+                    r = r < 0 ? r + rows : r - rows;
+                }
+                cell = r * cols + fixedLine;
+            } else {
+                int c = col + s;
+                if (c < 0 || c >= cols) {
+                    if (!periodic) {
+                        continue;
+                    }
+                    c = c < 0 ? c + cols : c - cols;
+                }
+                cell = fixedLine * cols + c;
+            }
+            for (int j = cellHead[cell]; j != NIL; j = cellNext[j]) {
+                if (j != i) {
+                    double t = flight.timeToContact(d, i, j, now, horizon, boundary);
+                    if (t < best) {
+                        best = t;
+                        bestP = j;
+                    }
+                }
+            }
+        }
+        predictions++;
+        return schedule(i, now, best, bestP, cross, ck);
+    }
+
+    private double schedule(int i, double now, double best, int bestP, double cross, byte ck) {
+        partner[i] = bestP;
+        partnerCount[i] = bestP >= 0 ? count[bestP] : 0;
+        if (cross < best) {
+            kind[i] = ck;
+            return now + cross;
+        }
+        kind[i] = HIT;
+        return best == INF ? INF : now + best;
+    }
+
+    /**
+     * Re-anchors time at local {@code now}: every disc advanced to it, clocks and event times shifted
+     * so that {@code now} becomes 0, the queue rebuilt with a slice width from the current delays.
+     */
+    private void resync(double now) {
+        if (now > 0) {
+            resyncs++;
+            double[] t = queue.time;
+            for (int i = 0; i < n; i++) {
+                flight.advance(d, i, now);
+                d.t[i] = 0;
+                if (t[i] != INF) {
+                    t[i] = Math.max(0, t[i] - now);
+                }
+            }
+            epoch += now;
+            untilLocal = until - epoch;
+        }
+        replan(0);
+    }
+
+    /** Sizes the calendar from the mean event delay (trimmed of far outliers) and rebuilds it. */
+    private void replan(double now) {
+        double[] t = queue.time;
+        double sum = 0;
+        long k = 0;
+        for (int i = 0; i < n; i++) {
+            if (t[i] != INF) {
+                sum += t[i] - now;
+                k++;
+            }
+        }
+        double mean = k > 0 ? sum / k : 1;
+        if (k > 0) {
+            double cut = 10 * mean;
+            sum = 0;
+            k = 0;
+            for (int i = 0; i < n; i++) {
+                if (t[i] - now <= cut) {
+                    sum += t[i] - now;
+                    k++;
+                }
+            }
+            mean = k > 0 ? sum / k : mean;
+        }
+        if (!(mean > 0) || Double.isInfinite(mean)) {
+            mean = untilLocal > 0 && Double.isFinite(untilLocal) ? untilLocal : 1;
+        }
+        double span = SPAN_MEANS * mean;
+        queue.rebuild(span / queue.buckets(), now);
+        resyncAt = now + RESYNC_SPANS * span;
+    }
+
+    /** Every disc at {@code until}, in original id order, periodic positions wrapped into the box. */
+    private Discs finalState() {
+        Discs out = scene.newDiscs();
+        for (int k = 0; k < n; k++) {
+            flight.advance(d, k, untilLocal);
+            int o = d.species[k];
+            out.x[o] = boundary.wrapX(d.x[k]);
+            out.y[o] = boundary.wrapY(d.y[k]);
+            out.vx[o] = d.vx[k];
+            out.vy[o] = d.vy[k];
+            out.t[o] = until;
+        }
+        return out;
+    }
+}
