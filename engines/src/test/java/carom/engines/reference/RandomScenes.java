@@ -177,4 +177,20 @@ public final class RandomScenes {
         }
         return b.until(0.8 + 0.4 * random.nextDouble()).build();
     }
+
+    /**
+     * The dense scenes every exact engine is checked on (N, packing fraction, periodic, seed, until):
+     * 225-2025 discs at 0.3-0.7, walls and periodic, about 50 collisions per disc.
+     */
+    public static java.util.stream.Stream<org.junit.jupiter.params.provider.Arguments> denseCases() {
+        return java.util.stream.Stream.of(
+                org.junit.jupiter.params.provider.Arguments.of(225, 0.7, false, 1L, 2.2),
+                org.junit.jupiter.params.provider.Arguments.of(400, 0.3, true, 2L, 23.0),
+                org.junit.jupiter.params.provider.Arguments.of(400, 0.6, false, 3L, 4.5),
+                org.junit.jupiter.params.provider.Arguments.of(900, 0.5, true, 4L, 7.5),
+                org.junit.jupiter.params.provider.Arguments.of(1024, 0.45, false, 5L, 10.0),
+                org.junit.jupiter.params.provider.Arguments.of(1600, 0.65, true, 6L, 3.2),
+                org.junit.jupiter.params.provider.Arguments.of(2025, 0.7, true, 7L, 2.1),
+                org.junit.jupiter.params.provider.Arguments.of(2025, 0.3, false, 8L, 23.0));
+    }
 }

@@ -8,7 +8,7 @@ import carom.core.scene.Scene;
 import carom.engines.reference.Invariants;
 import carom.engines.reference.RandomScenes;
 import org.junit.jupiter.params.ParameterizedTest;
-import org.junit.jupiter.params.provider.CsvSource;
+import org.junit.jupiter.params.provider.MethodSource;
 
 /**
  * Dense seeded scenes (200-2000 discs, packing fraction 0.3-0.7, walls and periodic, ~50 collisions per
@@ -16,16 +16,7 @@ import org.junit.jupiter.params.provider.CsvSource;
  */
 class SerialDenseScenesTest {
     @ParameterizedTest(name = "N {0}, phi {1}, periodic {2}, seed {3}")
-    @CsvSource({
-            "225, 0.7, false, 1, 2.2",
-            "400, 0.3, true, 2, 23",
-            "400, 0.6, false, 3, 4.5",
-            "900, 0.5, true, 4, 7.5",
-            "1024, 0.45, false, 5, 10",
-            "1600, 0.65, true, 6, 3.2",
-            "2025, 0.7, true, 7, 2.1",
-            "2025, 0.3, false, 8, 23",
-    })
+    @MethodSource("carom.engines.reference.RandomScenes#denseCases")
     void conservesEnergyAndMomentumAndNeverOverlaps(int n, double phi, boolean periodic, long seed, double until) {
         Scene scene = RandomScenes.dense(n, phi, periodic, seed, until);
         RunResult r = Invariants.check(scene, new SerialEngine().run(scene, RunOptions.until(until)));
