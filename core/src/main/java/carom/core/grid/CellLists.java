@@ -9,6 +9,8 @@ public final class CellLists {
     public int[] items = new int[0];
     /** The cell each disc was binned into by the last {@link #rebuild}. */
     public int[] cellOf = new int[0];
+    /** Per-cell fill cursor, kept between rebuilds. */
+    private int[] fill = new int[0];
 
     public void rebuild(CellGrid grid, double[] x, double[] y, int n) {
         int cells = grid.cellCount();
@@ -30,7 +32,9 @@ public final class CellLists {
             start[c + 1] += start[c];
         }
         // Fill back to front so each cell's ids stay in ascending order (deterministic iteration).
-        int[] fill = new int[cells];
+        if (fill.length != cells) {
+            fill = new int[cells];
+        }
         for (int c = 0; c < cells; c++) {
             fill[c] = start[c + 1];
         }

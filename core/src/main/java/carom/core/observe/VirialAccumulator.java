@@ -57,4 +57,14 @@ public final class VirialAccumulator {
         double toPressure = mobileDiscs * kT / area;
         return new Pressure(mean, error, mean * toPressure, error * toPressure, k);
     }
+
+    /**
+     * A run's pressure from its virial (null if it collected none, as in a walled box): over the final
+     * state's mobile discs, at the mean of the start and end kinetic energies.
+     */
+    public static Pressure pressureOf(VirialAccumulator virial, carom.core.state.Discs finalState,
+                                      double energyStart, double energyEnd, double area) {
+        return virial == null ? null
+                : virial.pressure(Observables.mobileCount(finalState), 0.5 * (energyStart + energyEnd), area);
+    }
 }

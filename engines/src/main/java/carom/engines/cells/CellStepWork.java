@@ -411,8 +411,7 @@ public final class CellStepWork {
             }
         }
         double energyEnd = Observables.kineticEnergy(d);
-        Pressure pressure = virial == null ? null
-                : virial.pressure(Observables.mobileCount(d), 0.5 * (energyStart + energyEnd), scene.box().area());
+        Pressure pressure = VirialAccumulator.pressureOf(virial, d, energyStart, energyEnd, scene.box().area());
         Map<String, Long> counters = new HashMap<>(extraCounters);
         counters.put("staleEvents", stale);
         counters.put("overruns", overruns);

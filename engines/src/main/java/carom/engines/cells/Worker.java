@@ -35,16 +35,4 @@ public final class Worker {
         deferred[deferredCount++] = stamp;
         deferred[deferredCount++] = bandRow;
     }
-
-    public long pairCollisions() {
-        return pairCollisions;
-    }
-
-    public long wallCollisions() {
-        return wallCollisions;
-    }
-
-    public long violations() {
-        return violations;
-    }
 }

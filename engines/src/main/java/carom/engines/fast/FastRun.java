@@ -299,8 +299,7 @@ final class FastRun {
         double seconds = (System.nanoTime() - started) * 1e-9;
         Discs out = finalState();
         double energyEnd = Observables.kineticEnergy(out);
-        Pressure pressure = virial == null ? null
-                : virial.pressure(Observables.mobileCount(out), 0.5 * (energyStart + energyEnd), scene.box().area());
+        Pressure pressure = VirialAccumulator.pressureOf(virial, out, energyStart, energyEnd, scene.box().area());
         Map<String, Long> counters = new HashMap<>();
         counters.put("events", events);
         counters.put("cellCrossings", crossings);

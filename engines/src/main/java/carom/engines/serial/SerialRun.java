@@ -117,8 +117,7 @@ final class SerialRun {
         }
         double seconds = (System.nanoTime() - started) * 1e-9;
         double energyEnd = Observables.kineticEnergy(d);
-        Pressure pressure = virial == null ? null
-                : virial.pressure(Observables.mobileCount(d), 0.5 * (energyStart + energyEnd), scene.box().area());
+        Pressure pressure = VirialAccumulator.pressureOf(virial, d, energyStart, energyEnd, scene.box().area());
         return new RunResult("serial", true, d, until, pairCollisions, wallCollisions, pairCollisions + wallCollisions,
                 energyStart, energyEnd, momentumStart, Observables.momentum(d), pressure, 0, seconds,
                 Map.of("steps", steps, "predictions", predictions, "earlyStepEnds", earlyStepEnds));
