@@ -174,6 +174,18 @@ class SimulateCommandTest {
         assertThat(bad.firstErrorLine()).startsWith("error: " + scene + ": ").contains("cellFactor");
     }
 
+    @Test
+    void badStripesStepFactorIsBadInputAndWritesNothing() throws IOException {
+        Path scene = Scenes.write(dir, "head-on.json", Scenes.headOn());
+        Path out = dir.resolve("final.csv");
+        Cli bad = Cli.run("simulate", scene.toString(), "--engine", "stripes", "--option", "stepFactor=-1",
+                "--out", out.toString());
+        assertThat(bad.status()).isEqualTo(2);
+        assertThat(bad.firstErrorLine()).startsWith("error: " + scene + ": engine option stepFactor");
+        assertThat(bad.err()).doesNotContain("Exception");
+        assertThat(out).doesNotExist();
+    }
+
     private static double[] parseRow(String line) {
         String[] f = line.split(",", -1);
         assertThat(f).hasSize(5);
