@@ -2,14 +2,17 @@ package carom.engines;
 
 import carom.core.BadInputException;
 import carom.core.engine.Engine;
+import carom.engines.akka.AkkaEngine;
 import carom.engines.fast.FastEngine;
 import carom.engines.serial.SerialEngine;
 import carom.engines.stripes.StripesEngine;
+import carom.engines.vthreads.VThreadsEngine;
 import java.util.List;
 
 /** Every engine carom ships, in the order {@code carom engines} lists them. */
 public final class EngineCatalog {
-    private static final List<Engine> ENGINES = List.of(new SerialEngine(), new FastEngine(), new StripesEngine());
+    private static final List<Engine> ENGINES = List.of(new SerialEngine(), new FastEngine(), new StripesEngine(),
+            new AkkaEngine(), new VThreadsEngine());
 
     private EngineCatalog() {
     }

@@ -22,6 +22,12 @@ public abstract sealed class Restitution permits Restitution.Elastic, Restitutio
     /** Records that disc i collided at {@code time}. */
     public abstract void collided(int i, double time);
 
+    /**
+     * When disc i last collided ({@code -Infinity} if never, or if this model keeps no history): lets
+     * an engine that moves discs between owners carry the history along with {@link #collided}.
+     */
+    public abstract double lastCollision(int i);
+
     /** A fresh instance with its own per-disc state for a run over {@code discs} discs. */
     public abstract Restitution forRun(int discs);
 
@@ -51,6 +57,11 @@ public abstract sealed class Restitution permits Restitution.Elastic, Restitutio
         }
 
         @Override
+        public double lastCollision(int i) {
+            return Double.NEGATIVE_INFINITY;
+        }
+
+        @Override
         public Restitution forRun(int discs) {
             return this;
         }
@@ -77,6 +88,11 @@ public abstract sealed class Restitution permits Restitution.Elastic, Restitutio
 
         @Override
         public void collided(int i, double time) {
+        }
+
+        @Override
+        public double lastCollision(int i) {
+            return Double.NEGATIVE_INFINITY;
         }
 
         @Override
@@ -113,6 +129,11 @@ public abstract sealed class Restitution permits Restitution.Elastic, Restitutio
         @Override
         public void collided(int i, double time) {
             lastCollision[i] = time;
+        }
+
+        @Override
+        public double lastCollision(int i) {
+            return lastCollision[i];
         }
 
         @Override

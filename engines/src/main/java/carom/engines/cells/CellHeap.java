@@ -3,46 +3,46 @@ package carom.engines.cells;
 import java.util.Arrays;
 
 /**
- * One cell's potential events: a binary min-heap on time, in primitive arrays. An event stores the
+ * One cell's (or one block actor's) potential events: a binary min-heap on time, in primitive arrays. An event stores the
  * two discs (b = -1 - wall for a wall) and the collision stamps they had when it was predicted;
  * {@link CellStepWork} drops it when a stamp has moved on. Owned by one worker at a time (the
  * schedulers guarantee that), so not thread-safe.
  */
-final class CellHeap {
+public final class CellHeap {
     private double[] time = new double[4];
     private long[] discs = new long[4];
     private long[] stamps = new long[4];
     private int size;
 
-    int size() {
+    public int size() {
         return size;
     }
 
-    void clear() {
+    public void clear() {
         size = 0;
     }
 
-    double minTime() {
+    public double minTime() {
         return size == 0 ? Double.POSITIVE_INFINITY : time[0];
     }
 
-    int minA() {
+    public int minA() {
         return (int) (discs[0] >> 32);
     }
 
-    int minB() {
+    public int minB() {
         return (int) discs[0];
     }
 
-    int minStampA() {
+    public int minStampA() {
         return (int) (stamps[0] >> 32);
     }
 
-    int minStampB() {
+    public int minStampB() {
         return (int) stamps[0];
     }
 
-    void add(double t, int a, int b, int stampA, int stampB) {
+    public void add(double t, int a, int b, int stampA, int stampB) {
         if (size == time.length) {
             time = Arrays.copyOf(time, 2 * size);
             discs = Arrays.copyOf(discs, 2 * size);
@@ -66,7 +66,7 @@ final class CellHeap {
         stamps[k] = st;
     }
 
-    void removeMin() {
+    public void removeMin() {
         int last = --size;
         if (last == 0) {
             return;

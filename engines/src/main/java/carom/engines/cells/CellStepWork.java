@@ -3,25 +3,19 @@ package carom.engines.cells;
 import carom.core.engine.RunResult;
 import carom.core.grid.CellGrid;
 import carom.core.grid.CellLists;
-import carom.core.grid.StepGrid;
-import carom.core.observe.Observables;
-import carom.core.observe.Pressure;
-import carom.core.observe.VirialAccumulator;
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
 import carom.core.physics.PairLaw;
-import carom.core.physics.Physics;
 import carom.core.physics.Restitution;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
-import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 
 /**
  * The cell-local work of the thesis's grid algorithm, shared by the relaxed parallel engines so that
- * they differ only in how they schedule it. Same step structure and grid guarantee as the exact
- * {@code serial} engine ({@link StepGrid}); the difference is that every cell keeps its own queue of
+ * they differ only in how they schedule it, on the shared {@link StepFrame} (the same step structure
+ * and grid guarantee as the exact {@code serial} engine); the difference is that every cell keeps its own queue of
  * the potentials it owns and is processed on its own, so collisions are no longer processed in one
  * global time order.
  *
@@ -49,83 +43,50 @@ import java.util.Map;
  *       whose discs each collided once since, after the event's time; some of those would have
  *       happened in true order, some were void anyway, and telling them apart needs history that is
  *       not kept.</li>
- *   <li>The step length leaves a speed margin of {@link #SPEED_MARGIN}; a disc that still outruns the
+ *   <li>The step length leaves a speed margin of {@link StepFrame#SPEED_MARGIN}; a disc that still outruns the
  *       grid within a step is counted as an overrun (the step cannot be shortened for workers that
  *       already ran past the new end).</li>
  * </ul>
  */
 public final class CellStepWork {
-    static final int PRESSURE_BLOCKS = 20;
-    /** Step length assumes discs reach at most this multiple of the step's initial top speed. */
-    public static final double SPEED_MARGIN = 2;
-
-    private final Scene scene;
+    private final StepFrame frame;
     private final Discs d;
-    private final int n;
-    private final double until;
     private final Flight flight;
     private final Boundary boundary;
     private final Boundary.Walls walls;
     private final Restitution restitution;
-    private final double acceleration;
-    /** Under gravity every contact with something immovable is checked for rest (StallGuard). */
     private final boolean gravity;
-    private final StepGrid stepGrid;
-    private final double stepFactor;
     public final CellGrid grid;
-    private final CellLists cells = new CellLists();
+    private final CellLists cells;
     private final CellHeap[] heaps;
     private final int[] stamp;
-    private final double[] startX;
-    private final double[] startY;
-    private final double energyStart;
-    private final double[] momentumStart;
     private double epoch;
     private double stepEnd;
 
-    /**
-     * @param stepFactor step length over the one the grid guarantee allows (1 keeps it; larger steps,
-     *                   as in the thesis where a disc may cross a whole cell per step, can be outrun,
-     *                   which is counted as overruns)
-     */
+    /** See {@link StepFrame} for the two factors. */
     public CellStepWork(Scene scene, double until, double cellFactor, double stepFactor) {
-        if (!(cellFactor > 1)) {
-            throw new carom.core.BadInputException("engine option cellFactor: must be > 1, got " + cellFactor);
-        }
-        if (!(stepFactor > 0) || Double.isInfinite(stepFactor)) {
-            throw new carom.core.BadInputException("engine option stepFactor: must be a finite number > 0, got " + stepFactor);
-        }
-        this.stepFactor = stepFactor;
-        this.scene = scene;
-        this.d = scene.newDiscs();
-        this.n = d.n;
-        this.until = until;
-        Physics physics = Physics.of(scene);
-        this.flight = physics.flight;
-        this.boundary = physics.boundary;
-        this.walls = boundary instanceof Boundary.Walls w ? w : null;
-        this.restitution = physics.restitution;
-        this.acceleration = flight.maxAcceleration();
-        this.gravity = acceleration > 0;
-        this.stepGrid = StepGrid.plan(scene.box(), 2 * d.maxRadius(), cellFactor, n);
-        this.grid = stepGrid.grid;
+        this.frame = new StepFrame(scene, until, cellFactor, stepFactor);
+        this.d = frame.d;
+        this.flight = frame.flight;
+        this.boundary = frame.boundary;
+        this.walls = frame.walls;
+        this.restitution = frame.restitution;
+        this.gravity = frame.gravity;
+        this.grid = frame.grid;
+        this.cells = frame.cells;
         this.heaps = new CellHeap[grid.cellCount()];
         for (int c = 0; c < heaps.length; c++) {
             heaps[c] = new CellHeap();
         }
-        this.stamp = new int[n];
-        this.startX = new double[n];
-        this.startY = new double[n];
-        this.energyStart = Observables.kineticEnergy(d);
-        this.momentumStart = Observables.momentum(d);
+        this.stamp = new int[frame.n];
     }
 
     public Worker newWorker() {
-        return new Worker(scene, until, boundary.periodic());
+        return frame.newWorker();
     }
 
     public double until() {
-        return until;
+        return frame.until;
     }
 
     /** Row distance, wrapping in a periodic box. */
@@ -139,12 +100,8 @@ public final class CellStepWork {
      * clocks 0): bins the discs and chooses the step length. Returns the step length.
      */
     public double beginStep(double stepStart, double remaining) {
-        epoch = stepStart;
-        double guaranteed = stepGrid.stepLength(SPEED_MARGIN * d.maxSpeed(), acceleration, Double.POSITIVE_INFINITY);
-        stepEnd = Math.min(stepFactor * guaranteed, remaining);
-        cells.rebuild(grid, d.x, d.y, n);
-        System.arraycopy(d.x, 0, startX, 0, n);
-        System.arraycopy(d.y, 0, startY, 0, n);
+        stepEnd = frame.beginStep(stepStart, remaining);
+        epoch = frame.epoch();
         for (CellHeap h : heaps) {
             h.clear();
         }
@@ -299,10 +256,8 @@ public final class CellStepWork {
     private void afterVelocityChange(int k, double now, int band, Worker w) {
         stamp[k]++;
         restitution.collided(k, epoch + now);
-        double ex = d.x[k] - startX[k];
-        double ey = d.y[k] - startY[k];
         double speed = Math.sqrt(d.vx[k] * d.vx[k] + d.vy[k] * d.vy[k]);
-        if (stepGrid.latestStepEnd(now, Math.sqrt(ex * ex + ey * ey), speed, acceleration, stepEnd) < stepEnd) {
+        if (frame.overruns(k, d.x[k], d.y[k], speed, now)) {
             w.overruns++;
         }
         predictWalls(k, now, w);
@@ -375,49 +330,12 @@ public final class CellStepWork {
         }
     }
 
-    /** Ends the step: every disc advanced to the step end, wrapped, its clock restarted. */
     public void endStep() {
-        for (int i = 0; i < n; i++) {
-            flight.advance(d, i, stepEnd);
-            d.x[i] = boundary.wrapX(d.x[i]);
-            d.y[i] = boundary.wrapY(d.y[i]);
-            d.t[i] = 0;
-        }
+        frame.endStep();
     }
 
     /** The run's result once every step is done; workers are summed in the order given. */
     public RunResult result(String engine, List<Worker> workers, double seconds, Map<String, Long> extraCounters) {
-        for (int i = 0; i < n; i++) {
-            d.t[i] = until;
-        }
-        long pairs = 0;
-        long wallHits = 0;
-        long stale = 0;
-        long violations = 0;
-        long overruns = 0;
-        long preempted = 0;
-        long predictions = 0;
-        VirialAccumulator virial = boundary.periodic() ? new VirialAccumulator(0, until, PRESSURE_BLOCKS) : null;
-        for (Worker w : workers) {
-            pairs += w.pairCollisions;
-            wallHits += w.wallCollisions;
-            stale += w.staleEvents;
-            violations += w.violations;
-            overruns += w.overruns;
-            preempted += w.preempted;
-            predictions += w.predictions;
-            if (virial != null) {
-                virial.addAll(w.virial);
-            }
-        }
-        double energyEnd = Observables.kineticEnergy(d);
-        Pressure pressure = VirialAccumulator.pressureOf(virial, d, energyStart, energyEnd, scene.box().area());
-        Map<String, Long> counters = new HashMap<>(extraCounters);
-        counters.put("staleEvents", stale);
-        counters.put("overruns", overruns);
-        counters.put("preempted", preempted);
-        counters.put("predictions", predictions);
-        return new RunResult(engine, false, d, until, pairs, wallHits, pairs + wallHits, energyStart, energyEnd,
-                momentumStart, Observables.momentum(d), pressure, violations, seconds, counters);
+        return frame.result(engine, workers, seconds, extraCounters);
     }
 }

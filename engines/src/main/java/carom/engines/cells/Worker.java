@@ -6,24 +6,26 @@ import carom.core.scene.Scene;
 
 /**
  * What one unit of scheduled work (a stripe row, an actor) counts and defers. Single writer: a
- * worker is used by one thread at a time, and the schedulers sum workers after joining them.
+ * worker is used by one thread at a time, and the schedulers sum workers after joining them
+ * ({@link StepFrame#result}). A plain counter bag, so its fields are open to every scheduler.
  */
 public final class Worker {
-    long pairCollisions;
-    long wallCollisions;
-    long staleEvents;
-    long violations;
-    long preempted;
-    long overruns;
-    long predictions;
-    final VirialAccumulator virial;
-    final StallGuard stallGuard;
+    public long pairCollisions;
+    public long wallCollisions;
+    public long staleEvents;
+    public long violations;
+    public long preempted;
+    public long overruns;
+    public long predictions;
+    /** Collision virial for the pressure (periodic boxes), else null. */
+    public final VirialAccumulator virial;
+    public final StallGuard stallGuard;
     /** Predictions deferred because they reach beyond the worker's band: disc, its stamp, band row. */
     int[] deferred = new int[48];
     int deferredCount;
 
     Worker(Scene scene, double until, boolean periodic) {
-        this.virial = periodic ? new VirialAccumulator(0, until, CellStepWork.PRESSURE_BLOCKS) : null;
+        this.virial = periodic ? new VirialAccumulator(0, until, StepFrame.PRESSURE_BLOCKS) : null;
         this.stallGuard = new StallGuard(scene);
     }
 

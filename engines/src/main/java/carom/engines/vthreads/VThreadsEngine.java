@@ -1,0 +1,55 @@
+package carom.engines.vthreads;
+
+import carom.core.engine.Engine;
+import carom.core.engine.RunOptions;
+import carom.core.engine.RunResult;
+import carom.core.scene.Scene;
+import carom.engines.actors.ActorRun;
+import carom.engines.actors.BlockActor;
+import java.util.Set;
+
+/**
+ * The thesis's actor protocol without Akka ({@link carom.engines.actors}): each actor a virtual thread
+ * draining its own mailbox, {@code --threads} carrier threads
+ * ({@code jdk.virtualThreadScheduler.parallelism}, fixed when the JVM starts its first virtual
+ * thread). Relaxed: every run counts its causality violations and the messages it sent, by type.
+ *
+ * <p>Tunables: {@code cellsPerActor} (default 1), {@code cellFactor}, {@code stepFactor},
+ * {@code stallSeconds}, as for the akka engine.
+ */
+public final class VThreadsEngine implements Engine {
+    @Override
+    public String name() {
+        return "vthreads";
+    }
+
+    @Override
+    public boolean exact() {
+        return false;
+    }
+
+    @Override
+    public String description() {
+        return "the thesis's actor protocol with one virtual thread per actor (cellsPerActor per actor); "
+                + "relaxed, counts causality violations and messages";
+    }
+
+    @Override
+    public void checkSupports(Scene scene) {
+    }
+
+    @Override
+    public Set<String> tunables() {
+        return ActorRun.TUNABLES;
+    }
+
+    @Override
+    public RunResult run(Scene scene, RunOptions options) {
+        return run(scene, options, BlockActor.FaultInjection.NONE);
+    }
+
+    RunResult run(Scene scene, RunOptions options, BlockActor.FaultInjection faults) {
+        checkSupports(scene);
+        return new VThreadsRun(scene, options, faults).run();
+    }
+}
