@@ -1,6 +1,7 @@
 package carom.engines.reference;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
 
 import carom.core.engine.RunResult;
 import carom.core.observe.Observables;
@@ -31,6 +32,17 @@ public final class Invariants {
     public static final double OVERLAP_TOLERANCE = 1e-9;
 
     private Invariants() {
+    }
+
+    /** Every disc's position and velocity agree within {@code tolerance}. */
+    public static void assertSameState(Discs actual, Discs expected, double tolerance) {
+        assertThat(actual.n).isEqualTo(expected.n);
+        for (int i = 0; i < expected.n; i++) {
+            assertThat(actual.x[i]).as("x of %d", i).isCloseTo(expected.x[i], within(tolerance));
+            assertThat(actual.y[i]).as("y of %d", i).isCloseTo(expected.y[i], within(tolerance));
+            assertThat(actual.vx[i]).as("vx of %d", i).isCloseTo(expected.vx[i], within(tolerance));
+            assertThat(actual.vy[i]).as("vy of %d", i).isCloseTo(expected.vy[i], within(tolerance));
+        }
     }
 
     /** Checks every invariant of an elastic run; returns the result for chaining. */

@@ -55,7 +55,7 @@ class SerialAgainstReferenceTest {
         BruteForceReference.Result reference = BruteForceReference.run(scene, scene.until());
         assertThat(serial.pairCollisions()).as("pair collisions").isEqualTo(reference.pairCollisions());
         assertThat(serial.wallCollisions()).as("wall collisions").isEqualTo(reference.wallCollisions());
-        assertSameState(serial.finalState(), reference.state());
+        Invariants.assertSameState(serial.finalState(), reference.state(), SAME);
     }
 
     @Test
@@ -83,7 +83,7 @@ class SerialAgainstReferenceTest {
         Scene scene = RandomScenes.small(seed).withUntil(1.0); // short: see SAME_AFTER_CHAOS
         Discs base = run(scene, "1.5").finalState();
         for (String factor : new String[] {"1.1", "3"}) {
-            assertSameState(run(scene, factor).finalState(), base);
+            Invariants.assertSameState(run(scene, factor).finalState(), base, SAME);
         }
     }
 
@@ -96,7 +96,7 @@ class SerialAgainstReferenceTest {
             for (String factor : new String[] {"1.1", "3"}) {
                 RunResult other = run(scene, factor);
                 assertThat(other.pairCollisions()).isEqualTo(base.pairCollisions());
-                assertSameState(other.finalState(), base.finalState());
+                Invariants.assertSameState(other.finalState(), base.finalState(), SAME);
             }
         }
     }
@@ -104,14 +104,5 @@ class SerialAgainstReferenceTest {
     private static RunResult run(Scene scene, String cellFactor) {
         return Invariants.check(scene, new SerialEngine().run(scene,
                 RunOptions.until(scene.until()).withTunable("cellFactor", cellFactor)));
-    }
-
-    private static void assertSameState(Discs actual, Discs expected) {
-        for (int i = 0; i < expected.n; i++) {
-            assertThat(actual.x[i]).as("x of %d", i).isCloseTo(expected.x[i], org.assertj.core.data.Offset.offset(SAME));
-            assertThat(actual.y[i]).as("y of %d", i).isCloseTo(expected.y[i], org.assertj.core.data.Offset.offset(SAME));
-            assertThat(actual.vx[i]).as("vx of %d", i).isCloseTo(expected.vx[i], org.assertj.core.data.Offset.offset(SAME));
-            assertThat(actual.vy[i]).as("vy of %d", i).isCloseTo(expected.vy[i], org.assertj.core.data.Offset.offset(SAME));
-        }
     }
 }

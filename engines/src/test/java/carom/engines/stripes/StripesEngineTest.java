@@ -14,6 +14,8 @@ import carom.core.scene.SceneBuilder;
 import carom.core.scene.Species;
 import carom.core.scene.StandardScenes;
 import carom.core.state.Discs;
+import carom.engines.reference.ChainScenes;
+import carom.engines.reference.Invariants;
 import carom.engines.serial.SerialEngine;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
@@ -32,15 +34,6 @@ class StripesEngineTest {
         return new SerialEngine().run(scene, RunOptions.until(scene.until()));
     }
 
-    private static void assertSameState(Discs actual, Discs expected, double tolerance) {
-        for (int i = 0; i < expected.n; i++) {
-            assertThat(actual.x[i]).as("x of %d", i).isCloseTo(expected.x[i], within(tolerance));
-            assertThat(actual.y[i]).as("y of %d", i).isCloseTo(expected.y[i], within(tolerance));
-            assertThat(actual.vx[i]).as("vx of %d", i).isCloseTo(expected.vx[i], within(tolerance));
-            assertThat(actual.vy[i]).as("vy of %d", i).isCloseTo(expected.vy[i], within(tolerance));
-        }
-    }
-
     /** A dilute gas over a short time has no chains across cells: relaxed order cannot matter. */
     @ParameterizedTest(name = "seed {0}")
     @ValueSource(longs = {1, 2, 3, 4, 5, 6})
@@ -53,55 +46,13 @@ class StripesEngineTest {
         assertThat(actual.causalityViolations()).isZero();
         assertThat(actual.pairCollisions()).isEqualTo(expected.pairCollisions());
         assertThat(actual.wallCollisions()).isEqualTo(expected.wallCollisions());
-        assertSameState(actual.finalState(), expected.finalState(), 1e-9);
+        Invariants.assertSameState(actual.finalState(), expected.finalState(), 1e-9);
         assertThat(actual.exact()).isFalse();
-    }
-
-    /**
-     * The issue's six-disc chain: diameter 0.5, unit masses, 1x1 cells C, B, A along the chain. Along
-     * +x (cells left to right in one row) it gives the true order: p1-p2 at 0.25, the chain at 0.26,
-     * 0.27, 0.28, then p5-p6 at 0.42 with normal (0.28, -0.96) from p6 to p5.
-     */
-    private static Scene chainAlongX() {
-        double ox = 1;
-        double oy = 1; // grid origin offset: cells C, B, A are columns 1, 2, 3 of row 1
-        return SceneBuilder.create("six-disc chain")
-                .box(6, 4, BoundaryKind.WALLS)
-                .species(Species.mobile("disc", 0.25, 1))
-                .disc(0, ox + 0.20, oy, 1, 0)
-                .disc(0, ox + 0.95, oy, 0, 0)
-                .disc(0, ox + 1.46, oy, 0, 0)
-                .disc(0, ox + 1.97, oy, 0, 0)
-                .disc(0, ox + 2.48, oy, 0, 0)
-                .disc(0, ox + 2.48, oy + 0.9, 0, -1)
-                .until(0.45)
-                .build();
-    }
-
-    /**
-     * The same chain turned to run down the rows, against the order of the row phases: C in row 2
-     * (phase 2), B in row 1 (phase 1), A in row 0 (phase 0). Cell A's neighbours hold no event yet, so
-     * in phase 0 it takes its local minimum, the head-on p5-p6 at 0.40, before the chain reaches it.
-     */
-    private static Scene chainAgainstThePhases() {
-        double top = 3;
-        double ox = 2;
-        return SceneBuilder.create("six-disc chain, turned")
-                .box(6, 4, BoundaryKind.WALLS)
-                .species(Species.mobile("disc", 0.25, 1))
-                .disc(0, ox, top - 0.20, 0, -1)
-                .disc(0, ox, top - 0.95, 0, 0)
-                .disc(0, ox, top - 1.46, 0, 0)
-                .disc(0, ox, top - 1.97, 0, 0)
-                .disc(0, ox, top - 2.48, 0, 0)
-                .disc(0, ox + 0.9, top - 2.48, -1, 0)
-                .until(0.45)
-                .build();
     }
 
     @Test
     void serialProcessesTheSixDiscChainInTrueOrder() {
-        RunResult r = serial(chainAlongX());
+        RunResult r = serial(ChainScenes.alongX());
         // p5 leaves the chain at 0.28 with (1, 0), meets p6 at 0.42: n (p5 to p6) = (-0.28, 0.96), J = 0.68.
         Discs d = r.finalState();
         assertThat(r.pairCollisions()).isEqualTo(5);
@@ -117,7 +68,7 @@ class StripesEngineTest {
      */
     @Test
     void stripesCountsAViolationWhenTheChainRunsAgainstThePhases() {
-        Scene scene = chainAgainstThePhases();
+        Scene scene = ChainScenes.downTheRows();
         RunResult r = STRIPES.run(scene, RunOptions.until(scene.until()).withThreads(2).withTunable("stepFactor", "5"));
         assertThat(r.causalityViolations()).isGreaterThanOrEqualTo(1);
         RunResult inOrder = STRIPES.run(scene, RunOptions.until(scene.until()).withThreads(2));
@@ -126,9 +77,9 @@ class StripesEngineTest {
 
     @Test
     void stripesAlongARowFollowsTheChainLeftToRight() {
-        RunResult r = stripes(chainAlongX(), 2);
+        RunResult r = stripes(ChainScenes.alongX(), 2);
         assertThat(r.causalityViolations()).isZero();
-        assertSameState(r.finalState(), serial(chainAlongX()).finalState(), 1e-12);
+        Invariants.assertSameState(r.finalState(), serial(ChainScenes.alongX()).finalState(), 1e-12);
     }
 
     @ParameterizedTest(name = "{0}")
@@ -141,7 +92,7 @@ class StripesEngineTest {
             assertThat(again.pairCollisions()).as("%d threads", threads).isEqualTo(one.pairCollisions());
             assertThat(again.causalityViolations()).isEqualTo(one.causalityViolations());
             assertThat(again.counters()).isEqualTo(one.counters());
-            assertSameState(again.finalState(), one.finalState(), 0);
+            Invariants.assertSameState(again.finalState(), one.finalState(), 0);
         }
     }
 
