@@ -7,6 +7,7 @@ import carom.core.grid.StepGrid;
 import carom.core.observe.Observables;
 import carom.core.observe.Pressure;
 import carom.core.observe.VirialAccumulator;
+import carom.core.observe.jfr.CausalityViolationEvent;
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
 import carom.core.physics.PairLaw;
@@ -237,6 +238,7 @@ public final class CellStepWork {
         h.removeMin();
         if (d.t[a] > now || (b >= 0 && d.t[b] > now)) {
             w.violations++;
+            CausalityViolationEvent.emit(epoch + now, a, b, Math.max(d.t[a], b >= 0 ? d.t[b] : now) - now);
         }
         w.stallGuard.event(epoch + now, a, b);
         int band = c / grid.cols;
