@@ -10,7 +10,7 @@ import jdk.jfr.StackTrace;
 /**
  * One time step of a stepped engine; the event's duration is the step's wall-clock time.
  *
- * <p>Use: {@code TimeStepEvent e = TimeStepEvent.begin();} at the step start and {@link #finish} at its
+ * <p>Use: {@code TimeStepEvent e = TimeStepEvent.start();} at the step start and {@link #finish} at its
  * end. Without a recording the event is never committed and its fields are never set; the object is
  * one small allocation per step (not per collision), which escape analysis usually removes.
  */
