@@ -12,6 +12,7 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Set;
 import java.util.TreeMap;
 import java.util.TreeSet;
@@ -93,19 +94,19 @@ final class JfrReport {
             }
             case "jdk.CPUInformation" -> hardwareThreads = e.getInt("hwThreads");
             case "carom.TimeStep" -> {
-                Steps s = steps.computeIfAbsent(e.getString("engine"), k -> new Steps());
+                Steps s = steps.computeIfAbsent(engine(e), k -> new Steps());
                 s.collisions().accept(e.getLong("collisions"));
                 s.millis().accept(millis(e.getDuration()));
             }
             case "carom.QueueRebuild" -> {
-                Rebuilds r = rebuilds.computeIfAbsent(e.getString("engine"), k -> new Rebuilds());
+                Rebuilds r = rebuilds.computeIfAbsent(engine(e), k -> new Rebuilds());
                 r.millis().accept(millis(e.getDuration()));
                 r.potentials().accept(e.getLong("potentials"));
                 r.discs().add(e.getInt("discs"));
             }
             case "carom.CausalityViolation" -> violationLateBy.accept(e.getDouble("lateBy"));
             case "carom.ActorMailbox" -> {
-                actors.add(e.getString("engine") + "/" + e.getString("actor"));
+                actors.add(engine(e) + "/" + e.getString("actor"));
                 messagesIn += e.getLong("messagesIn");
                 messagesOut += e.getLong("messagesOut");
                 deepestMailbox = Math.max(deepestMailbox, e.getLong("maxMailboxDepth"));
@@ -131,6 +132,11 @@ final class JfrReport {
                 break;
             }
         }
+    }
+
+    /** The engine that emitted a carom event; an emitter that left it out still gets a row. */
+    private static String engine(RecordedEvent e) {
+        return Objects.requireNonNullElse(e.getString("engine"), "unnamed engine");
     }
 
     private static String name(RecordedMethod m) {
