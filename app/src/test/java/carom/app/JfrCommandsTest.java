@@ -66,7 +66,7 @@ class JfrCommandsTest {
         Cli r = Cli.run("analyze", serial.toString());
         assertThat(r.status()).as(r.err()).isZero();
         // The head-on scene: one pair collision and two wall collisions (Scenes.headOn).
-        assertThat(r.out()).contains("steps (serial): ").contains(" 3 collisions;")
+        assertThat(r.out()).contains("steps (serial): ").contains(", collisions 3;")
                 .contains("queue rebuilds (serial): ").contains(" of 2 discs;");
     }
 

@@ -159,7 +159,7 @@ final class JfrReport {
         if (gcPauseMillis.getCount() == 0) {
             line(out, "  GC: no collections");
         } else {
-            line(out, "  GC: %d collections, pauses total %.1f ms, longest %.1f ms",
+            line(out, "  GC: collections %d, pauses total %.1f ms, longest %.1f ms",
                     gcPauseMillis.getCount(), gcPauseMillis.getSum(), gcLongestMillis);
         }
         line(out, "  allocation: %.1f MB/s (estimated from allocation samples)",
@@ -200,7 +200,7 @@ final class JfrReport {
         for (Map.Entry<String, Steps> e : steps.entrySet()) {
             Steps s = e.getValue();
             collisions += (long) s.collisions().getSum();
-            line(out, "  steps (%s): %d steps, %d collisions; per step: collisions mean %.1f, max %.0f; "
+            line(out, "  steps (%s): %d, collisions %d; per step: collisions mean %.1f, max %.0f; "
                     + "time mean %.3f ms, max %.3f ms, total %.1f ms", e.getKey(), s.collisions().getCount(),
                     (long) s.collisions().getSum(), s.collisions().getAverage(), s.collisions().getMax(),
                     s.millis().getAverage(), s.millis().getMax(), s.millis().getSum());

@@ -36,7 +36,7 @@ class JfrReportTest {
         JfrReport.read(file).print(new PrintWriter(text, true));
 
         assertThat(text.toString())
-                .contains("steps (akka): 2 steps, 20 collisions; per step: collisions mean 10.0, max 16;")
+                .contains("steps (akka): 2, collisions 20; per step: collisions mean 10.0, max 16;")
                 .contains("causality violations: 1 (5.00% of collisions); late by (simulated time) mean 0.250, max 0.250")
                 .contains("actor mailboxes: 2 actors, 60 messages in, 59 out, deepest mailbox 7, busy 3.0 ms in total")
                 .contains("messages per collision: 3.00")
