@@ -29,6 +29,12 @@ final class AtomicOutput implements AutoCloseable {
         void writeTo(Writer w) throws IOException;
     }
 
+    /** Writes one file's content by file name, for libraries that write files themselves (a JFR dump). */
+    @FunctionalInterface
+    interface FileContent {
+        void writeTo(Path file) throws IOException;
+    }
+
     private record Staged(Path temp, Path target) {
     }
 
@@ -56,18 +62,34 @@ final class AtomicOutput implements AutoCloseable {
 
     /** Writes {@code content} to a temporary file beside {@code target}. */
     void stage(Path target, Content content) {
-        Path absolute = target.toAbsolutePath();
-        // Created by name rather than Files.createTempFile, so the file gets the usual permissions
-        // (umask) instead of owner-only ones, and keeps them after the rename.
-        Path temp = absolute.resolveSibling("." + absolute.getFileName() + "."
-                + Long.toHexString(ThreadLocalRandom.current().nextLong() >>> 1) + ".tmp");
-        staged.add(new Staged(temp, absolute));
+        Path temp = newTemp(target);
         try (Writer w = new BufferedWriter(new OutputStreamWriter(Files.newOutputStream(temp,
                 StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE), StandardCharsets.UTF_8), BUFFER)) {
             content.writeTo(w);
         } catch (IOException e) {
             throw new UncheckedIOException("cannot write " + target + ": " + e.getMessage(), e);
         }
+    }
+
+    /** Has {@code content} write a temporary file beside {@code target}. */
+    void stageFile(Path target, FileContent content) {
+        Path temp = newTemp(target);
+        try {
+            content.writeTo(temp);
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot write " + target + ": " + e.getMessage(), e);
+        }
+    }
+
+    /** Names a temporary file beside {@code target} and remembers it (also for {@link #close}). */
+    private Path newTemp(Path target) {
+        Path absolute = target.toAbsolutePath();
+        // Created by name rather than Files.createTempFile, so the file gets the usual permissions
+        // (umask) instead of owner-only ones, and keeps them after the rename.
+        Path temp = absolute.resolveSibling("." + absolute.getFileName() + "."
+                + Long.toHexString(ThreadLocalRandom.current().nextLong() >>> 1) + ".tmp");
+        staged.add(new Staged(temp, absolute));
+        return temp;
     }
 
     /** Moves every staged file into place. */

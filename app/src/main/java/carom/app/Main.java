@@ -17,7 +17,8 @@ import picocli.CommandLine.Spec;
         mixinStandardHelpOptions = true,
         versionProvider = VersionProvider.class,
         description = "Exact event-driven simulation of hard discs in 2D.",
-        subcommands = {SimulateCommand.class, EnginesCommand.class, carom.app.render.RenderCommand.class})
+        subcommands = {SimulateCommand.class, EnginesCommand.class, carom.app.render.RenderCommand.class,
+                carom.app.analyze.AnalyzeCommand.class})
 public final class Main implements Runnable {
     /** Exit status for a bad scene, bad option or other bad input. */
     public static final int BAD_INPUT = 2;
@@ -58,7 +59,7 @@ public final class Main implements Runnable {
     /** {@code carom} alone: say which commands exist rather than doing nothing. */
     @Override
     public void run() {
-        throw new ParameterException(spec.commandLine(), "missing command: use 'carom simulate SCENE.json', 'carom render SCENE.json --at T1,T2 --out DIR' or 'carom engines'");
+        throw new ParameterException(spec.commandLine(), "missing command: use 'carom simulate SCENE.json', 'carom render SCENE.json --at T1,T2 --out DIR', 'carom analyze FILE.jfr' or 'carom engines'");
     }
 
     /** Hands the raw streams to the command that needs to know what they are. */

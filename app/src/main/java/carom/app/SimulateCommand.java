@@ -4,6 +4,7 @@ import carom.core.BadInputException;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
+import carom.core.observe.jfr.CaromRecording;
 import carom.core.scene.Scene;
 import carom.core.scene.SceneReader;
 import carom.engines.EngineCatalog;
@@ -16,6 +17,7 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.function.Supplier;
+import jdk.jfr.Recording;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -55,6 +57,11 @@ final class SimulateCommand implements Callable<Integer> {
     @Option(names = "--summary", paramLabel = "SUMMARY.json", description = "Write the run's summary here as JSON.")
     Path summary;
 
+    @Option(names = "--jfr", paramLabel = "FILE.jfr",
+            description = "Record the run with Java Flight Recorder (carom's events, execution samples, GC, CPU load) "
+                    + "into this file; read it with 'carom analyze'.")
+    Path jfr;
+
     @Option(names = "--option", paramLabel = "KEY=VALUE",
             description = "Engine tunable, for example cellFactor=2; may be repeated.")
     Map<String, String> tunables = new LinkedHashMap<>();
@@ -82,17 +89,24 @@ final class SimulateCommand implements Callable<Integer> {
         checkTunables(engine);
         checkOutputs();
 
-        RunResult result;
-        try (ProgressBar bar = ProgressBar.forRun(err, scene.until())) {
-            RunOptions options = new RunOptions(scene.until(), workers, bar, tunables);
-            result = aboutScene(() -> engine.run(scene, options));
-        }
-
-        if (out == null && summary == null) {
-            ReadableSummary.print(scene.name(), scene.size(), workers, result, spec.commandLine().getOut(), stdoutCharset);
-            return 0;
-        }
-        try (AtomicOutput files = new AtomicOutput()) {
+        // The recording covers the run only, not reading the scene; it closes (and its repository goes) in any case.
+        try (Recording recording = jfr == null ? null : CaromRecording.create();
+             AtomicOutput files = new AtomicOutput()) {
+            if (recording != null) {
+                recording.start();
+            }
+            RunResult result;
+            try (ProgressBar bar = ProgressBar.forRun(err, scene.until())) {
+                RunOptions options = new RunOptions(scene.until(), workers, bar, tunables);
+                result = aboutScene(() -> engine.run(scene, options));
+            }
+            if (recording != null) {
+                recording.stop();
+                files.stageFile(jfr, recording::dump);
+            }
+            if (out == null && summary == null) {
+                ReadableSummary.print(scene.name(), scene.size(), workers, result, spec.commandLine().getOut(), stdoutCharset);
+            }
             if (out != null) {
                 files.stage(out, w -> FinalStateCsv.write(result.finalState(), w));
             }
@@ -139,15 +153,22 @@ final class SimulateCommand implements Callable<Integer> {
     }
 
     private void checkOutputs() {
-        if (out != null && summary != null && out.toAbsolutePath().normalize().equals(summary.toAbsolutePath().normalize())) {
-            throw new BadInputException("--out and --summary name the same file " + out);
+        Map<Path, String> named = new LinkedHashMap<>();
+        checkOutput(out, "--out", named);
+        checkOutput(summary, "--summary", named);
+        checkOutput(jfr, "--jfr", named);
+    }
+
+    /** {@code file} must be writable and not named by another output option already in {@code named}. */
+    private static void checkOutput(Path file, String option, Map<Path, String> named) {
+        if (file == null) {
+            return;
         }
-        if (out != null) {
-            AtomicOutput.checkWritable(out, "--out");
+        String earlier = named.putIfAbsent(file.toAbsolutePath().normalize(), option);
+        if (earlier != null) {
+            throw new BadInputException(earlier + " and " + option + " name the same file " + file);
         }
-        if (summary != null) {
-            AtomicOutput.checkWritable(summary, "--summary");
-        }
+        AtomicOutput.checkWritable(file, option);
     }
 
     /** Bad input found while handling the scene names the scene file, as SPEC asks. */

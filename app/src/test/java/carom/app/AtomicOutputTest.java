@@ -50,6 +50,28 @@ class AtomicOutputTest {
         assertThat(Files.readString(b)).isEqualTo("old\n");
     }
 
+    /** Files that a library writes by name (a JFR dump) follow the same rules, also when it fails. */
+    @Test
+    void filesWrittenByNameAppearOnlyOnCommitAndNotAfterAFailure() throws IOException {
+        Path a = dir.resolve("a.jfr");
+        try (AtomicOutput files = new AtomicOutput()) {
+            files.stageFile(a, temp -> Files.writeString(temp, "recording"));
+            assertThat(a).doesNotExist();
+            files.commit();
+        }
+        assertThat(Files.readString(a)).isEqualTo("recording");
+        Path b = dir.resolve("b.jfr");
+        assertThatThrownBy(() -> {
+            try (AtomicOutput files = new AtomicOutput()) {
+                files.stageFile(b, temp -> {
+                    Files.writeString(temp, "half");
+                    throw new IOException("disc full");
+                });
+            }
+        }).isInstanceOf(UncheckedIOException.class).hasMessageContaining("disc full");
+        assertThat(filesIn(dir)).containsExactly("a.jfr");
+    }
+
     @Test
     void uncommittedFilesAreRemoved() {
         try (AtomicOutput files = new AtomicOutput()) {

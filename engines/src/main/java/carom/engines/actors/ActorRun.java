@@ -4,6 +4,7 @@ import carom.core.BadInputException;
 import carom.core.engine.EngineFailure;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
+import carom.core.observe.jfr.ActorMailboxEvent;
 import carom.core.scene.Scene;
 import carom.engines.actors.Protocol.Kind;
 import carom.engines.actors.Protocol.ToCell;
@@ -45,6 +46,8 @@ public abstract class ActorRun implements BlockActor.Outbox {
     private final LongAdder heartbeat = new LongAdder();
     private final double stallSeconds;
     private final boolean relayMinimums;
+    /** Whether a JFR recording wants mailbox summaries (then actors time their handlers). */
+    private final boolean timed;
 
     protected ActorRun(String engineName, Scene scene, RunOptions options, BlockActor.FaultInjection faults) {
         this.engineName = engineName;
@@ -66,10 +69,12 @@ public abstract class ActorRun implements BlockActor.Outbox {
         this.relayMinimums = relay == 1;
         this.layout = new BlockLayout(frame.grid, (int) cellsPerActor);
         this.actors = new BlockActor[layout.actors];
+        this.timed = new ActorMailboxEvent().isEnabled();
         for (int a = 0; a < actors.length; a++) {
-            actors[a] = new BlockActor(a, frame, layout, this, relayMinimums, faults, heartbeat);
+            actors[a] = new BlockActor(a, frame, layout, this, relayMinimums, faults, heartbeat, timed);
         }
-        this.grid = new GridCoordinator(frame, layout, this::toCell, options.progress(), finished, heartbeat);
+        this.grid = new GridCoordinator(engineName, frame, layout, this::toCell, this::collisions, options.progress(),
+                finished, heartbeat);
     }
 
     /** Creates whatever runs the actors and has the grid start the first step in its own context. */
@@ -108,6 +113,12 @@ public abstract class ActorRun implements BlockActor.Outbox {
                 messages[k] += a.sentByKind[k];
             }
         }
+        if (timed) {
+            for (BlockActor a : actors) {
+                long out = java.util.Arrays.stream(a.sentByKind).sum();
+                ActorMailboxEvent.emit(engineName, describe(a.id), a.messagesIn, out, -1, a.busyNanos);
+            }
+        }
         Map<String, Long> counters = new HashMap<>(engineCounters());
         long total = 0;
         for (Kind kind : Kind.values()) {
@@ -122,6 +133,15 @@ public abstract class ActorRun implements BlockActor.Outbox {
         counters.put("threads", (long) threads);
         counters.put("relayMinimums", relayMinimums ? 1L : 0L);
         return frame.result(engineName, workers, seconds, counters);
+    }
+
+    /** Collisions so far; read by the grid between steps, when every actor has reported done. */
+    private long collisions() {
+        long sum = 0;
+        for (BlockActor a : actors) {
+            sum += a.worker.pairCollisions + a.worker.wallCollisions;
+        }
+        return sum;
     }
 
     private void awaitWithWatchdog() {

@@ -2,6 +2,7 @@ package carom.engines.actors;
 
 import carom.core.grid.CellGrid;
 import carom.core.grid.CellLists;
+import carom.core.observe.jfr.CausalityViolationEvent;
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
 import carom.core.physics.PairLaw;
@@ -78,6 +79,10 @@ public final class BlockActor {
     private final LongAdder heartbeat;
     final Worker worker;
     final long[] sentByKind = new long[Kind.values().length];
+    long messagesIn;
+    /** Time spent handling messages, measured only when a JFR recording wants mailbox summaries. */
+    long busyNanos;
+    private final boolean timed;
     private final Flight flight;
     private final Boundary boundary;
     private final Boundary.Walls walls;
@@ -146,8 +151,9 @@ public final class BlockActor {
      *                      other neighbours (see {@link #isLocalMinimum})
      */
     public BlockActor(int id, StepFrame frame, BlockLayout layout, Outbox out, boolean relayMinimums,
-                      FaultInjection faults, LongAdder heartbeat) {
+                      FaultInjection faults, LongAdder heartbeat, boolean timed) {
         this.id = id;
+        this.timed = timed;
         this.relayMinimums = relayMinimums;
         this.frame = frame;
         this.layout = layout;
@@ -259,6 +265,15 @@ public final class BlockActor {
     /** Handles one message; the engine guarantees one at a time per actor. */
     public void handle(ToCell message) {
         heartbeat.increment();
+        messagesIn++;
+        long started = timed ? System.nanoTime() : 0;
+        dispatch(message);
+        if (timed) {
+            busyNanos += System.nanoTime() - started;
+        }
+    }
+
+    private void dispatch(ToCell message) {
         switch (message) {
             case BeginStep m -> onBeginStep(m);
             case Particles m -> onParticles(m);
@@ -586,6 +601,8 @@ public final class BlockActor {
         faults.beforeEvent(id, events++);
         if (local.t[a] > now || (b >= 0 && local.t[b] > now)) {
             worker.violations++;
+            CausalityViolationEvent.emit(epoch + now, discId[a], b >= 0 ? discId[b] : b,
+                    Math.max(local.t[a], b >= 0 ? local.t[b] : now) - now);
         }
         worker.stallGuard.event(epoch + now, discId[a], b >= 0 ? discId[b] : b);
         changedOwnCount = 0;
@@ -765,6 +782,7 @@ public final class BlockActor {
         if (globalStamp[s] != m.basisStamp()) {
             // The kicker's copy is out of date: this disc collided meanwhile. Keep momentum, count it.
             worker.violations++;
+            CausalityViolationEvent.emit(epoch + m.time(), m.disc(), -1, Math.max(0, local.t[s] - m.time()));
             flight.advance(local, s, m.time());
             local.vx[s] += m.dvx();
             local.vy[s] += m.dvy();

@@ -1,6 +1,7 @@
 package carom.engines.actors;
 
 import carom.core.engine.ProgressListener;
+import carom.core.observe.jfr.TimeStepEvent;
 import carom.engines.actors.Protocol.BeginProcessing;
 import carom.engines.actors.Protocol.BeginStep;
 import carom.engines.actors.Protocol.EndStep;
@@ -16,6 +17,7 @@ import carom.engines.cells.StepFrame;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.atomic.LongAdder;
 import java.util.function.BiConsumer;
+import java.util.function.LongSupplier;
 
 /**
  * The thesis's grid actor: starts each step, waits for every cell's progress report before
@@ -31,7 +33,11 @@ import java.util.function.BiConsumer;
  * nothing was in flight between them, and nothing can happen any more.
  */
 public final class GridCoordinator {
+    private final String engine;
+    private final LongSupplier collisions;
     private final StepFrame frame;
+    private TimeStepEvent stepEvent;
+    private long collisionsBefore;
     private final BlockLayout layout;
     private final int actors;
     private final BiConsumer<Integer, ToCell> toCell;
@@ -65,8 +71,11 @@ public final class GridCoordinator {
     private long firstWaveSent;
     private long firstWaveReceived;
 
-    public GridCoordinator(StepFrame frame, BlockLayout layout, BiConsumer<Integer, ToCell> toCell,
-                           ProgressListener progress, CompletableFuture<Void> finished, LongAdder heartbeat) {
+    public GridCoordinator(String engine, StepFrame frame, BlockLayout layout, BiConsumer<Integer, ToCell> toCell,
+                           LongSupplier collisions, ProgressListener progress, CompletableFuture<Void> finished,
+                           LongAdder heartbeat) {
+        this.engine = engine;
+        this.collisions = collisions;
         this.frame = frame;
         this.layout = layout;
         this.actors = layout.actors;
@@ -99,6 +108,7 @@ public final class GridCoordinator {
     }
 
     private void beginStep() {
+        stepEvent = TimeStepEvent.start();
         remaining = frame.until - epoch;
         length = frame.beginStep(epoch, remaining);
         steps++;
@@ -186,6 +196,11 @@ public final class GridCoordinator {
             return;
         }
         frame.endStep();
+        if (stepEvent.isEnabled()) {
+            long sum = collisions.getAsLong();
+            stepEvent.finish(engine, steps, epoch, epoch + length, sum - collisionsBefore);
+            collisionsBefore = sum;
+        }
         epoch = length >= remaining ? frame.until : epoch + length;
         progress.simulatedTime(epoch);
         if (epoch < frame.until) {

@@ -11,6 +11,8 @@ import carom.core.observe.EnergyAudit;
 import carom.core.observe.Observables;
 import carom.core.observe.Pressure;
 import carom.core.observe.VirialAccumulator;
+import carom.core.observe.jfr.QueueRebuildEvent;
+import carom.core.observe.jfr.TimeStepEvent;
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
 import carom.core.physics.PairLaw;
@@ -126,14 +128,20 @@ final class SerialRun {
     /** Runs one step from local time 0 (absolute {@code epoch}); returns its length. */
     private double step(double epoch, double remaining) {
         steps++;
+        TimeStepEvent stepEvent = TimeStepEvent.start();
+        long collisionsBefore = pairCollisions + wallCollisions;
         stepEnd = stepGrid.stepLength(d.maxSpeed(), acceleration, remaining);
+        QueueRebuildEvent rebuild = QueueRebuildEvent.start();
+        long predictionsBefore = predictions;
         cells.rebuild(grid, d.x, d.y, n);
         System.arraycopy(d.x, 0, startX, 0, n);
         System.arraycopy(d.y, 0, startY, 0, n);
         queue.reset(n, stepEnd, Math.max(16, n));
         findStepPotentials();
+        rebuild.finish("serial", n, predictions - predictionsBefore);
         processUntilStepEnd(epoch);
         double end = stepEnd;
+        stepEvent.finish("serial", steps, epoch, epoch + end, pairCollisions + wallCollisions - collisionsBefore);
         for (int i = 0; i < n; i++) {
             flight.advance(d, i, end);
             d.x[i] = boundary.wrapX(d.x[i]);

@@ -3,6 +3,7 @@ package carom.engines.stripes;
 import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
+import carom.core.observe.jfr.TimeStepEvent;
 import carom.engines.cells.CellStepWork;
 import carom.engines.cells.Worker;
 import carom.core.scene.Scene;
@@ -73,6 +74,8 @@ final class StripesRun {
             double epoch = 0;
             while (epoch < until) {
                 double remaining = until - epoch;
+                TimeStepEvent stepEvent = TimeStepEvent.start();
+                long stepCollisions = 0;
                 double length = work.beginStep(epoch, remaining);
                 steps++;
                 int cols = work.grid.cols;
@@ -92,8 +95,10 @@ final class StripesRun {
                             work.completeDeferred(workers.get(r));
                         }
                     }
+                    stepCollisions += processed; // the round's events, each one collision
                 } while (processed > 0 || anyEventLeft());
                 work.endStep();
+                stepEvent.finish("stripes", steps, epoch, epoch + length, stepCollisions);
                 epoch = length >= remaining ? until : epoch + length;
                 progress.simulatedTime(epoch);
             }
