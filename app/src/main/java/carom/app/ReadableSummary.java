@@ -42,6 +42,13 @@ final class ReadableSummary {
                     p.pressure(), plusMinus, p.pressureError(), p.blocks()));
         }
         line(out, "causality violations", Long.toString(r.causalityViolations()));
+        if (!r.exact()) {
+            line(out, "  per 10^6 collisions", String.format(Locale.ROOT, "%.1f", r.violationsPerMillionCollisions()));
+        }
+        if (!Double.isNaN(r.messagesPerCollision())) {
+            line(out, "messages per collision", String.format(Locale.ROOT, "%.1f  (by type: counters messages.*)",
+                    r.messagesPerCollision()));
+        }
         Map<String, Long> counters = r.counters() == null ? Map.of() : new TreeMap<>(r.counters());
         if (!counters.isEmpty()) {
             out.println("counters");

@@ -58,6 +58,10 @@ final class SummaryJson {
             number(pressure, "Perror", p.pressureError());
             pressure.put("blocks", p.blocks());
         }
+        number(root, "violationsPerMillionCollisions", r.violationsPerMillionCollisions());
+        if (!Double.isNaN(r.messagesPerCollision())) {
+            number(root, "messagesPerCollision", r.messagesPerCollision());
+        }
         ObjectNode counters = root.putObject("counters");
         // Counters in a stable order, so that summaries diff cleanly.
         Map<String, Long> sorted = r.counters() == null ? Map.of() : new TreeMap<>(r.counters());

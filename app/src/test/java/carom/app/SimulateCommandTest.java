@@ -186,6 +186,33 @@ class SimulateCommandTest {
         assertThat(out).doesNotExist();
     }
 
+    /** The actor engines run from the command line and report messages per collision. */
+    @org.junit.jupiter.params.ParameterizedTest
+    @org.junit.jupiter.params.provider.ValueSource(strings = {"akka", "vthreads"})
+    void actorEnginesReportViolationsAndMessagesPerCollision(String engine) throws IOException {
+        Path scene = Scenes.write(dir, "periodic.json", Scenes.periodic());
+        Path summary = dir.resolve("s.json");
+        Cli r = Cli.run("simulate", scene.toString(), "--engine", engine, "--threads", "2",
+                "--option", "cellsPerActor=2", "--summary", summary.toString());
+        assertThat(r.status()).as(r.err()).isZero();
+        JsonNode s = JSON.readTree(summary.toFile());
+        assertThat(s.get("exact").asBoolean()).isFalse();
+        assertThat(s.get("violationsPerMillionCollisions").isNumber()).isTrue();
+        long collisions = s.at("/collisions/pair").asLong() + s.at("/collisions/wall").asLong();
+        assertThat(collisions).isPositive();
+        assertThat(s.get("messagesPerCollision").asDouble())
+                .isCloseTo(s.at("/counters/messages").asDouble() / collisions, within(1e-9));
+        assertThat(s.at("/counters/cellsPerActor").asLong()).isEqualTo(2);
+
+        Cli readable = Cli.run("simulate", scene.toString(), "--engine", engine);
+        assertThat(readable.status()).as(readable.err()).isZero();
+        assertThat(readable.out()).contains("messages per collision").contains("per 10^6 collisions");
+
+        Cli bad = Cli.run("simulate", scene.toString(), "--engine", engine, "--option", "cellsPerActor=0");
+        assertThat(bad.status()).isEqualTo(2);
+        assertThat(bad.firstErrorLine()).contains("cellsPerActor");
+    }
+
     private static double[] parseRow(String line) {
         String[] f = line.split(",", -1);
         assertThat(f).hasSize(5);

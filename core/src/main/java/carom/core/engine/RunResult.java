@@ -39,6 +39,17 @@ public record RunResult(String engine, boolean exact, Discs finalState, double u
         return wallSeconds > 0 ? collisions() / wallSeconds : 0;
     }
 
+    /** Causality violations per million collisions (0 for exact engines). */
+    public double violationsPerMillionCollisions() {
+        return collisions() == 0 ? 0 : causalityViolations * 1e6 / collisions();
+    }
+
+    /** Messages sent per collision, for engines that count messages (counter "messages"), else NaN. */
+    public double messagesPerCollision() {
+        Long messages = counters == null ? null : counters.get("messages");
+        return messages == null || collisions() == 0 ? Double.NaN : messages / (double) collisions();
+    }
+
     /** Relative change of kinetic energy over the run. */
     public double energyDrift() {
         return kineticEnergyStart == 0 ? kineticEnergyEnd : (kineticEnergyEnd - kineticEnergyStart) / kineticEnergyStart;
