@@ -37,11 +37,13 @@ carom_find_jdk() {
 }
 if carom_home=$(carom_find_jdk); then
   JAVA_HOME="$carom_home"; export JAVA_HOME
-  # Maven's bundled Guava calls sun.misc.Unsafe, which JDK 24+ warns about on every build.
+  # Maven's bundled Guava and Akka 2.6 call sun.misc.Unsafe, which JDK 24+ warns about on first use.
+  CAROM_UNSAFE_OPT=""
   if [ "$(carom_jdk_major "$JAVA_HOME")" -ge 24 ] 2>/dev/null; then
+    CAROM_UNSAFE_OPT="--sun-misc-unsafe-memory-access=allow"
     case "${MAVEN_OPTS:-}" in
       *sun-misc-unsafe-memory-access*) ;;
-      *) MAVEN_OPTS="${MAVEN_OPTS:-} --sun-misc-unsafe-memory-access=allow"; export MAVEN_OPTS ;;
+      *) MAVEN_OPTS="${MAVEN_OPTS:-} $CAROM_UNSAFE_OPT"; export MAVEN_OPTS ;;
     esac
   fi
 else
