@@ -1,11 +1,11 @@
 package carom.engines.actors;
 
+import carom.core.engine.Contacts;
 import carom.core.grid.CellGrid;
 import carom.core.grid.CellLists;
 import carom.core.observe.jfr.CausalityViolationEvent;
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
-import carom.core.physics.PairLaw;
 import carom.core.physics.Restitution;
 import carom.core.state.Discs;
 import carom.engines.actors.Protocol.BeginProcessing;
@@ -86,7 +86,7 @@ public final class BlockActor {
     private final Flight flight;
     private final Boundary boundary;
     private final Boundary.Walls walls;
-    private final boolean gravity;
+    private final Contacts contacts;
     private final Restitution restitutionTemplate;
 
     // Known cells: own [0, ownCells), then the foreign cells this actor holds copies of.
@@ -164,7 +164,7 @@ public final class BlockActor {
         this.flight = frame.flight;
         this.boundary = frame.boundary;
         this.walls = frame.walls;
-        this.gravity = frame.gravity;
+        this.contacts = worker.contacts;
         this.restitutionTemplate = frame.restitution;
         this.restitution = restitutionTemplate.forRun(local.n);
         this.ownCells = layout.cellCount(id);
@@ -615,48 +615,30 @@ public final class BlockActor {
     }
 
     private void collidePair(double now, int a, int b) {
+        // Velocities at the collision (gravity bends them in flight), for the kick's velocity change.
         flight.advance(local, a, now);
         flight.advance(local, b, now);
-        double dx = boundary.separationX(local.x[b] - local.x[a]);
-        double dy = boundary.separationY(local.y[b] - local.y[a]);
-        double e = restitution.pair(a, b, epoch + now);
-        boolean aMobile = local.invMass[a] > 0;
-        boolean bMobile = local.invMass[b] > 0;
-        if (gravity && aMobile != bMobile) {
-            int mobile = aMobile ? a : b;
-            double dist = Math.sqrt(dx * dx + dy * dy);
-            double toPeg = aMobile ? 1 / dist : -1 / dist;
-            worker.stallGuard.pegContact(epoch + now, discId[mobile], discId[aMobile ? b : a], dx * toPeg, dy * toPeg,
-                    local.vx[mobile], local.vy[mobile], dist);
-        }
         double avx = local.vx[a];
         double avy = local.vy[a];
         double bvx = local.vx[b];
         double bvy = local.vy[b];
-        double virial = PairLaw.collide(local, a, b, dx, dy, e);
+        double virial = contacts.pair(local, restitution, a, b, now, epoch + now, discId[a], discId[b]);
         worker.pairCollisions++;
         if (worker.virial != null) {
             worker.virial.add(epoch + now, virial);
         }
-        if (aMobile) {
+        if (local.invMass[a] > 0) {
             changed(a, now, avx, avy);
         }
-        if (bMobile) {
+        if (local.invMass[b] > 0) {
             changed(b, now, bvx, bvy);
         }
     }
 
     private void collideWall(double now, int i, int wall) {
-        flight.advance(local, i, now);
-        double e = restitution.wall(i, epoch + now);
-        if (gravity) {
-            worker.stallGuard.wallContact(epoch + now, discId[i], wall, local.vx[i], local.vy[i]);
-        }
-        double vx = local.vx[i];
-        double vy = local.vy[i];
-        boundary.reflect(local, i, wall, e);
+        contacts.wall(local, restitution, i, wall, now, epoch + now, discId[i]);
         worker.wallCollisions++;
-        changed(i, now, vx, vy);
+        changed(i, now, Double.NaN, Double.NaN); // an own disc: no kick, no velocity change to send
     }
 
     /** Slot s's velocity changed at {@code now} (it was vx0, vy0): own discs are re-predicted and announced, copies kicked to their owner. */

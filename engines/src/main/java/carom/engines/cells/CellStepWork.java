@@ -6,7 +6,6 @@ import carom.core.grid.CellLists;
 import carom.core.observe.jfr.CausalityViolationEvent;
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
-import carom.core.physics.PairLaw;
 import carom.core.physics.Restitution;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
@@ -56,7 +55,6 @@ public final class CellStepWork {
     private final Boundary boundary;
     private final Boundary.Walls walls;
     private final Restitution restitution;
-    private final boolean gravity;
     public final CellGrid grid;
     private final CellLists cells;
     private final CellHeap[] heaps;
@@ -72,7 +70,6 @@ public final class CellStepWork {
         this.boundary = frame.boundary;
         this.walls = frame.walls;
         this.restitution = frame.restitution;
-        this.gravity = frame.gravity;
         this.grid = frame.grid;
         this.cells = frame.cells;
         this.heaps = new CellHeap[grid.cellCount()];
@@ -216,40 +213,21 @@ public final class CellStepWork {
     }
 
     private void collidePair(double now, int a, int b, int band, Worker w) {
-        flight.advance(d, a, now);
-        flight.advance(d, b, now);
-        double dx = boundary.separationX(d.x[b] - d.x[a]);
-        double dy = boundary.separationY(d.y[b] - d.y[a]);
-        double e = restitution.pair(a, b, epoch + now);
-        boolean aMobile = d.invMass[a] > 0;
-        boolean bMobile = d.invMass[b] > 0;
-        if (gravity && aMobile != bMobile) {
-            int mobile = aMobile ? a : b;
-            double dist = Math.sqrt(dx * dx + dy * dy);
-            double toPeg = aMobile ? 1 / dist : -1 / dist;
-            w.stallGuard.pegContact(epoch + now, mobile, aMobile ? b : a, dx * toPeg, dy * toPeg,
-                    d.vx[mobile], d.vy[mobile], dist);
-        }
-        double virial = PairLaw.collide(d, a, b, dx, dy, e);
+        double virial = w.contacts.pair(d, restitution, a, b, now, epoch + now, a, b);
         w.pairCollisions++;
         if (w.virial != null) {
             w.virial.add(epoch + now, virial);
         }
-        if (aMobile) {
+        if (d.invMass[a] > 0) {
             afterVelocityChange(a, now, band, w);
         }
-        if (bMobile) {
+        if (d.invMass[b] > 0) {
             afterVelocityChange(b, now, band, w);
         }
     }
 
     private void collideWall(double now, int i, int wall, int band, Worker w) {
-        flight.advance(d, i, now);
-        double e = restitution.wall(i, epoch + now);
-        if (gravity) {
-            w.stallGuard.wallContact(epoch + now, i, wall, d.vx[i], d.vy[i]);
-        }
-        boundary.reflect(d, i, wall, e);
+        w.contacts.wall(d, restitution, i, wall, now, epoch + now, i);
         w.wallCollisions++;
         afterVelocityChange(i, now, band, w);
     }

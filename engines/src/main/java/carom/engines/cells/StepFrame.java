@@ -44,8 +44,6 @@ public final class StepFrame {
     /** Indexed by disc id; a scheduler that keeps discs elsewhere takes its own with {@code forRun}. */
     public final Restitution restitution;
     public final double acceleration;
-    /** Under gravity every contact with something immovable is checked for rest (StallGuard). */
-    public final boolean gravity;
     public final CellGrid grid;
     /** Which discs each cell held at the step start: fixed for the whole step. */
     public final CellLists cells = new CellLists();
@@ -81,7 +79,6 @@ public final class StepFrame {
         this.walls = boundary instanceof Boundary.Walls w ? w : null;
         this.restitution = physics.restitution;
         this.acceleration = flight.maxAcceleration();
-        this.gravity = acceleration > 0;
         this.stepGrid = StepGrid.plan(scene.box(), 2 * d.maxRadius(), cellFactor, n);
         this.grid = stepGrid.grid;
         this.startX = new double[n];
@@ -91,7 +88,7 @@ public final class StepFrame {
     }
 
     public Worker newWorker() {
-        return new Worker(scene, until, boundary.periodic());
+        return new Worker(scene, until, boundary.periodic(), flight, boundary);
     }
 
     /** Absolute time of the current step's start; event times inside a step are relative to it. */

@@ -1,6 +1,9 @@
 package carom.engines.cells;
 
+import carom.core.engine.Contacts;
 import carom.core.engine.StallGuard;
+import carom.core.physics.Boundary;
+import carom.core.physics.Flight;
 import carom.core.observe.VirialAccumulator;
 import carom.core.scene.Scene;
 
@@ -20,13 +23,16 @@ public final class Worker {
     /** Collision virial for the pressure (periodic boxes), else null. */
     public final VirialAccumulator virial;
     public final StallGuard stallGuard;
+    /** The shared collision physics, reporting to this worker's stall guard. */
+    public final Contacts contacts;
     /** Predictions deferred because they reach beyond the worker's band: disc, its stamp, band row. */
     int[] deferred = new int[48];
     int deferredCount;
 
-    Worker(Scene scene, double until, boolean periodic) {
+    Worker(Scene scene, double until, boolean periodic, Flight flight, Boundary boundary) {
         this.virial = periodic ? new VirialAccumulator(0, until, StepFrame.PRESSURE_BLOCKS) : null;
         this.stallGuard = new StallGuard(scene);
+        this.contacts = new Contacts(flight, boundary, stallGuard);
     }
 
     void defer(int disc, int stamp, int bandRow) {

@@ -3,6 +3,7 @@ package carom.engines.serial;
 import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
+import carom.core.engine.Contacts;
 import carom.core.engine.StallGuard;
 import carom.core.grid.CellGrid;
 import carom.core.grid.CellLists;
@@ -15,7 +16,6 @@ import carom.core.observe.jfr.QueueRebuildEvent;
 import carom.core.observe.jfr.TimeStepEvent;
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
-import carom.core.physics.PairLaw;
 import carom.core.physics.Physics;
 import carom.core.physics.Restitution;
 import carom.core.queue.ThreadedBucketQueue;
@@ -56,8 +56,6 @@ final class SerialRun {
     private final Boundary.Walls walls;
     private final Restitution restitution;
     private final double acceleration;
-    /** Under gravity every contact with something immovable is checked for rest (StallGuard). */
-    private final boolean gravity;
     private final EnergyAudit audit;
     private final StepGrid stepGrid;
     private final CellGrid grid;
@@ -68,6 +66,7 @@ final class SerialRun {
     private final ProgressListener progress;
     private final VirialAccumulator virial;
     private final StallGuard stallGuard;
+    private final Contacts contacts;
 
     private double stepEnd;
     private long pairCollisions;
@@ -87,7 +86,6 @@ final class SerialRun {
         this.walls = boundary instanceof Boundary.Walls w ? w : null;
         this.restitution = physics.restitution;
         this.acceleration = flight.maxAcceleration();
-        this.gravity = acceleration > 0;
         this.audit = Boolean.parseBoolean(options.tunables().getOrDefault("auditEnergy", "false"))
                 ? EnergyAudit.forScene(scene) : null;
         double cellFactor = options.tunable("cellFactor", 2.0);
@@ -101,6 +99,7 @@ final class SerialRun {
         this.progress = options.progress();
         this.virial = boundary.periodic() ? new VirialAccumulator(0, until, PRESSURE_BLOCKS) : null;
         this.stallGuard = new StallGuard(scene);
+        this.contacts = new Contacts(flight, boundary, stallGuard);
     }
 
     RunResult run() {
@@ -189,21 +188,9 @@ final class SerialRun {
     }
 
     private void collidePair(double epoch, double now, int a, int b) {
-        flight.advance(d, a, now);
-        flight.advance(d, b, now);
-        double dx = boundary.separationX(d.x[b] - d.x[a]);
-        double dy = boundary.separationY(d.y[b] - d.y[a]);
-        double e = restitution.pair(a, b, epoch + now);
+        double w = contacts.pair(d, restitution, a, b, now, epoch + now, a, b);
         boolean aMobile = d.invMass[a] > 0;
         boolean bMobile = d.invMass[b] > 0;
-        if (gravity && aMobile != bMobile) {
-            int mobile = aMobile ? a : b;
-            double dist = Math.sqrt(dx * dx + dy * dy);
-            double toPeg = aMobile ? 1 / dist : -1 / dist;
-            stallGuard.pegContact(epoch + now, mobile, aMobile ? b : a, dx * toPeg, dy * toPeg,
-                    d.vx[mobile], d.vy[mobile], dist);
-        }
-        double w = PairLaw.collide(d, a, b, dx, dy, e);
         pairCollisions++;
         if (aMobile) {
             restitution.collided(a, epoch + now);
@@ -230,12 +217,7 @@ final class SerialRun {
     }
 
     private void collideWall(double epoch, double now, int i, int wall) {
-        flight.advance(d, i, now);
-        double e = restitution.wall(i, epoch + now);
-        if (gravity) {
-            stallGuard.wallContact(epoch + now, i, wall, d.vx[i], d.vy[i]);
-        }
-        boundary.reflect(d, i, wall, e);
+        contacts.wall(d, restitution, i, wall, now, epoch + now, i);
         restitution.collided(i, epoch + now);
         wallCollisions++;
         queue.removeAllOf(i);
