@@ -28,8 +28,11 @@ for n in ${sizes[@]}; do
                "velocity": {"distribution": "maxwell", "temperature": 1.0}, "seed": 1}],
  "until": ${until[$phi]}}
 JSON
+    # engine threads cellsPerActor ("-": not an actor engine); RUNS="..." replaces the list
+    # (for N = 1e6 one actor per cell takes a quarter of an hour a run here: see README.md)
+    if [[ -n "${RUNS:-}" ]]; then IFS=',' read -r -a runs <<<"$RUNS"; else
     runs=("serial 1 -" "stripes 1 -" "stripes 2 -" "akka 1 1" "akka 2 1" "vthreads 1 1" "vthreads 2 1"
-          "akka 2 16" "vthreads 2 16" "akka 2 perthread" "vthreads 2 perthread")
+          "akka 2 16" "vthreads 2 16" "akka 2 perthread" "vthreads 2 perthread"); fi
     for run in "${runs[@]}"; do
       read -r engine threads block <<<"$run"
       opts=()

@@ -114,12 +114,19 @@ class ExampleScenesTest {
     }
 
     @Test
-    void thesisWorkloadIsOneHundredThousandDiscsAtPackingFractionOneTenth() {
+    void thesisWorkloadIsTheBenchmarksThesisScene() {
         Scene scene = load("thesis-100k.json");
+        Scene standard = StandardScenes.thesis(100_000, 42);
         assertThat(scene.size()).isEqualTo(100_000);
         assertThat(scene.box().periodic()).isFalse();
-        assertThat(packingFraction(scene)).isCloseTo(0.1, within(1e-12));
+        assertThat(packingFraction(scene)).isCloseTo(0.04 * Math.PI, within(1e-12));
         assertThat(scene.newDiscs().maxSpeed()).isLessThanOrEqualTo(Math.sqrt(2));
-        assertThat(scene.until()).isEqualTo(0.25);
+        assertThat(scene.until()).isEqualTo(StandardScenes.THESIS_UNTIL);
+        Discs a = scene.newDiscs();
+        Discs b = standard.newDiscs();
+        for (int i = 0; i < a.n; i += 997) {
+            assertThat(a.x[i]).isCloseTo(b.x[i], within(1e-9));
+            assertThat(a.vy[i]).isEqualTo(b.vy[i]);
+        }
     }
 }
