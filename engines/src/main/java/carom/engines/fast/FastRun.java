@@ -121,6 +121,11 @@ final class FastRun {
      */
     private final double recheckX;
     private final double recheckY;
+    /**
+     * Straight flight with every neighbour seen through its cell's image (no rechecks): the cell scan
+     * predicts inline instead of through {@link Flight#timeToContact}.
+     */
+    private final boolean straightImages;
 
     // Events: time in the queue; kind, best candidate and its counter at prediction here.
     private final CalendarQueue queue;
@@ -142,6 +147,13 @@ final class FastRun {
     private long resyncs;
     /** Side through which the last {@link #crossing} leaves (a crossing kind). */
     private byte crossKind;
+    /** Cells the next {@link #scan} visits (row-major index) and the image shift of their discs. */
+    private final int[] visitCell = new int[9];
+    private final double[] visitShiftX = new double[9];
+    private final double[] visitShiftY = new double[9];
+    /** Earliest event found so far by the prediction under way, and its candidate code. */
+    private double found;
+    private int foundP;
 
     FastRun(Scene scene, RunOptions options) {
         this.scene = scene;
@@ -187,6 +199,7 @@ final class FastRun {
         double maxDiameter = 2 * src.maxRadius();
         this.recheckX = periodic && cols < 4 ? 0.5 * (0.5 * width - maxDiameter) : 0;
         this.recheckY = periodic && rows < 4 ? 0.5 * (0.5 * height - maxDiameter) : 0;
+        this.straightImages = flight instanceof Flight.Straight && recheckX == 0 && recheckY == 0;
         this.fullOnCross = (acceleration > 0 && scene.hasFixedDiscs()) || recheckX > 0 || recheckY > 0;
         this.cellHead = new int[cols * rows];
         this.cellNext = new int[n];
@@ -531,40 +544,20 @@ final class FastRun {
         }
         double cross = crossing(i, now);
         byte ck = crossKind;
-        double horizon = now + cross;
+        found = best;
+        foundP = bestP;
         int packed = cellOf[i];
         int col = packed & 0xFFFF;
         int row = packed >>> 16;
+        int m = 0;
         for (int dr = -1; dr <= 1; dr++) {
-            int r = row + dr;
-            if (r < 0 || r >= rows) {
-                if (!periodic) {
-                    continue;
-                }
-                r = r < 0 ? r + rows : r - rows;
-            }
-            int base = r * cols;
             for (int dc = -1; dc <= 1; dc++) {
-                int c = col + dc;
-                if (c < 0 || c >= cols) {
-                    if (!periodic) {
-                        continue;
-                    }
-                    c = c < 0 ? c + cols : c - cols;
-                }
-                for (int j = cellHead[base + c]; j != NIL; j = cellNext[j]) {
-                    if (j != i) {
-                        double t = flight.timeToContact(d, i, j, now, horizon, boundary);
-                        if (t < best) {
-                            best = t;
-                            bestP = j;
-                        }
-                    }
-                }
+                m = visit(col + dc, row + dr, m);
             }
         }
+        scan(i, now, now + cross, m);
         predictions++;
-        return schedule(i, now, best, bestP, cross, ck);
+        return schedule(i, now, found, foundP, cross, ck);
     }
 
     /**
@@ -586,63 +579,98 @@ final class FastRun {
         } else if (bestP != NONE) {
             best = flight.timeToWall(d, i, -1 - bestP, now, walls);
         }
-        if (best == INF) {
-            bestP = NONE;
-        }
-        boolean alongX = k == CROSS_LEFT || k == CROSS_RIGHT;
-        int fixedLine;
-        if (alongX) {
-            int c = k == CROSS_RIGHT ? col + 1 : col - 1;
-            if (c < 0 || c >= cols) {
-                if (!periodic) {
-                    return schedule(i, now, best, bestP, cross, ck);
-                }
-                c = c < 0 ? c + cols : c - cols;
-            }
-            fixedLine = c;
-        } else {
-            int r = k == CROSS_UP ? row + 1 : row - 1;
-            if (r < 0 || r >= rows) {
-                if (!periodic) {
-                    return schedule(i, now, best, bestP, cross, ck);
-                }
-                r = r < 0 ? r + rows : r - rows;
-            }
-            fixedLine = r;
-        }
+        found = best;
+        foundP = best == INF ? NONE : bestP;
+        // The new line of cells: one column (or row) further on, three cells across.
+        int dc = k == CROSS_RIGHT ? 1 : (k == CROSS_LEFT ? -1 : 0);
+        int dr = k == CROSS_UP ? 1 : (k == CROSS_DOWN ? -1 : 0);
+        int m = 0;
         for (int s = -1; s <= 1; s++) {
-            int cell;
-            if (alongX) {
-                int r = row + s;
-                if (r < 0 || r >= rows) {
-                    if (!periodic) {
-                        continue;
-                    }
-                    r = r < 0 ? r + rows : r - rows;
-                }
-                cell = r * cols + fixedLine;
-            } else {
-                int c = col + s;
-                if (c < 0 || c >= cols) {
-                    if (!periodic) {
-                        continue;
-                    }
-                    c = c < 0 ? c + cols : c - cols;
-                }
-                cell = fixedLine * cols + c;
+            m = visit(col + dc + (dc == 0 ? s : 0), row + dr + (dr == 0 ? s : 0), m);
+        }
+        scan(i, now, horizon, m);
+        predictions++;
+        return schedule(i, now, found, foundP, cross, ck);
+    }
+
+    /**
+     * Appends cell (c, r), given unwrapped, to the cells the next {@link #scan} visits, and returns the
+     * new count: outside a walled box there is nothing; in a periodic box the cell wraps and its discs
+     * are seen shifted by one box length (their nearest image whenever the axis has at least 4 cells,
+     * since positions stay within rounding of their logical cells).
+     */
+    private int visit(int c, int r, int m) {
+        double shiftX = 0;
+        double shiftY = 0;
+        if (c < 0 || c >= cols) {
+            if (!periodic) {
+                return m;
             }
-            for (int j = cellHead[cell]; j != NIL; j = cellNext[j]) {
-                if (j != i) {
-                    double t = flight.timeToContact(d, i, j, now, horizon, boundary);
-                    if (t < best) {
-                        best = t;
-                        bestP = j;
+            shiftX = c < 0 ? -width : width;
+            c = c < 0 ? c + cols : c - cols;
+        }
+        if (r < 0 || r >= rows) {
+            if (!periodic) {
+                return m;
+            }
+            shiftY = r < 0 ? -height : height;
+            r = r < 0 ? r + rows : r - rows;
+        }
+        visitCell[m] = r * cols + c;
+        visitShiftX[m] = shiftX;
+        visitShiftY[m] = shiftY;
+        return m + 1;
+    }
+
+    /** Lowers {@link #found} to disc i's earliest contact with a disc of the first m visited cells. */
+    private void scan(int i, double now, double horizon, int m) {
+        double best = found;
+        int bestP = foundP;
+        if (!straightImages) {
+            for (int k = 0; k < m; k++) {
+                for (int j = cellHead[visitCell[k]]; j != NIL; j = cellNext[j]) {
+                    if (j != i) {
+                        double t = flight.timeToContact(d, i, j, now, horizon, boundary);
+                        if (t < best) {
+                            best = t;
+                            bestP = j;
+                        }
+                    }
+                }
+            }
+        } else {
+            // Straight flight (Flight.Straight inlined by hand): the pair's relative motion is linear.
+            double[] x = d.x;
+            double[] y = d.y;
+            double[] vx = d.vx;
+            double[] vy = d.vy;
+            double[] clock = d.t;
+            double[] radius = d.radius;
+            double vxi = vx[i];
+            double vyi = vy[i];
+            double xi = x[i] + vxi * (now - clock[i]);
+            double yi = y[i] + vyi * (now - clock[i]);
+            double ri = radius[i];
+            for (int k = 0; k < m; k++) {
+                double ox = xi - visitShiftX[k];
+                double oy = yi - visitShiftY[k];
+                for (int j = cellHead[visitCell[k]]; j != NIL; j = cellNext[j]) {
+                    if (j != i) {
+                        double dt = now - clock[j];
+                        double vxj = vx[j];
+                        double vyj = vy[j];
+                        double t = PairLaw.timeToContact(x[j] + vxj * dt - ox, y[j] + vyj * dt - oy,
+                                vxj - vxi, vyj - vyi, ri + radius[j]);
+                        if (t < best) {
+                            best = t;
+                            bestP = j;
+                        }
                     }
                 }
             }
         }
-        predictions++;
-        return schedule(i, now, best, bestP, cross, ck);
+        found = best;
+        foundP = bestP;
     }
 
     private double schedule(int i, double now, double best, int bestP, double cross, byte ck) {
