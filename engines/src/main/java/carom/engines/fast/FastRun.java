@@ -56,10 +56,11 @@ import java.util.Map;
  * </ul>
  *
  * <h2>Layout</h2>
- * Discs are renumbered along a Morton curve of their initial cells (neighbours close in memory);
- * during the run {@code d.species[k]} holds internal disc k's original id (no physics reads species),
- * saving a permutation array; the final state is copied back in original id order. Per-disc state is
- * flat primitive arrays; no allocation per event.
+ * Discs are renumbered along a Morton curve of their initial cells (neighbours close in memory). The
+ * permutation is not kept: it is recomputed from the scene for the final state (copied back in
+ * original id order) and for error messages. During the run {@code d.species[k]} holds disc k's
+ * collision counter (no physics reads species), and each disc's cell and event kind share one int.
+ * Per-disc state is flat primitive arrays; no allocation per event.
  */
 final class FastRun {
     private static final int PRESSURE_BLOCKS = 20;
@@ -74,8 +75,12 @@ final class FastRun {
     /** Candidate codes: j >= 0 a disc, -1 - w wall w, NONE nothing. */
     private static final int NONE = Integer.MIN_VALUE;
     private static final int NIL = -1;
+    private static final int AXIS_BITS = 14;
+    private static final int AXIS_MASK = (1 << AXIS_BITS) - 1;
+    private static final int CELL_MASK = (1 << 2 * AXIS_BITS) - 1;
+    private static final int KIND_SHIFT = 2 * AXIS_BITS;
     /** Calendar span = SPAN_MEANS mean event delays; clocks re-anchored every RESYNC_SPANS spans. */
-    private static final double SPAN_MEANS = 4;
+    private static final double SPAN_MEANS = Double.parseDouble(System.getProperty("spanMeans", "4"));
     private static final double RESYNC_SPANS = 4;
     private static final double INF = Double.POSITIVE_INFINITY;
 
@@ -107,7 +112,10 @@ final class FastRun {
     private final double height;
     private final int[] cellHead;
     private final int[] cellNext;
-    /** Each disc's logical cell as {@code row << 16 | col} (no division on hot paths; axes <= 65535 cells). */
+    /**
+     * Each disc's logical cell and the kind of its scheduled event, {@code kind << 28 | row << 14 | col}
+     * (no division on hot paths; axes have at most {@link #AXIS_MASK} cells).
+     */
     private final int[] cellOf;
     /** Re-predict the whole neighbourhood after a crossing (gravity with fixed discs; small grids). */
     private final boolean fullOnCross;
@@ -127,12 +135,14 @@ final class FastRun {
      */
     private final boolean straightImages;
 
-    // Events: time in the queue; kind, best candidate and its counter at prediction here.
+    // Events: time in the queue, kind in cellOf; best candidate and its counter at prediction here.
     private final CalendarQueue queue;
-    private final byte[] kind;
     private final int[] partner;
     private final int[] partnerCount;
-    /** Velocity changes of each disc: a prediction against j is valid while count[j] is unchanged. */
+    /**
+     * Velocity changes of each disc ({@code d.species}): a prediction against j is valid while
+     * count[j] is unchanged.
+     */
     private final int[] count;
 
     private double epoch;
@@ -147,10 +157,16 @@ final class FastRun {
     private long resyncs;
     /** Side through which the last {@link #crossing} leaves (a crossing kind). */
     private byte crossKind;
-    /** Cells the next {@link #scan} visits (row-major index) and the image shift of their discs. */
+    /** Row-major offsets of an interior cell's 3x3 neighbourhood, and of the line ahead per crossing kind. */
+    private final int[] around;
+    private final int[][] ahead;
+    private static final double[] NO_SHIFT = new double[9];
+    /** Cells a border cell's {@link #scan} visits (row-major index) and the image shift of their discs. */
     private final int[] visitCell = new int[9];
     private final double[] visitShiftX = new double[9];
     private final double[] visitShiftY = new double[9];
+    /** Scene id of each internal disc, built only for an error message ({@link #sceneId}). */
+    private int[] sceneIds;
     /** Earliest event found so far by the prediction under way, and its candidate code. */
     private double found;
     private int foundP;
@@ -173,7 +189,7 @@ final class FastRun {
         this.audit = Boolean.parseBoolean(options.tunables().getOrDefault("auditEnergy", "false")) ? EnergyAudit.forScene(scene) : null;
         this.virial = periodic ? new VirialAccumulator(0, until, PRESSURE_BLOCKS) : null;
         this.progress = options.progress();
-        this.stallGuard = new StallGuard(scene);
+        this.stallGuard = new StallGuard(scene, this::sceneId);
         this.energyStart = Observables.kineticEnergy(src);
         this.momentumStart = Observables.momentum(src);
 
@@ -192,8 +208,8 @@ final class FastRun {
             r = Math.max(1, (long) (r / shrink));
         }
         // Coarser cells stay valid (only wider than needed): cap each axis so (row, col) packs in an int.
-        this.cols = (int) Math.min(c, 0xFFFF);
-        this.rows = (int) Math.min(r, 0xFFFF);
+        this.cols = (int) Math.min(c, AXIS_MASK);
+        this.rows = (int) Math.min(r, AXIS_MASK);
         this.cellW = width / cols;
         this.cellH = height / rows;
         double maxDiameter = 2 * src.maxRadius();
@@ -202,6 +218,12 @@ final class FastRun {
         this.straightImages = flight instanceof Flight.Straight && recheckX == 0 && recheckY == 0;
         this.fullOnCross = (acceleration > 0 && scene.hasFixedDiscs()) || recheckX > 0 || recheckY > 0;
         this.cellHead = new int[cols * rows];
+        this.around = new int[] {-cols - 1, -cols, -cols + 1, -1, 0, 1, cols - 1, cols, cols + 1};
+        this.ahead = new int[5][];
+        ahead[CROSS_LEFT] = new int[] {-cols - 1, -1, cols - 1};
+        ahead[CROSS_RIGHT] = new int[] {-cols + 1, 1, cols + 1};
+        ahead[CROSS_DOWN] = new int[] {-cols - 1, -cols, -cols + 1};
+        ahead[CROSS_UP] = new int[] {cols - 1, cols, cols + 1};
         this.cellNext = new int[n];
         this.cellOf = new int[n];
         Arrays.fill(cellHead, NIL);
@@ -216,23 +238,21 @@ final class FastRun {
             d.vy[k] = src.vy[o];
             d.radius[k] = src.radius[o];
             d.invMass[k] = src.invMass[o];
-            d.species[k] = o;
         }
         for (int k = n - 1; k >= 0; k--) {
             int row = rowOf(d.y[k]);
             int col = colOf(d.x[k]);
             int cell = row * cols + col;
-            cellOf[k] = row << 16 | col;
+            cellOf[k] = row << AXIS_BITS | col;
             cellNext[k] = cellHead[cell];
             cellHead[cell] = k;
         }
 
-        int buckets = Integer.highestOneBit(Math.max(64, n / 2 - 1)) << 1;
+        int buckets = Integer.highestOneBit(Math.max(64, (int) (n * Double.parseDouble(System.getProperty("bpd", "0.5"))) - 1)) << 1;
         this.queue = new CalendarQueue(n, buckets);
-        this.kind = new byte[n];
         this.partner = new int[n];
         this.partnerCount = new int[n];
-        this.count = new int[n];
+        this.count = d.species;
         Arrays.fill(partner, NONE);
     }
 
@@ -319,6 +339,7 @@ final class FastRun {
         counters.put("staleEvents", staleEvents);
         counters.put("predictions", predictions);
         counters.put("resyncs", resyncs);
+        counters.put("bytes", bytes());
         counters.put("bytesPerDisc", n == 0 ? 0 : Math.round((double) bytes() / n));
         return new RunResult("fast", true, out, until, pairCollisions, wallCollisions, events,
                 energyStart, energyEnd, momentumStart, Observables.momentum(out), pressure, 0, seconds,
@@ -327,9 +348,18 @@ final class FastRun {
 
     /** Heap held by this run's per-disc and per-cell arrays, in bytes. */
     private long bytes() {
-        long perDiscDoubles = 7L * 8 * n; // x, y, vx, vy, t, radius, invMass
-        long discs = perDiscDoubles + 4L * n; // species (holds the original id)
-        return discs + queue.bytes() + n + 4L * n * 3 + 4L * n * 2 + 4L * cellHead.length;
+        long discs = 7L * 8 * n + 4L * n; // x, y, vx, vy, t, radius, invMass; species (the counter)
+        long events = 4L * n * 2; // partner, partnerCount
+        long cells = 4L * n * 2 + 4L * cellHead.length; // cellNext, cellOf; heads
+        return discs + events + cells + queue.bytes();
+    }
+
+    /** The scene's id of internal disc k: the Morton order again, from the scene's initial state. */
+    private int sceneId(int k) {
+        if (sceneIds == null) {
+            sceneIds = mortonOrder(scene.newDiscs());
+        }
+        return sceneIds[k];
     }
 
     private void loop() {
@@ -352,9 +382,8 @@ final class FastRun {
             queue.pollTop();
             events++;
             int other = partner[i];
-            stallGuard.event(epoch + now, d.species[i],
-                    kind[i] != HIT ? StallGuard.CELL_SIDE : (other >= 0 ? d.species[other] : other));
-            byte k = kind[i];
+            byte k = (byte) (cellOf[i] >>> KIND_SHIFT);
+            stallGuard.event(epoch + now, i, k != HIT ? StallGuard.CELL_SIDE : other);
             if (k == RECHECK) {
                 flight.advance(d, i, now);
                 queue.insert(i, predictFull(i, now));
@@ -391,7 +420,7 @@ final class FastRun {
         boolean bMobile = d.invMass[b] > 0;
         if (gravity && !bMobile) {
             double dist = Math.sqrt(dx * dx + dy * dy);
-            stallGuard.pegContact(abs, d.species[a], d.species[b], dx / dist, dy / dist, d.vx[a], d.vy[a], dist);
+            stallGuard.pegContact(abs, a, b, dx / dist, dy / dist, d.vx[a], d.vy[a], dist);
         }
         double w = PairLaw.collide(d, a, b, dx, dy, e);
         pairCollisions++;
@@ -419,7 +448,7 @@ final class FastRun {
         flight.advance(d, i, now);
         double e = restitution.wall(i, abs);
         if (gravity) {
-            stallGuard.wallContact(abs, d.species[i], wall, d.vx[i], d.vy[i]);
+            stallGuard.wallContact(abs, i, wall, d.vx[i], d.vy[i]);
         }
         boundary.reflect(d, i, wall, e);
         restitution.collided(i, abs);
@@ -436,8 +465,8 @@ final class FastRun {
         crossings++;
         flight.advance(d, i, now);
         int packed = cellOf[i];
-        int col = packed & 0xFFFF;
-        int row = packed >>> 16;
+        int col = packed & AXIS_MASK;
+        int row = (packed >>> AXIS_BITS) & AXIS_MASK;
         int old = row * cols + col;
         switch (k) {
             case CROSS_LEFT -> {
@@ -476,7 +505,7 @@ final class FastRun {
             cellNext[h] = cellNext[i];
         }
         int cell = row * cols + col;
-        cellOf[i] = row << 16 | col;
+        cellOf[i] = row << AXIS_BITS | col;
         cellNext[i] = cellHead[cell];
         cellHead[cell] = i;
         queue.insert(i, fullOnCross ? predictFull(i, now) : predictAfterCrossing(i, now, k, col, row));
@@ -488,8 +517,8 @@ final class FastRun {
      */
     private double crossing(int i, double now) {
         int packed = cellOf[i];
-        int col = packed & 0xFFFF;
-        int row = packed >>> 16;
+        int col = packed & AXIS_MASK;
+        int row = (packed >>> AXIS_BITS) & AXIS_MASK;
         double loX = col > 0 ? col * cellW : (periodic ? 0 : -INF);
         double hiX = col < cols - 1 ? (col + 1) * cellW : (periodic ? width : INF);
         double loY = row > 0 ? row * cellH : (periodic ? 0 : -INF);
@@ -547,15 +576,19 @@ final class FastRun {
         found = best;
         foundP = bestP;
         int packed = cellOf[i];
-        int col = packed & 0xFFFF;
-        int row = packed >>> 16;
-        int m = 0;
-        for (int dr = -1; dr <= 1; dr++) {
-            for (int dc = -1; dc <= 1; dc++) {
-                m = visit(col + dc, row + dr, m);
+        int col = packed & AXIS_MASK;
+        int row = (packed >>> AXIS_BITS) & AXIS_MASK;
+        if (col > 0 && col < cols - 1 && row > 0 && row < rows - 1) {
+            scan(i, now, now + cross, row * cols + col, around, NO_SHIFT, NO_SHIFT, 9);
+        } else {
+            int m = 0;
+            for (int dr = -1; dr <= 1; dr++) {
+                for (int dc = -1; dc <= 1; dc++) {
+                    m = visit(col + dc, row + dr, m);
+                }
             }
+            scan(i, now, now + cross, 0, visitCell, visitShiftX, visitShiftY, m);
         }
-        scan(i, now, now + cross, m);
         predictions++;
         return schedule(i, now, found, foundP, cross, ck);
     }
@@ -582,20 +615,24 @@ final class FastRun {
         found = best;
         foundP = best == INF ? NONE : bestP;
         // The new line of cells: one column (or row) further on, three cells across.
-        int dc = k == CROSS_RIGHT ? 1 : (k == CROSS_LEFT ? -1 : 0);
-        int dr = k == CROSS_UP ? 1 : (k == CROSS_DOWN ? -1 : 0);
-        int m = 0;
-        for (int s = -1; s <= 1; s++) {
-            m = visit(col + dc + (dc == 0 ? s : 0), row + dr + (dr == 0 ? s : 0), m);
+        if (col > 0 && col < cols - 1 && row > 0 && row < rows - 1) {
+            scan(i, now, horizon, row * cols + col, ahead[k], NO_SHIFT, NO_SHIFT, 3);
+        } else {
+            int dc = k == CROSS_RIGHT ? 1 : (k == CROSS_LEFT ? -1 : 0);
+            int dr = k == CROSS_UP ? 1 : (k == CROSS_DOWN ? -1 : 0);
+            int m = 0;
+            for (int s = -1; s <= 1; s++) {
+                m = visit(col + dc + (dc == 0 ? s : 0), row + dr + (dr == 0 ? s : 0), m);
+            }
+            scan(i, now, horizon, 0, visitCell, visitShiftX, visitShiftY, m);
         }
-        scan(i, now, horizon, m);
         predictions++;
         return schedule(i, now, found, foundP, cross, ck);
     }
 
     /**
-     * Appends cell (c, r), given unwrapped, to the cells the next {@link #scan} visits, and returns the
-     * new count: outside a walled box there is nothing; in a periodic box the cell wraps and its discs
+     * Appends cell (c, r), given unwrapped, to the cells a border cell's {@link #scan} visits, and
+     * returns the new count: outside a walled box there is nothing; in a periodic box the cell wraps and its discs
      * are seen shifted by one box length (their nearest image whenever the axis has at least 4 cells,
      * since positions stay within rounding of their logical cells).
      */
@@ -622,13 +659,17 @@ final class FastRun {
         return m + 1;
     }
 
-    /** Lowers {@link #found} to disc i's earliest contact with a disc of the first m visited cells. */
-    private void scan(int i, double now, double horizon, int m) {
+    /**
+     * Lowers {@link #found} to disc i's earliest contact with a disc of cells {@code base + cells[k]},
+     * k < m, whose discs are seen shifted by (shiftX[k], shiftY[k]).
+     */
+    private void scan(int i, double now, double horizon, int base, int[] cells, double[] shiftX, double[] shiftY,
+                      int m) {
         double best = found;
         int bestP = foundP;
         if (!straightImages) {
             for (int k = 0; k < m; k++) {
-                for (int j = cellHead[visitCell[k]]; j != NIL; j = cellNext[j]) {
+                for (int j = cellHead[base + cells[k]]; j != NIL; j = cellNext[j]) {
                     if (j != i) {
                         double t = flight.timeToContact(d, i, j, now, horizon, boundary);
                         if (t < best) {
@@ -652,9 +693,9 @@ final class FastRun {
             double yi = y[i] + vyi * (now - clock[i]);
             double ri = radius[i];
             for (int k = 0; k < m; k++) {
-                double ox = xi - visitShiftX[k];
-                double oy = yi - visitShiftY[k];
-                for (int j = cellHead[visitCell[k]]; j != NIL; j = cellNext[j]) {
+                double ox = xi - shiftX[k];
+                double oy = yi - shiftY[k];
+                for (int j = cellHead[base + cells[k]]; j != NIL; j = cellNext[j]) {
                     if (j != i) {
                         double dt = now - clock[j];
                         double vxj = vx[j];
@@ -677,10 +718,10 @@ final class FastRun {
         partner[i] = bestP;
         partnerCount[i] = bestP >= 0 ? count[bestP] : 0;
         if (cross < best) {
-            kind[i] = ck;
+            cellOf[i] = (cellOf[i] & CELL_MASK) | ck << KIND_SHIFT;
             return now + cross;
         }
-        kind[i] = HIT;
+        cellOf[i] &= CELL_MASK;
         return best == INF ? INF : now + best;
     }
 
@@ -740,9 +781,10 @@ final class FastRun {
     /** Every disc at {@code until}, in original id order, periodic positions wrapped into the box. */
     private Discs finalState() {
         Discs out = scene.newDiscs();
+        int[] order = mortonOrder(out);
         for (int k = 0; k < n; k++) {
             flight.advance(d, k, untilLocal);
-            int o = d.species[k];
+            int o = order[k];
             out.x[o] = boundary.wrapX(d.x[k]);
             out.y[o] = boundary.wrapY(d.y[k]);
             out.vx[o] = d.vx[k];
