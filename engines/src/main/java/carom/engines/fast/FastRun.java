@@ -58,9 +58,12 @@ import java.util.Map;
  * <h2>Layout</h2>
  * Discs are renumbered along a Morton curve of their initial cells (neighbours close in memory). The
  * permutation is not kept: it is recomputed from the scene for the final state (copied back in
- * original id order) and for error messages. During the run {@code d.species[k]} holds disc k's
- * collision counter (no physics reads species), and each disc's cell and event kind share one int.
- * Per-disc state is flat primitive arrays; no allocation per event.
+ * original id order) and for error messages. A disc's kinematics are one record of a flat array (x,
+ * y, vx, vy, clock, and radius and inverse mass unless all discs share them), so a candidate costs
+ * one or two cache lines, not one per quantity: at large N the run is bound by memory latency. Core
+ * physics that takes {@link Discs} sees discs through a two-slot window ({@link #pair}); straight
+ * flight, the common case, is inlined. Each disc's cell and event kind share one int. No allocation
+ * per event.
  */
 final class FastRun {
     private static final int PRESSURE_BLOCKS = 20;
@@ -87,7 +90,23 @@ final class FastRun {
     private final Scene scene;
     private final int n;
     private final double until;
-    private final Discs d;
+    /** Disc records of {@link #stride} doubles: X, Y, VX, VY, T (clock), then R, IM if per disc. */
+    private final double[] rec;
+    private final int stride;
+    private static final int X = 0;
+    private static final int Y = 1;
+    private static final int VX = 2;
+    private static final int VY = 3;
+    private static final int T = 4;
+    private static final int R = 5;
+    private static final int IM = 6;
+    /** Radius and inverse mass of every disc when all share them (then not in the records). */
+    private final double sharedRadius;
+    private final double sharedInvMass;
+    /** Slots 0 and 1: discs copied in for core physics that works on {@link Discs}. */
+    private final Discs pair = new Discs(2);
+    /** Straight flight: advance and predictions are inlined on the records. */
+    private final boolean straight;
     private final Flight flight;
     private final Boundary boundary;
     private final Boundary.Walls walls;
@@ -139,10 +158,7 @@ final class FastRun {
     private final CalendarQueue queue;
     private final int[] partner;
     private final int[] partnerCount;
-    /**
-     * Velocity changes of each disc ({@code d.species}): a prediction against j is valid while
-     * count[j] is unchanged.
-     */
+    /** Velocity changes of each disc: a prediction against j is valid while count[j] is unchanged. */
     private final int[] count;
 
     private double epoch;
@@ -215,7 +231,8 @@ final class FastRun {
         double maxDiameter = 2 * src.maxRadius();
         this.recheckX = periodic && cols < 4 ? 0.5 * (0.5 * width - maxDiameter) : 0;
         this.recheckY = periodic && rows < 4 ? 0.5 * (0.5 * height - maxDiameter) : 0;
-        this.straightImages = flight instanceof Flight.Straight && recheckX == 0 && recheckY == 0;
+        this.straight = flight instanceof Flight.Straight;
+        this.straightImages = straight && recheckX == 0 && recheckY == 0;
         this.fullOnCross = (acceleration > 0 && scene.hasFixedDiscs()) || recheckX > 0 || recheckY > 0;
         this.cellHead = new int[cols * rows];
         this.around = new int[] {-cols - 1, -cols, -cols + 1, -1, 0, 1, cols - 1, cols, cols + 1};
@@ -228,20 +245,30 @@ final class FastRun {
         this.cellOf = new int[n];
         Arrays.fill(cellHead, NIL);
 
-        this.d = new Discs(n);
+        boolean shared = true;
+        for (int i = 1; i < n && shared; i++) {
+            shared = src.radius[i] == src.radius[0] && src.invMass[i] == src.invMass[0];
+        }
+        this.stride = shared ? R : IM + 1;
+        this.sharedRadius = shared && n > 0 ? src.radius[0] : Double.NaN;
+        this.sharedInvMass = shared && n > 0 ? src.invMass[0] : Double.NaN;
+        this.rec = new double[Math.multiplyExact(n, stride)];
         int[] order = mortonOrder(src);
         for (int k = 0; k < n; k++) {
             int o = order[k];
-            d.x[k] = src.x[o];
-            d.y[k] = src.y[o];
-            d.vx[k] = src.vx[o];
-            d.vy[k] = src.vy[o];
-            d.radius[k] = src.radius[o];
-            d.invMass[k] = src.invMass[o];
+            int at = k * stride;
+            rec[at + X] = src.x[o];
+            rec[at + Y] = src.y[o];
+            rec[at + VX] = src.vx[o];
+            rec[at + VY] = src.vy[o];
+            if (!shared) {
+                rec[at + R] = src.radius[o];
+                rec[at + IM] = src.invMass[o];
+            }
         }
         for (int k = n - 1; k >= 0; k--) {
-            int row = rowOf(d.y[k]);
-            int col = colOf(d.x[k]);
+            int row = rowOf(rec[k * stride + Y]);
+            int col = colOf(rec[k * stride + X]);
             int cell = row * cols + col;
             cellOf[k] = row << AXIS_BITS | col;
             cellNext[k] = cellHead[cell];
@@ -252,7 +279,7 @@ final class FastRun {
         this.queue = new CalendarQueue(n, buckets);
         this.partner = new int[n];
         this.partnerCount = new int[n];
-        this.count = d.species;
+        this.count = new int[n];
         Arrays.fill(partner, NONE);
     }
 
@@ -323,7 +350,7 @@ final class FastRun {
         long started = System.nanoTime();
         double[] t = queue.time;
         for (int i = 0; i < n; i++) {
-            if (d.invMass[i] > 0) {
+            if (invMass(i) > 0) {
                 t[i] = predictFull(i, 0);
             }
         }
@@ -348,10 +375,72 @@ final class FastRun {
 
     /** Heap held by this run's per-disc and per-cell arrays, in bytes. */
     private long bytes() {
-        long discs = 7L * 8 * n + 4L * n; // x, y, vx, vy, t, radius, invMass; species (the counter)
-        long events = 4L * n * 2; // partner, partnerCount
+        long discs = 8L * rec.length;
+        long events = 4L * n * 3; // partner, partnerCount, count
         long cells = 4L * n * 2 + 4L * cellHead.length; // cellNext, cellOf; heads
         return discs + events + cells + queue.bytes();
+    }
+
+    private double radius(int i) {
+        return stride > R ? rec[i * stride + R] : sharedRadius;
+    }
+
+    private double invMass(int i) {
+        return stride > IM ? rec[i * stride + IM] : sharedInvMass;
+    }
+
+    /** Copies disc i into slot {@code slot} of {@link #pair}. */
+    private void load(int i, int slot) {
+        int at = i * stride;
+        pair.x[slot] = rec[at + X];
+        pair.y[slot] = rec[at + Y];
+        pair.vx[slot] = rec[at + VX];
+        pair.vy[slot] = rec[at + VY];
+        pair.t[slot] = rec[at + T];
+        pair.radius[slot] = radius(i);
+        pair.invMass[slot] = invMass(i);
+    }
+
+    /** Copies slot {@code slot} of {@link #pair} back into disc i's motion. */
+    private void store(int i, int slot) {
+        int at = i * stride;
+        rec[at + X] = pair.x[slot];
+        rec[at + Y] = pair.y[slot];
+        rec[at + VX] = pair.vx[slot];
+        rec[at + VY] = pair.vy[slot];
+        rec[at + T] = pair.t[slot];
+    }
+
+    /** Moves disc i to local {@code time} (its clock becomes {@code time}). */
+    private void advance(int i, double time) {
+        if (straight) {
+            // Flight.Straight.advance on the record.
+            int at = i * stride;
+            double dt = time - rec[at + T];
+            rec[at + X] += rec[at + VX] * dt;
+            rec[at + Y] += rec[at + VY] * dt;
+            rec[at + T] = time;
+        } else {
+            load(i, 0);
+            flight.advance(pair, 0, time);
+            store(i, 0);
+        }
+    }
+
+    /** Every disc as {@link Discs} (the energy audit's test mode only: O(N) per call). */
+    private Discs snapshot() {
+        Discs all = new Discs(n);
+        for (int i = 0; i < n; i++) {
+            int at = i * stride;
+            all.x[i] = rec[at + X];
+            all.y[i] = rec[at + Y];
+            all.vx[i] = rec[at + VX];
+            all.vy[i] = rec[at + VY];
+            all.t[i] = rec[at + T];
+            all.radius[i] = radius(i);
+            all.invMass[i] = invMass(i);
+        }
+        return all;
     }
 
     /** The scene's id of internal disc k: the Morton order again, from the scene's initial state. */
@@ -385,7 +474,7 @@ final class FastRun {
             byte k = (byte) (cellOf[i] >>> KIND_SHIFT);
             stallGuard.event(epoch + now, i, k != HIT ? StallGuard.CELL_SIDE : other);
             if (k == RECHECK) {
-                flight.advance(d, i, now);
+                advance(i, now);
                 queue.insert(i, predictFull(i, now));
             } else if (k != HIT) {
                 crossCell(i, now, k);
@@ -394,7 +483,7 @@ final class FastRun {
                 if (p >= 0) {
                     if (count[p] != partnerCount[i]) {
                         staleEvents++;
-                        flight.advance(d, i, now);
+                        advance(i, now);
                         queue.insert(i, predictFull(i, now));
                     } else {
                         collidePair(i, p, now);
@@ -412,17 +501,23 @@ final class FastRun {
 
     private void collidePair(int a, int b, double now) {
         double abs = epoch + now;
-        flight.advance(d, a, now);
-        flight.advance(d, b, now);
-        double dx = boundary.separationX(d.x[b] - d.x[a]);
-        double dy = boundary.separationY(d.y[b] - d.y[a]);
+        advance(a, now);
+        advance(b, now);
+        int at = a * stride;
+        int bt = b * stride;
+        double dx = boundary.separationX(rec[bt + X] - rec[at + X]);
+        double dy = boundary.separationY(rec[bt + Y] - rec[at + Y]);
         double e = restitution.pair(a, b, abs);
-        boolean bMobile = d.invMass[b] > 0;
+        boolean bMobile = invMass(b) > 0;
         if (gravity && !bMobile) {
             double dist = Math.sqrt(dx * dx + dy * dy);
-            stallGuard.pegContact(abs, a, b, dx / dist, dy / dist, d.vx[a], d.vy[a], dist);
+            stallGuard.pegContact(abs, a, b, dx / dist, dy / dist, rec[at + VX], rec[at + VY], dist);
         }
-        double w = PairLaw.collide(d, a, b, dx, dy, e);
+        load(a, 0);
+        load(b, 1);
+        double w = PairLaw.collide(pair, 0, 1, dx, dy, e);
+        store(a, 0);
+        store(b, 1);
         pairCollisions++;
         restitution.collided(a, abs);
         count[a]++;
@@ -434,7 +529,7 @@ final class FastRun {
             virial.add(abs, w);
         }
         if (audit != null) {
-            audit.check(d, flight, now, abs);
+            audit.check(snapshot(), flight, now, abs);
         }
         queue.insert(a, predictFull(a, now));
         if (bMobile) {
@@ -445,17 +540,19 @@ final class FastRun {
 
     private void collideWall(int i, int wall, double now) {
         double abs = epoch + now;
-        flight.advance(d, i, now);
+        advance(i, now);
         double e = restitution.wall(i, abs);
+        load(i, 0);
         if (gravity) {
-            stallGuard.wallContact(abs, i, wall, d.vx[i], d.vy[i]);
+            stallGuard.wallContact(abs, i, wall, pair.vx[0], pair.vy[0]);
         }
-        boundary.reflect(d, i, wall, e);
+        boundary.reflect(pair, 0, wall, e);
+        store(i, 0);
         restitution.collided(i, abs);
         count[i]++;
         wallCollisions++;
         if (audit != null) {
-            audit.check(d, flight, now, abs);
+            audit.check(snapshot(), flight, now, abs);
         }
         queue.insert(i, predictFull(i, now));
     }
@@ -463,7 +560,7 @@ final class FastRun {
     /** Moves disc i into the neighbouring cell through side {@code k} and re-predicts it. */
     private void crossCell(int i, double now, byte k) {
         crossings++;
-        flight.advance(d, i, now);
+        advance(i, now);
         int packed = cellOf[i];
         int col = packed & AXIS_MASK;
         int row = (packed >>> AXIS_BITS) & AXIS_MASK;
@@ -472,25 +569,25 @@ final class FastRun {
             case CROSS_LEFT -> {
                 if (--col < 0) {
                     col = cols - 1;
-                    d.x[i] += width;
+                    rec[i * stride + X] += width;
                 }
             }
             case CROSS_RIGHT -> {
                 if (++col == cols) {
                     col = 0;
-                    d.x[i] -= width;
+                    rec[i * stride + X] -= width;
                 }
             }
             case CROSS_DOWN -> {
                 if (--row < 0) {
                     row = rows - 1;
-                    d.y[i] += height;
+                    rec[i * stride + Y] += height;
                 }
             }
             default -> {
                 if (++row == rows) {
                     row = 0;
-                    d.y[i] -= height;
+                    rec[i * stride + Y] -= height;
                 }
             }
         }
@@ -512,8 +609,8 @@ final class FastRun {
     }
 
     /**
-     * Time until disc i (clock {@code now}) leaves its cell; sets {@link #crossKind}. Outer sides of a
-     * walled box are at infinity: the walls turn the disc back first.
+     * Time until disc i (clock {@code now}, loaded in slot 0) leaves its cell; sets {@link #crossKind}.
+     * Outer sides of a walled box are at infinity: the walls turn the disc back first.
      */
     private double crossing(int i, double now) {
         int packed = cellOf[i];
@@ -523,17 +620,17 @@ final class FastRun {
         double hiX = col < cols - 1 ? (col + 1) * cellW : (periodic ? width : INF);
         double loY = row > 0 ? row * cellH : (periodic ? 0 : -INF);
         double hiY = row < rows - 1 ? (row + 1) * cellH : (periodic ? height : INF);
-        double tx = flight.timeToLeaveX(d, i, now, loX, hiX);
-        double ty = flight.timeToLeaveY(d, i, now, loY, hiY);
+        double tx = flight.timeToLeaveX(pair, 0, now, loX, hiX);
+        double ty = flight.timeToLeaveY(pair, 0, now, loY, hiY);
         if (recheckX > 0 || recheckY > 0) {
             double tr = INF;
             if (recheckX > 0) {
-                double x = flight.x(d, i, now);
-                tr = flight.timeToLeaveX(d, i, now, x - recheckX, x + recheckX);
+                double x = flight.x(pair, 0, now);
+                tr = flight.timeToLeaveX(pair, 0, now, x - recheckX, x + recheckX);
             }
             if (recheckY > 0) {
-                double y = flight.y(d, i, now);
-                tr = Math.min(tr, flight.timeToLeaveY(d, i, now, y - recheckY, y + recheckY));
+                double y = flight.y(pair, 0, now);
+                tr = Math.min(tr, flight.timeToLeaveY(pair, 0, now, y - recheckY, y + recheckY));
             }
             if (tr < tx && tr < ty) {
                 crossKind = RECHECK;
@@ -544,13 +641,13 @@ final class FastRun {
             if (tx == INF) {
                 return INF;
             }
-            double v = flight.vx(d, i, now + tx);
-            boolean right = v > 0 || (v == 0 && flight.x(d, i, now + tx) > 0.5 * (loX + hiX));
+            double v = flight.vx(pair, 0, now + tx);
+            boolean right = v > 0 || (v == 0 && flight.x(pair, 0, now + tx) > 0.5 * (loX + hiX));
             crossKind = right ? CROSS_RIGHT : CROSS_LEFT;
             return tx;
         }
-        double v = flight.vy(d, i, now + ty);
-        boolean up = v > 0 || (v == 0 && flight.y(d, i, now + ty) > 0.5 * (loY + hiY));
+        double v = flight.vy(pair, 0, now + ty);
+        boolean up = v > 0 || (v == 0 && flight.y(pair, 0, now + ty) > 0.5 * (loY + hiY));
         crossKind = up ? CROSS_UP : CROSS_DOWN;
         return ty;
     }
@@ -560,11 +657,12 @@ final class FastRun {
      * disc in its 3x3 neighbourhood; records kind and best candidate; returns the event's local time.
      */
     private double predictFull(int i, double now) {
+        load(i, 0);
         double best = INF;
         int bestP = NONE;
         if (walls != null) {
             for (int w = 0; w < 4; w++) {
-                double t = flight.timeToWall(d, i, w, now, walls);
+                double t = flight.timeToWall(pair, 0, w, now, walls);
                 if (t < best) {
                     best = t;
                     bestP = -1 - w;
@@ -599,6 +697,7 @@ final class FastRun {
      * saw; add the three cells that just entered its neighbourhood.
      */
     private double predictAfterCrossing(int i, double now, byte k, int col, int row) {
+        load(i, 0);
         int bestP = partner[i];
         double cross = crossing(i, now);
         byte ck = crossKind;
@@ -608,9 +707,10 @@ final class FastRun {
             if (count[bestP] != partnerCount[i]) {
                 return predictFull(i, now);
             }
-            best = flight.timeToContact(d, i, bestP, now, horizon, boundary);
+            load(bestP, 1);
+            best = flight.timeToContact(pair, 0, 1, now, horizon, boundary);
         } else if (bestP != NONE) {
-            best = flight.timeToWall(d, i, -1 - bestP, now, walls);
+            best = flight.timeToWall(pair, 0, -1 - bestP, now, walls);
         }
         found = best;
         foundP = best == INF ? NONE : bestP;
@@ -671,7 +771,8 @@ final class FastRun {
             for (int k = 0; k < m; k++) {
                 for (int j = cellHead[base + cells[k]]; j != NIL; j = cellNext[j]) {
                     if (j != i) {
-                        double t = flight.timeToContact(d, i, j, now, horizon, boundary);
+                        load(j, 1);
+                        double t = flight.timeToContact(pair, 0, 1, now, horizon, boundary);
                         if (t < best) {
                             best = t;
                             bestP = j;
@@ -681,27 +782,27 @@ final class FastRun {
             }
         } else {
             // Straight flight (Flight.Straight inlined by hand): the pair's relative motion is linear.
-            double[] x = d.x;
-            double[] y = d.y;
-            double[] vx = d.vx;
-            double[] vy = d.vy;
-            double[] clock = d.t;
-            double[] radius = d.radius;
-            double vxi = vx[i];
-            double vyi = vy[i];
-            double xi = x[i] + vxi * (now - clock[i]);
-            double yi = y[i] + vyi * (now - clock[i]);
-            double ri = radius[i];
+            double[] r = rec;
+            int st = stride;
+            boolean shared = st == R;
+            int at = i * st;
+            double vxi = r[at + VX];
+            double vyi = r[at + VY];
+            double xi = r[at + X] + vxi * (now - r[at + T]);
+            double yi = r[at + Y] + vyi * (now - r[at + T]);
+            double ri = radius(i);
+            double sigmaShared = ri + sharedRadius;
             for (int k = 0; k < m; k++) {
                 double ox = xi - shiftX[k];
                 double oy = yi - shiftY[k];
                 for (int j = cellHead[base + cells[k]]; j != NIL; j = cellNext[j]) {
                     if (j != i) {
-                        double dt = now - clock[j];
-                        double vxj = vx[j];
-                        double vyj = vy[j];
-                        double t = PairLaw.timeToContact(x[j] + vxj * dt - ox, y[j] + vyj * dt - oy,
-                                vxj - vxi, vyj - vyi, ri + radius[j]);
+                        int jt = j * st;
+                        double dt = now - r[jt + T];
+                        double vxj = r[jt + VX];
+                        double vyj = r[jt + VY];
+                        double t = PairLaw.timeToContact(r[jt + X] + vxj * dt - ox, r[jt + Y] + vyj * dt - oy,
+                                vxj - vxi, vyj - vyi, shared ? sigmaShared : ri + r[jt + R]);
                         if (t < best) {
                             best = t;
                             bestP = j;
@@ -734,8 +835,8 @@ final class FastRun {
             resyncs++;
             double[] t = queue.time;
             for (int i = 0; i < n; i++) {
-                flight.advance(d, i, now);
-                d.t[i] = 0;
+                advance(i, now);
+                rec[i * stride + T] = 0;
                 if (t[i] != INF) {
                     t[i] = Math.max(0, t[i] - now);
                 }
@@ -783,12 +884,13 @@ final class FastRun {
         Discs out = scene.newDiscs();
         int[] order = mortonOrder(out);
         for (int k = 0; k < n; k++) {
-            flight.advance(d, k, untilLocal);
+            advance(k, untilLocal);
             int o = order[k];
-            out.x[o] = boundary.wrapX(d.x[k]);
-            out.y[o] = boundary.wrapY(d.y[k]);
-            out.vx[o] = d.vx[k];
-            out.vy[o] = d.vy[k];
+            int at = k * stride;
+            out.x[o] = boundary.wrapX(rec[at + X]);
+            out.y[o] = boundary.wrapY(rec[at + Y]);
+            out.vx[o] = rec[at + VX];
+            out.vy[o] = rec[at + VY];
             out.t[o] = until;
         }
         return out;
