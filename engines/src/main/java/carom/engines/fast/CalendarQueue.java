@@ -7,8 +7,11 @@ import java.util.Arrays;
  * expected insert, remove and poll (Paul 2007, "A complexity O(1) priority queue for event driven
  * molecular dynamics simulations", J. Comput. Phys. 221, 615). Single writer, not thread-safe.
  *
- * <p>Disc i is queued iff {@code time[i]} is finite; the owner writes {@code time[i]} only through
- * {@link #insert} (or before {@link #rebuild}) and reads it freely.
+ * <p>The queue keeps no per-disc array of its own: disc i's event time and list link live in the
+ * owner's per-disc records, at {@code keys[i * keyStride + keyAt]} and {@code links[i * linkStride +
+ * linkAt]}, so that an event touches one record instead of one array per quantity. Disc i is queued
+ * iff its time is finite; the owner writes the time only through {@link #insert} (or before
+ * {@link #rebuild}) and reads it freely.
  *
  * <h2>Implementation notes</h2>
  * Time is cut into slices of {@code width}; slice s = floor(t / width), computed by a saturating
@@ -26,17 +29,23 @@ import java.util.Arrays;
  * precedes every bucket entry. After a whole round of empty slices, cur jumps to the earliest
  * queued slice, so a sparse far future costs one scan, not a walk through its slices.
  *
- * <p>Layout: one link per disc besides the time, and no back pointers (memory per disc is what
- * bounds large runs): removal walks a bucket list (a slice holds a few events) or searches the heap
- * (about as small).
+ * <p>One link per disc besides the time, and no back pointers (memory per disc is what bounds
+ * large runs): removal walks a bucket list (a slice holds a few events) or searches the heap (about
+ * as small).
  */
 final class CalendarQueue {
     private static final long MAX_SLICE = 1L << 60;
     private static final int NIL = -1;
 
-    /** Event time of each disc (local), or +Infinity when it is not queued. */
-    final double[] time;
-    private final int[] next;
+    private static final double INF = Double.POSITIVE_INFINITY;
+    private final int n;
+    /** Event times (local, +Infinity when not queued) and links: see the class comment. */
+    private final double[] keys;
+    private final int keyStride;
+    private final int keyAt;
+    private final int[] links;
+    private final int linkStride;
+    private final int linkAt;
     private final int[] head;
     private final int buckets;
     private final int mask;
@@ -49,18 +58,46 @@ final class CalendarQueue {
     /** Slices drained in a row without finding an entry. */
     private int idle;
 
-    /** @param buckets a power of two */
-    CalendarQueue(int n, int buckets) {
+    /**
+     * A queue of n discs, none queued: sets every disc's time to +Infinity.
+     *
+     * @param buckets a power of two
+     */
+    CalendarQueue(int n, int buckets, double[] keys, int keyStride, int keyAt, int[] links, int linkStride, int linkAt) {
         if (Integer.bitCount(buckets) != 1) {
             throw new IllegalArgumentException("buckets must be a power of two: " + buckets);
         }
-        this.time = new double[n];
-        this.next = new int[n];
+        this.n = n;
+        this.keys = keys;
+        this.keyStride = keyStride;
+        this.keyAt = keyAt;
+        this.links = links;
+        this.linkStride = linkStride;
+        this.linkAt = linkAt;
         this.head = new int[buckets];
         this.buckets = buckets;
         this.mask = buckets - 1;
-        Arrays.fill(time, Double.POSITIVE_INFINITY);
+        for (int i = 0; i < n; i++) {
+            keys[i * keyStride + keyAt] = INF;
+        }
         Arrays.fill(head, NIL);
+    }
+
+    /** Disc i's event time (local), or +Infinity when it is not queued. */
+    double time(int i) {
+        return keys[i * keyStride + keyAt];
+    }
+
+    private void setTime(int i, double t) {
+        keys[i * keyStride + keyAt] = t;
+    }
+
+    private int next(int i) {
+        return links[i * linkStride + linkAt];
+    }
+
+    private void setNext(int i, int j) {
+        links[i * linkStride + linkAt] = j;
     }
 
     int buckets() {
@@ -72,7 +109,7 @@ final class CalendarQueue {
     }
 
     long bytes() {
-        return 8L * time.length + 4L * next.length + 4L * head.length + 4L * heap.length;
+        return 4L * head.length + 4L * heap.length;
     }
 
     private long sliceOf(double t) {
@@ -92,8 +129,8 @@ final class CalendarQueue {
         inBuckets = 0;
         idle = 0;
         cur = sliceOf(now);
-        for (int i = 0; i < time.length; i++) {
-            if (time[i] != Double.POSITIVE_INFINITY) {
+        for (int i = 0; i < n; i++) {
+            if (time(i) != INF) {
                 place(i);
             }
         }
@@ -101,19 +138,19 @@ final class CalendarQueue {
 
     /** Queues disc i (not queued now) at time t; +Infinity leaves it unqueued. */
     void insert(int i, double t) {
-        time[i] = t;
-        if (t != Double.POSITIVE_INFINITY) {
+        setTime(i, t);
+        if (t != INF) {
             place(i);
         }
     }
 
     private void place(int i) {
-        long s = sliceOf(time[i]);
+        long s = sliceOf(time(i));
         if (s <= cur) {
             heapPush(i);
         } else {
             int b = (int) (s & mask);
-            next[i] = head[b];
+            setNext(i, head[b]);
             head[b] = i;
             inBuckets++;
         }
@@ -121,8 +158,8 @@ final class CalendarQueue {
 
     /** Unqueues disc i if it is queued. */
     void remove(int i) {
-        double t = time[i];
-        if (t == Double.POSITIVE_INFINITY) {
+        double t = time(i);
+        if (t == INF) {
             return;
         }
         if (sliceOf(t) <= cur) {
@@ -135,7 +172,7 @@ final class CalendarQueue {
             unlink((int) (sliceOf(t) & mask), i);
             inBuckets--;
         }
-        time[i] = Double.POSITIVE_INFINITY;
+        setTime(i, INF);
     }
 
     /** The disc with the earliest event (ties in any order), or -1 if none is queued. */
@@ -158,7 +195,7 @@ final class CalendarQueue {
     void pollTop() {
         int i = heap[0];
         heapRemoveAt(0);
-        time[i] = Double.POSITIVE_INFINITY;
+        setTime(i, INF);
     }
 
     /** Moves bucket b's entries of slice cur to the heap; later rounds' entries stay. */
@@ -166,13 +203,13 @@ final class CalendarQueue {
         int kept = NIL;
         int i = head[b];
         while (i != NIL) {
-            int following = next[i];
-            if (sliceOf(time[i]) <= cur) {
+            int following = next(i);
+            if (sliceOf(time(i)) <= cur) {
                 heapPush(i);
                 inBuckets--;
                 idle = 0;
             } else {
-                next[i] = kept;
+                setNext(i, kept);
                 kept = i;
             }
             i = following;
@@ -183,8 +220,8 @@ final class CalendarQueue {
     private long earliestSlice() {
         long earliest = MAX_SLICE;
         for (int b = 0; b < buckets; b++) {
-            for (int i = head[b]; i != NIL; i = next[i]) {
-                earliest = Math.min(earliest, sliceOf(time[i]));
+            for (int i = head[b]; i != NIL; i = next(i)) {
+                earliest = Math.min(earliest, sliceOf(time(i)));
             }
         }
         return earliest;
@@ -193,13 +230,13 @@ final class CalendarQueue {
     private void unlink(int list, int i) {
         int h = head[list];
         if (h == i) {
-            head[list] = next[i];
+            head[list] = next(i);
             return;
         }
-        while (next[h] != i) {
-            h = next[h];
+        while (next(h) != i) {
+            h = next(h);
         }
-        next[h] = next[i];
+        setNext(h, next(i));
     }
 
     private void heapPush(int i) {
@@ -214,8 +251,8 @@ final class CalendarQueue {
         if (k == heapSize) {
             return;
         }
-        double t = time[last];
-        if (k > 0 && time[heap[(k - 1) >>> 1]] > t) {
+        double t = time(last);
+        if (k > 0 && time(heap[(k - 1) >>> 1]) > t) {
             siftUp(k, last);
         } else {
             siftDown(k, last);
@@ -223,12 +260,12 @@ final class CalendarQueue {
     }
 
     private void siftUp(int k, int i) {
-        double t = time[i];
+        double t = time(i);
         int[] h = heap;
         while (k > 0) {
             int parent = (k - 1) >>> 1;
             int p = h[parent];
-            if (time[p] <= t) {
+            if (time(p) <= t) {
                 break;
             }
             h[k] = p;
@@ -238,19 +275,19 @@ final class CalendarQueue {
     }
 
     private void siftDown(int k, int i) {
-        double t = time[i];
+        double t = time(i);
         int[] h = heap;
         int size = heapSize;
         int half = size >>> 1;
         while (k < half) {
             int child = 2 * k + 1;
             int c = h[child];
-            double ct = time[c];
+            double ct = time(c);
             int right = child + 1;
-            if (right < size && time[h[right]] < ct) {
+            if (right < size && time(h[right]) < ct) {
                 child = right;
                 c = h[child];
-                ct = time[c];
+                ct = time(c);
             }
             if (t <= ct) {
                 break;

@@ -83,14 +83,17 @@ final class FastRun {
     private static final int CELL_MASK = (1 << 2 * AXIS_BITS) - 1;
     private static final int KIND_SHIFT = 2 * AXIS_BITS;
     /** Calendar span = SPAN_MEANS mean event delays; clocks re-anchored every RESYNC_SPANS spans. */
-    private static final double SPAN_MEANS = Double.parseDouble(System.getProperty("spanMeans", "4"));
+    private static final double SPAN_MEANS = 4;
     private static final double RESYNC_SPANS = 4;
     private static final double INF = Double.POSITIVE_INFINITY;
 
     private final Scene scene;
     private final int n;
     private final double until;
-    /** Disc records of {@link #stride} doubles: X, Y, VX, VY, T (clock), then R, IM if per disc. */
+    /**
+     * Disc records of {@link #stride} doubles: X, Y, VX, VY, T (clock), EV (scheduled event time, the
+     * queue's key), then R, IM if per disc.
+     */
     private final double[] rec;
     private final int stride;
     private static final int X = 0;
@@ -98,8 +101,9 @@ final class FastRun {
     private static final int VX = 2;
     private static final int VY = 3;
     private static final int T = 4;
-    private static final int R = 5;
-    private static final int IM = 6;
+    private static final int EV = 5;
+    private static final int R = 6;
+    private static final int IM = 7;
     /** Radius and inverse mass of every disc when all share them (then not in the records). */
     private final double sharedRadius;
     private final double sharedInvMass;
@@ -122,7 +126,7 @@ final class FastRun {
     private final double energyStart;
     private final double[] momentumStart;
 
-    // Grid: cell = row * cols + col; head[cell] -> cellNext chain.
+    // Grid: cell = row * cols + col; head[cell] -> chain through each disc's CNEXT.
     private final int cols;
     private final int rows;
     private final double cellW;
@@ -130,12 +134,21 @@ final class FastRun {
     private final double width;
     private final double height;
     private final int[] cellHead;
-    private final int[] cellNext;
     /**
-     * Each disc's logical cell and the kind of its scheduled event, {@code kind << 28 | row << 14 | col}
-     * (no division on hot paths; axes have at most {@link #AXIS_MASK} cells).
+     * Per-disc integer records of {@link #IS} ints: CELL, the logical cell and the kind of the
+     * scheduled event, {@code kind << 28 | row << 14 | col} (no division on hot paths; axes have at most
+     * {@link #AXIS_MASK} cells); PARTNER, the best candidate, and PCOUNT, its counter at prediction;
+     * COUNT, the disc's velocity changes (a prediction against j is valid while j's COUNT is
+     * unchanged); CNEXT, the next disc in the cell; QNEXT, the queue's link.
      */
-    private final int[] cellOf;
+    private final int[] ir;
+    private static final int IS = 6;
+    private static final int CELL = 0;
+    private static final int PARTNER = 1;
+    private static final int PCOUNT = 2;
+    private static final int COUNT = 3;
+    private static final int CNEXT = 4;
+    private static final int QNEXT = 5;
     /** Re-predict the whole neighbourhood after a crossing (gravity with fixed discs; small grids). */
     private final boolean fullOnCross;
     /**
@@ -154,12 +167,8 @@ final class FastRun {
      */
     private final boolean straightImages;
 
-    // Events: time in the queue, kind in cellOf; best candidate and its counter at prediction here.
+    /** Events: times in the records (EV), kinds, candidates and links in the integer records. */
     private final CalendarQueue queue;
-    private final int[] partner;
-    private final int[] partnerCount;
-    /** Velocity changes of each disc: a prediction against j is valid while count[j] is unchanged. */
-    private final int[] count;
 
     private double epoch;
     private double untilLocal;
@@ -241,8 +250,7 @@ final class FastRun {
         ahead[CROSS_RIGHT] = new int[] {-cols + 1, 1, cols + 1};
         ahead[CROSS_DOWN] = new int[] {-cols - 1, -cols, -cols + 1};
         ahead[CROSS_UP] = new int[] {cols - 1, cols, cols + 1};
-        this.cellNext = new int[n];
-        this.cellOf = new int[n];
+        this.ir = new int[Math.multiplyExact(n, IS)];
         Arrays.fill(cellHead, NIL);
 
         boolean shared = true;
@@ -270,17 +278,17 @@ final class FastRun {
             int row = rowOf(rec[k * stride + Y]);
             int col = colOf(rec[k * stride + X]);
             int cell = row * cols + col;
-            cellOf[k] = row << AXIS_BITS | col;
-            cellNext[k] = cellHead[cell];
+            ir[k * IS + CELL] = row << AXIS_BITS | col;
+            ir[k * IS + CNEXT] = cellHead[cell];
             cellHead[cell] = k;
         }
 
-        int buckets = Integer.highestOneBit(Math.max(64, (int) (n * Double.parseDouble(System.getProperty("bpd", "0.5"))) - 1)) << 1;
-        this.queue = new CalendarQueue(n, buckets);
-        this.partner = new int[n];
-        this.partnerCount = new int[n];
-        this.count = new int[n];
-        Arrays.fill(partner, NONE);
+        // A slice then holds about 5 to 8 events at the front: short bucket walks, a small heap.
+        int buckets = Integer.highestOneBit(Math.max(64, n / 2 - 1)) << 1;
+        this.queue = new CalendarQueue(n, buckets, rec, stride, EV, ir, IS, QNEXT);
+        for (int i = 0; i < n; i++) {
+            ir[i * IS + PARTNER] = NONE;
+        }
     }
 
     private static long cellsAlong(double length, double minCell) {
@@ -348,10 +356,9 @@ final class FastRun {
 
     RunResult run() {
         long started = System.nanoTime();
-        double[] t = queue.time;
         for (int i = 0; i < n; i++) {
             if (invMass(i) > 0) {
-                t[i] = predictFull(i, 0);
+                rec[i * stride + EV] = predictFull(i, 0);
             }
         }
         replan(0);
@@ -375,10 +382,7 @@ final class FastRun {
 
     /** Heap held by this run's per-disc and per-cell arrays, in bytes. */
     private long bytes() {
-        long discs = 8L * rec.length;
-        long events = 4L * n * 3; // partner, partnerCount, count
-        long cells = 4L * n * 2 + 4L * cellHead.length; // cellNext, cellOf; heads
-        return discs + events + cells + queue.bytes();
+        return 8L * rec.length + 4L * ir.length + 4L * cellHead.length + queue.bytes();
     }
 
     private double radius(int i) {
@@ -452,7 +456,6 @@ final class FastRun {
     }
 
     private void loop() {
-        double[] t = queue.time;
         untilLocal = until - epoch;
         long progressMark = 0;
         while (true) {
@@ -460,7 +463,7 @@ final class FastRun {
             if (i < 0) {
                 return;
             }
-            double now = t[i];
+            double now = queue.time(i);
             if (now > untilLocal) {
                 return;
             }
@@ -470,8 +473,8 @@ final class FastRun {
             }
             queue.pollTop();
             events++;
-            int other = partner[i];
-            byte k = (byte) (cellOf[i] >>> KIND_SHIFT);
+            int other = ir[i * IS + PARTNER];
+            byte k = (byte) (ir[i * IS + CELL] >>> KIND_SHIFT);
             stallGuard.event(epoch + now, i, k != HIT ? StallGuard.CELL_SIDE : other);
             if (k == RECHECK) {
                 advance(i, now);
@@ -479,9 +482,9 @@ final class FastRun {
             } else if (k != HIT) {
                 crossCell(i, now, k);
             } else {
-                int p = partner[i];
+                int p = ir[i * IS + PARTNER];
                 if (p >= 0) {
-                    if (count[p] != partnerCount[i]) {
+                    if (ir[p * IS + COUNT] != ir[i * IS + PCOUNT]) {
                         staleEvents++;
                         advance(i, now);
                         queue.insert(i, predictFull(i, now));
@@ -520,10 +523,10 @@ final class FastRun {
         store(b, 1);
         pairCollisions++;
         restitution.collided(a, abs);
-        count[a]++;
+        ir[a * IS + COUNT]++;
         if (bMobile) {
             restitution.collided(b, abs);
-            count[b]++;
+            ir[b * IS + COUNT]++;
         }
         if (virial != null) {
             virial.add(abs, w);
@@ -549,7 +552,7 @@ final class FastRun {
         boundary.reflect(pair, 0, wall, e);
         store(i, 0);
         restitution.collided(i, abs);
-        count[i]++;
+        ir[i * IS + COUNT]++;
         wallCollisions++;
         if (audit != null) {
             audit.check(snapshot(), flight, now, abs);
@@ -561,7 +564,7 @@ final class FastRun {
     private void crossCell(int i, double now, byte k) {
         crossings++;
         advance(i, now);
-        int packed = cellOf[i];
+        int packed = ir[i * IS + CELL];
         int col = packed & AXIS_MASK;
         int row = (packed >>> AXIS_BITS) & AXIS_MASK;
         int old = row * cols + col;
@@ -594,16 +597,16 @@ final class FastRun {
         // Unlink from the old cell (a cell holds a handful of discs) and push onto the new one.
         int h = cellHead[old];
         if (h == i) {
-            cellHead[old] = cellNext[i];
+            cellHead[old] = ir[i * IS + CNEXT];
         } else {
-            while (cellNext[h] != i) {
-                h = cellNext[h];
+            while (ir[h * IS + CNEXT] != i) {
+                h = ir[h * IS + CNEXT];
             }
-            cellNext[h] = cellNext[i];
+            ir[h * IS + CNEXT] = ir[i * IS + CNEXT];
         }
         int cell = row * cols + col;
-        cellOf[i] = row << AXIS_BITS | col;
-        cellNext[i] = cellHead[cell];
+        ir[i * IS + CELL] = row << AXIS_BITS | col;
+        ir[i * IS + CNEXT] = cellHead[cell];
         cellHead[cell] = i;
         queue.insert(i, fullOnCross ? predictFull(i, now) : predictAfterCrossing(i, now, k, col, row));
     }
@@ -613,7 +616,7 @@ final class FastRun {
      * Outer sides of a walled box are at infinity: the walls turn the disc back first.
      */
     private double crossing(int i, double now) {
-        int packed = cellOf[i];
+        int packed = ir[i * IS + CELL];
         int col = packed & AXIS_MASK;
         int row = (packed >>> AXIS_BITS) & AXIS_MASK;
         double loX = col > 0 ? col * cellW : (periodic ? 0 : -INF);
@@ -673,7 +676,7 @@ final class FastRun {
         byte ck = crossKind;
         found = best;
         foundP = bestP;
-        int packed = cellOf[i];
+        int packed = ir[i * IS + CELL];
         int col = packed & AXIS_MASK;
         int row = (packed >>> AXIS_BITS) & AXIS_MASK;
         if (col > 0 && col < cols - 1 && row > 0 && row < rows - 1) {
@@ -698,13 +701,13 @@ final class FastRun {
      */
     private double predictAfterCrossing(int i, double now, byte k, int col, int row) {
         load(i, 0);
-        int bestP = partner[i];
+        int bestP = ir[i * IS + PARTNER];
         double cross = crossing(i, now);
         byte ck = crossKind;
         double horizon = now + cross;
         double best = INF;
         if (bestP >= 0) {
-            if (count[bestP] != partnerCount[i]) {
+            if (ir[bestP * IS + COUNT] != ir[i * IS + PCOUNT]) {
                 return predictFull(i, now);
             }
             load(bestP, 1);
@@ -769,7 +772,7 @@ final class FastRun {
         int bestP = foundP;
         if (!straightImages) {
             for (int k = 0; k < m; k++) {
-                for (int j = cellHead[base + cells[k]]; j != NIL; j = cellNext[j]) {
+                for (int j = cellHead[base + cells[k]]; j != NIL; j = ir[j * IS + CNEXT]) {
                     if (j != i) {
                         load(j, 1);
                         double t = flight.timeToContact(pair, 0, 1, now, horizon, boundary);
@@ -795,7 +798,7 @@ final class FastRun {
             for (int k = 0; k < m; k++) {
                 double ox = xi - shiftX[k];
                 double oy = yi - shiftY[k];
-                for (int j = cellHead[base + cells[k]]; j != NIL; j = cellNext[j]) {
+                for (int j = cellHead[base + cells[k]]; j != NIL; j = ir[j * IS + CNEXT]) {
                     if (j != i) {
                         int jt = j * st;
                         double dt = now - r[jt + T];
@@ -816,13 +819,13 @@ final class FastRun {
     }
 
     private double schedule(int i, double now, double best, int bestP, double cross, byte ck) {
-        partner[i] = bestP;
-        partnerCount[i] = bestP >= 0 ? count[bestP] : 0;
+        ir[i * IS + PARTNER] = bestP;
+        ir[i * IS + PCOUNT] = bestP >= 0 ? ir[bestP * IS + COUNT] : 0;
         if (cross < best) {
-            cellOf[i] = (cellOf[i] & CELL_MASK) | ck << KIND_SHIFT;
+            ir[i * IS + CELL] = (ir[i * IS + CELL] & CELL_MASK) | ck << KIND_SHIFT;
             return now + cross;
         }
-        cellOf[i] &= CELL_MASK;
+        ir[i * IS + CELL] &= CELL_MASK;
         return best == INF ? INF : now + best;
     }
 
@@ -833,12 +836,12 @@ final class FastRun {
     private void resync(double now) {
         if (now > 0) {
             resyncs++;
-            double[] t = queue.time;
             for (int i = 0; i < n; i++) {
                 advance(i, now);
-                rec[i * stride + T] = 0;
-                if (t[i] != INF) {
-                    t[i] = Math.max(0, t[i] - now);
+                int at = i * stride;
+                rec[at + T] = 0;
+                if (rec[at + EV] != INF) {
+                    rec[at + EV] = Math.max(0, rec[at + EV] - now);
                 }
             }
             epoch += now;
@@ -849,12 +852,12 @@ final class FastRun {
 
     /** Sizes the calendar from the mean event delay (trimmed of far outliers) and rebuilds it. */
     private void replan(double now) {
-        double[] t = queue.time;
         double sum = 0;
         long k = 0;
         for (int i = 0; i < n; i++) {
-            if (t[i] != INF) {
-                sum += t[i] - now;
+            double t = rec[i * stride + EV];
+            if (t != INF) {
+                sum += t - now;
                 k++;
             }
         }
@@ -864,8 +867,9 @@ final class FastRun {
             sum = 0;
             k = 0;
             for (int i = 0; i < n; i++) {
-                if (t[i] - now <= cut) {
-                    sum += t[i] - now;
+                double t = rec[i * stride + EV];
+                if (t - now <= cut) {
+                    sum += t - now;
                     k++;
                 }
             }
