@@ -188,6 +188,8 @@ final class FastRun {
     private static final double[] NO_SHIFT = new double[9];
     /** Cells a border cell's {@link #scan} visits (row-major index) and the image shift of their discs. */
     private final int[] visitCell = new int[9];
+    /** The first disc of each cell a {@link #scan} visits. */
+    private final int[] heads = new int[9];
     private final double[] visitShiftX = new double[9];
     private final double[] visitShiftY = new double[9];
     /** Scene id of each internal disc, built only for an error message ({@link #sceneId}). */
@@ -612,7 +614,8 @@ final class FastRun {
     }
 
     /**
-     * Time until disc i (clock {@code now}, loaded in slot 0) leaves its cell; sets {@link #crossKind}.
+     * Time until disc i (clock {@code now}; loaded in slot 0 unless {@link #straightImages}) leaves its
+     * cell; sets {@link #crossKind} (not used when the time is infinite).
      * Outer sides of a walled box are at infinity: the walls turn the disc back first.
      */
     private double crossing(int i, double now) {
@@ -623,6 +626,23 @@ final class FastRun {
         double hiX = col < cols - 1 ? (col + 1) * cellW : (periodic ? width : INF);
         double loY = row > 0 ? row * cellH : (periodic ? 0 : -INF);
         double hiY = row < rows - 1 ? (row + 1) * cellH : (periodic ? height : INF);
+        if (straightImages) {
+            // Flight.Straight.timeToLeaveX/Y on the record; a finite time has a nonzero velocity.
+            int at = i * stride;
+            double vx = rec[at + VX];
+            double vy = rec[at + VY];
+            double dt = now - rec[at + T];
+            double x = rec[at + X] + vx * dt;
+            double y = rec[at + Y] + vy * dt;
+            double tx = vx > 0 ? Math.max(0, (hiX - x) / vx) : (vx < 0 ? Math.max(0, (loX - x) / vx) : INF);
+            double ty = vy > 0 ? Math.max(0, (hiY - y) / vy) : (vy < 0 ? Math.max(0, (loY - y) / vy) : INF);
+            if (tx <= ty) {
+                crossKind = vx > 0 ? CROSS_RIGHT : CROSS_LEFT;
+                return tx;
+            }
+            crossKind = vy > 0 ? CROSS_UP : CROSS_DOWN;
+            return ty;
+        }
         double tx = flight.timeToLeaveX(pair, 0, now, loX, hiX);
         double ty = flight.timeToLeaveY(pair, 0, now, loY, hiY);
         if (recheckX > 0 || recheckY > 0) {
@@ -660,12 +680,14 @@ final class FastRun {
      * disc in its 3x3 neighbourhood; records kind and best candidate; returns the event's local time.
      */
     private double predictFull(int i, double now) {
-        load(i, 0);
+        if (!straightImages) {
+            load(i, 0);
+        }
         double best = INF;
         int bestP = NONE;
         if (walls != null) {
             for (int w = 0; w < 4; w++) {
-                double t = flight.timeToWall(pair, 0, w, now, walls);
+                double t = wallTime(i, w, now);
                 if (t < best) {
                     best = t;
                     bestP = -1 - w;
@@ -700,7 +722,9 @@ final class FastRun {
      * saw; add the three cells that just entered its neighbourhood.
      */
     private double predictAfterCrossing(int i, double now, byte k, int col, int row) {
-        load(i, 0);
+        if (!straightImages) {
+            load(i, 0);
+        }
         int bestP = ir[i * IS + PARTNER];
         double cross = crossing(i, now);
         byte ck = crossKind;
@@ -710,10 +734,9 @@ final class FastRun {
             if (ir[bestP * IS + COUNT] != ir[i * IS + PCOUNT]) {
                 return predictFull(i, now);
             }
-            load(bestP, 1);
-            best = flight.timeToContact(pair, 0, 1, now, horizon, boundary);
+            best = contactTime(i, bestP, now, horizon);
         } else if (bestP != NONE) {
-            best = flight.timeToWall(pair, 0, -1 - bestP, now, walls);
+            best = wallTime(i, -1 - bestP, now);
         }
         found = best;
         foundP = best == INF ? NONE : bestP;
@@ -731,6 +754,34 @@ final class FastRun {
         }
         predictions++;
         return schedule(i, now, found, foundP, cross, ck);
+    }
+
+    /** {@link Flight#timeToContact} of discs i and j (i in slot 0 unless {@link #straightImages}). */
+    private double contactTime(int i, int j, double now, double horizon) {
+        if (!straightImages) {
+            load(j, 1);
+            return flight.timeToContact(pair, 0, 1, now, horizon, boundary);
+        }
+        // Flight.Straight.timeToContact on the records.
+        int at = i * stride;
+        int jt = j * stride;
+        double xi = rec[at + X] + rec[at + VX] * (now - rec[at + T]);
+        double yi = rec[at + Y] + rec[at + VY] * (now - rec[at + T]);
+        double dx = boundary.separationX(rec[jt + X] + rec[jt + VX] * (now - rec[jt + T]) - xi);
+        double dy = boundary.separationY(rec[jt + Y] + rec[jt + VY] * (now - rec[jt + T]) - yi);
+        return PairLaw.timeToContact(dx, dy, rec[jt + VX] - rec[at + VX], rec[jt + VY] - rec[at + VY],
+                radius(i) + radius(j));
+    }
+
+    /** {@link Flight#timeToWall} of disc i (in slot 0 unless {@link #straightImages}). */
+    private double wallTime(int i, int wall, double now) {
+        if (!straightImages) {
+            return flight.timeToWall(pair, 0, wall, now, walls);
+        }
+        int at = i * stride;
+        double dt = now - rec[at + T];
+        return walls.timeToWall(wall, rec[at + X] + rec[at + VX] * dt, rec[at + Y] + rec[at + VY] * dt,
+                rec[at + VX], rec[at + VY], radius(i));
     }
 
     /**
@@ -770,9 +821,14 @@ final class FastRun {
                       int m) {
         double best = found;
         int bestP = foundP;
+        // All heads first: independent loads whose cache misses overlap (at large N each is one).
+        int[] first = heads;
+        for (int k = 0; k < m; k++) {
+            first[k] = cellHead[base + cells[k]];
+        }
         if (!straightImages) {
             for (int k = 0; k < m; k++) {
-                for (int j = cellHead[base + cells[k]]; j != NIL; j = ir[j * IS + CNEXT]) {
+                for (int j = first[k]; j != NIL; j = ir[j * IS + CNEXT]) {
                     if (j != i) {
                         load(j, 1);
                         double t = flight.timeToContact(pair, 0, 1, now, horizon, boundary);
@@ -798,7 +854,7 @@ final class FastRun {
             for (int k = 0; k < m; k++) {
                 double ox = xi - shiftX[k];
                 double oy = yi - shiftY[k];
-                for (int j = cellHead[base + cells[k]]; j != NIL; j = ir[j * IS + CNEXT]) {
+                for (int j = first[k]; j != NIL; j = ir[j * IS + CNEXT]) {
                     if (j != i) {
                         int jt = j * st;
                         double dt = now - r[jt + T];
