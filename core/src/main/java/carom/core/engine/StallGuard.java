@@ -1,6 +1,7 @@
 package carom.core.engine;
 
 import carom.core.scene.Scene;
+import java.util.function.IntUnaryOperator;
 
 /**
  * Stops a run that would otherwise stall instead of hanging, with the discs named. One per worker
@@ -17,6 +18,8 @@ import carom.core.scene.Scene;
  */
 public final class StallGuard {
     private final Scene scene;
+    /** The scene's id of an engine's disc id (identity unless the engine renumbers discs). */
+    private final IntUnaryOperator sceneId;
     private final long limit;
     private static final String[] WALL_NAMES = {"left", "right", "bottom", "top"};
     private final double gravityX;
@@ -26,7 +29,16 @@ public final class StallGuard {
     private long atLastTime;
 
     public StallGuard(Scene scene) {
+        this(scene, IntUnaryOperator.identity());
+    }
+
+    /**
+     * For an engine that numbers discs its own way: disc ids passed in are the engine's, and
+     * {@code sceneId} maps them to the scene's for the error messages (called only when one is thrown).
+     */
+    public StallGuard(Scene scene, IntUnaryOperator sceneId) {
         this.scene = scene;
+        this.sceneId = sceneId;
         this.limit = Math.max(100_000L, 10L * scene.size());
         this.gravityX = scene.effects().gravityX();
         this.gravityY = scene.effects().gravityY();
@@ -38,7 +50,7 @@ public final class StallGuard {
 
     /**
      * Called for every event at absolute time {@code time} of disc a with disc b, wall -1 - b, or
-     * {@link #CELL_SIDE}. Disc ids are the scene's.
+     * {@link #CELL_SIDE}.
      */
     public void event(double time, int a, int b) {
         if (time != lastTime) {
@@ -47,11 +59,12 @@ public final class StallGuard {
             return;
         }
         if (++atLastTime > limit) {
-            String with = b >= 0 ? "disc " + b : (b == CELL_SIDE ? "a cell side" : "wall " + (-1 - b));
+            String with = b >= 0 ? "disc " + sceneId.applyAsInt(b) : (b == CELL_SIDE ? "a cell side" : "wall " + (-1 - b));
+            int id = sceneId.applyAsInt(a);
             throw new SimulationStuckException(String.format(
                     "more than %d collisions at the single instant t = %s, the last between disc %d (%s) and %s: "
                             + "resting contact is not modelled; separate the discs or give them velocities",
-                    limit, time, a, scene.originOf(a), with));
+                    limit, time, id, scene.originOf(id), with));
         }
     }
 
@@ -63,7 +76,7 @@ public final class StallGuard {
     public void wallContact(double time, int disc, int wall, double vx, double vy) {
         double nx = wall == 0 ? -1 : (wall == 1 ? 1 : 0);
         double ny = wall == 2 ? -1 : (wall == 3 ? 1 : 0);
-        check(time, disc, nx, ny, vx, vy, Double.POSITIVE_INFINITY, WALL_NAMES[wall] + " wall");
+        check(time, disc, nx, ny, vx, vy, Double.POSITIVE_INFINITY, wall, -1);
     }
 
     /**
@@ -73,7 +86,7 @@ public final class StallGuard {
      */
     public void pegContact(double time, int disc, int peg, double nx, double ny, double vx, double vy,
                                       double distance) {
-        check(time, disc, nx, ny, vx, vy, distance, "fixed disc " + peg);
+        check(time, disc, nx, ny, vx, vy, distance, -1, peg);
     }
 
     /**
@@ -83,7 +96,7 @@ public final class StallGuard {
      * that merely grazes a peg's side, or slides past it fast, is not resting.
      */
     private void check(double time, int disc, double nx, double ny, double vx, double vy, double curvature,
-                       String against) {
+                       int wall, int peg) {
         double pressing = gravityX * nx + gravityY * ny;
         if (pressing <= 0) {
             return;
@@ -91,10 +104,13 @@ public final class StallGuard {
         double normal = vx * nx + vy * ny;
         double tangential2 = Math.max(0, vx * vx + vy * vy - normal * normal);
         if (normal * normal < 2 * pressing * restHeight && tangential2 <= pressing * curvature) {
+            int id = sceneId.applyAsInt(disc);
+            // Named only here: no string is built per contact.
+            String against = wall >= 0 ? WALL_NAMES[wall] + " wall" : "fixed disc " + sceneId.applyAsInt(peg);
             throw new SimulationStuckException(String.format(
                     "disc %d (%s) came to rest against the %s at t = %s: resting and sliding contact are not "
                             + "modelled (without the TC model, dissipative discs end up there: set effects.tc > 0)",
-                    disc, scene.originOf(disc), against, time));
+                    id, scene.originOf(id), against, time));
         }
     }
 }

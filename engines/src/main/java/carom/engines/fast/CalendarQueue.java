@@ -7,63 +7,97 @@ import java.util.Arrays;
  * expected insert, remove and poll (Paul 2007, "A complexity O(1) priority queue for event driven
  * molecular dynamics simulations", J. Comput. Phys. 221, 615). Single writer, not thread-safe.
  *
- * <p>Disc i is queued iff {@code time[i]} is finite; the owner writes {@code time[i]} only through
- * {@link #insert} (or before {@link #rebuild}) and reads it freely.
+ * <p>The queue keeps no per-disc array of its own: disc i's event time and list link live in the
+ * owner's per-disc records, at {@code keys[i * keyStride + keyAt]} and {@code links[i * linkStride +
+ * linkAt]}, so that an event touches one record instead of one array per quantity. Disc i is queued
+ * iff its time is finite; the owner writes the time only through {@link #insert} (or before
+ * {@link #rebuild}) and reads it freely.
  *
  * <h2>Implementation notes</h2>
  * Time is cut into slices of {@code width}; slice s = floor(t / width), computed by a saturating
  * double-to-long cast (Java's {@code (long)} clamps, NaN gives 0) and clamped to {@link #MAX_SLICE}
- * so that slice arithmetic never overflows. The calendar covers the {@code buckets} slices
- * [start, start + buckets):
+ * so that slice arithmetic never overflows. With cur the slice being drained:
  * <ul>
- *   <li>slice {@code <= cur} (the slice being drained): in a binary heap ordered by time;</li>
- *   <li>cur &lt; slice &lt; start + buckets: in the unsorted doubly linked list of bucket
- *       {@code slice & mask};</li>
- *   <li>beyond: in one unsorted overflow list, redistributed when the calendar rolls over
- *       (cur reaches start + buckets, start becomes cur).</li>
+ *   <li>slice {@code <= cur}: in a binary heap ordered by time;</li>
+ *   <li>later: in the unsorted singly linked list of bucket {@code slice & mask}. A bucket thus
+ *       also holds events one or more calendar rounds ahead (Brown's calendar instead of Paul's
+ *       overflow list); draining slice cur moves only the entries of slice cur to the heap. The
+ *       owner sizes the round at several mean event delays, so such entries are a few percent.</li>
  * </ul>
- * The location of an entry is therefore a function of its time and (cur, start) alone, so removal
- * needs no stored location: every bucket is empty when the calendar rolls over, and the overflow is
- * re-placed then. Slices are monotone in time (rounded multiplication is monotone), so every heap
- * entry precedes every bucket entry, which precedes every overflow entry.
+ * The location of an entry is a function of its time and cur alone, so removal needs no stored
+ * location. Slices are monotone in time (rounded multiplication is monotone), so every heap entry
+ * precedes every bucket entry. After a whole round of empty slices, cur jumps to the earliest
+ * queued slice, so a sparse far future costs one scan, not a walk through its slices.
  *
- * <p>Layout: {@code prev[i]} is the list predecessor while i sits in a list and its heap position
- * while it sits in the heap (a disc is in exactly one place), saving an int per disc.
+ * <p>One link per disc besides the time, and no back pointers (memory per disc is what bounds
+ * large runs): removal walks a bucket list (a slice holds a few events) or searches the heap (about
+ * as small).
  */
 final class CalendarQueue {
     private static final long MAX_SLICE = 1L << 60;
     private static final int NIL = -1;
 
-    /** Event time of each disc (local), or +Infinity when it is not queued. */
-    final double[] time;
-    private final int[] next;
-    private final int[] prev;
-    /** Bucket list heads; {@code head[buckets]} is the overflow list. */
+    private static final double INF = Double.POSITIVE_INFINITY;
+    private final int n;
+    /** Event times (local, +Infinity when not queued) and links: see the class comment. */
+    private final double[] keys;
+    private final int keyStride;
+    private final int keyAt;
+    private final int[] links;
+    private final int linkStride;
+    private final int linkAt;
     private final int[] head;
     private final int buckets;
     private final int mask;
     private int[] heap = new int[256];
     private int heapSize;
     private int inBuckets;
-    private int inOverflow;
     private double invWidth;
     private double width;
-    private long start;
     private long cur;
+    /** Slices drained in a row without finding an entry. */
+    private int idle;
 
-    /** @param buckets a power of two */
-    CalendarQueue(int n, int buckets) {
+    /**
+     * A queue of n discs, none queued: sets every disc's time to +Infinity.
+     *
+     * @param buckets a power of two
+     */
+    CalendarQueue(int n, int buckets, double[] keys, int keyStride, int keyAt, int[] links, int linkStride, int linkAt) {
         if (Integer.bitCount(buckets) != 1) {
             throw new IllegalArgumentException("buckets must be a power of two: " + buckets);
         }
-        this.time = new double[n];
-        this.next = new int[n];
-        this.prev = new int[n];
-        this.head = new int[buckets + 1];
+        this.n = n;
+        this.keys = keys;
+        this.keyStride = keyStride;
+        this.keyAt = keyAt;
+        this.links = links;
+        this.linkStride = linkStride;
+        this.linkAt = linkAt;
+        this.head = new int[buckets];
         this.buckets = buckets;
         this.mask = buckets - 1;
-        Arrays.fill(time, Double.POSITIVE_INFINITY);
+        for (int i = 0; i < n; i++) {
+            keys[i * keyStride + keyAt] = INF;
+        }
         Arrays.fill(head, NIL);
+    }
+
+    /** Disc i's event time (local), or +Infinity when it is not queued. */
+    double time(int i) {
+        return keys[i * keyStride + keyAt];
+    }
+
+    private void setTime(int i, double t) {
+        keys[i * keyStride + keyAt] = t;
+    }
+
+    private int next(int i) {
+        return links[i * linkStride + linkAt];
+    }
+
+    private void setNext(int i, int j) {
+        links[i * linkStride + linkAt] = j;
     }
 
     int buckets() {
@@ -75,7 +109,7 @@ final class CalendarQueue {
     }
 
     long bytes() {
-        return 8L * time.length + 4L * next.length + 4L * prev.length + 4L * head.length + 4L * heap.length;
+        return 4L * head.length + 4L * heap.length;
     }
 
     private long sliceOf(double t) {
@@ -93,11 +127,10 @@ final class CalendarQueue {
         Arrays.fill(head, NIL);
         heapSize = 0;
         inBuckets = 0;
-        inOverflow = 0;
-        start = sliceOf(now);
-        cur = start;
-        for (int i = 0; i < time.length; i++) {
-            if (time[i] != Double.POSITIVE_INFINITY) {
+        idle = 0;
+        cur = sliceOf(now);
+        for (int i = 0; i < n; i++) {
+            if (time(i) != INF) {
                 place(i);
             }
         }
@@ -105,75 +138,55 @@ final class CalendarQueue {
 
     /** Queues disc i (not queued now) at time t; +Infinity leaves it unqueued. */
     void insert(int i, double t) {
-        time[i] = t;
-        if (t != Double.POSITIVE_INFINITY) {
+        setTime(i, t);
+        if (t != INF) {
             place(i);
         }
     }
 
     private void place(int i) {
-        long s = sliceOf(time[i]);
+        long s = sliceOf(time(i));
         if (s <= cur) {
             heapPush(i);
-        } else if (s - start < buckets) {
-            push((int) (s & mask), i);
-            inBuckets++;
         } else {
-            push(buckets, i);
-            inOverflow++;
+            int b = (int) (s & mask);
+            setNext(i, head[b]);
+            head[b] = i;
+            inBuckets++;
         }
     }
 
     /** Unqueues disc i if it is queued. */
     void remove(int i) {
-        double t = time[i];
-        if (t == Double.POSITIVE_INFINITY) {
+        double t = time(i);
+        if (t == INF) {
             return;
         }
-        long s = sliceOf(t);
-        if (s <= cur) {
-            heapRemoveAt(prev[i]);
-        } else if (s - start < buckets) {
-            unlink((int) (s & mask), i);
-            inBuckets--;
+        if (sliceOf(t) <= cur) {
+            int k = 0;
+            while (heap[k] != i) {
+                k++;
+            }
+            heapRemoveAt(k);
         } else {
-            unlink(buckets, i);
-            inOverflow--;
+            unlink((int) (sliceOf(t) & mask), i);
+            inBuckets--;
         }
-        time[i] = Double.POSITIVE_INFINITY;
+        setTime(i, INF);
     }
 
     /** The disc with the earliest event (ties in any order), or -1 if none is queued. */
     int peek() {
         while (heapSize == 0) {
             if (inBuckets == 0) {
-                if (inOverflow == 0) {
-                    return NIL;
-                }
-                // Nothing within the calendar: jump straight to the earliest overflow slice.
-                long earliest = MAX_SLICE;
-                for (int i = head[buckets]; i != NIL; i = next[i]) {
-                    earliest = Math.min(earliest, sliceOf(time[i]));
-                }
-                cur = earliest;
-                start = earliest;
-                redistributeOverflow();
-                continue;
+                return NIL;
+            }
+            if (++idle > buckets) {
+                cur = earliestSlice() - 1;
+                idle = 0;
             }
             cur++;
-            if (cur - start >= buckets) {
-                start = cur;
-                redistributeOverflow();
-            }
-            int b = (int) (cur & mask);
-            int i = head[b];
-            head[b] = NIL;
-            while (i != NIL) {
-                int following = next[i];
-                heapPush(i);
-                inBuckets--;
-                i = following;
-            }
+            drain((int) (cur & mask));
         }
         return heap[0];
     }
@@ -182,41 +195,48 @@ final class CalendarQueue {
     void pollTop() {
         int i = heap[0];
         heapRemoveAt(0);
-        time[i] = Double.POSITIVE_INFINITY;
+        setTime(i, INF);
     }
 
-    private void redistributeOverflow() {
-        int i = head[buckets];
-        head[buckets] = NIL;
-        inOverflow = 0;
+    /** Moves bucket b's entries of slice cur to the heap; later rounds' entries stay. */
+    private void drain(int b) {
+        int kept = NIL;
+        int i = head[b];
         while (i != NIL) {
-            int following = next[i];
-            place(i);
+            int following = next(i);
+            if (sliceOf(time(i)) <= cur) {
+                heapPush(i);
+                inBuckets--;
+                idle = 0;
+            } else {
+                setNext(i, kept);
+                kept = i;
+            }
             i = following;
         }
+        head[b] = kept;
     }
 
-    private void push(int list, int i) {
-        int h = head[list];
-        next[i] = h;
-        prev[i] = NIL;
-        if (h != NIL) {
-            prev[h] = i;
+    private long earliestSlice() {
+        long earliest = MAX_SLICE;
+        for (int b = 0; b < buckets; b++) {
+            for (int i = head[b]; i != NIL; i = next(i)) {
+                earliest = Math.min(earliest, sliceOf(time(i)));
+            }
         }
-        head[list] = i;
+        return earliest;
     }
 
     private void unlink(int list, int i) {
-        int p = prev[i];
-        int nx = next[i];
-        if (p != NIL) {
-            next[p] = nx;
-        } else {
-            head[list] = nx;
+        int h = head[list];
+        if (h == i) {
+            head[list] = next(i);
+            return;
         }
-        if (nx != NIL) {
-            prev[nx] = p;
+        while (next(h) != i) {
+            h = next(h);
         }
+        setNext(h, next(i));
     }
 
     private void heapPush(int i) {
@@ -231,8 +251,8 @@ final class CalendarQueue {
         if (k == heapSize) {
             return;
         }
-        double t = time[last];
-        if (k > 0 && time[heap[(k - 1) >>> 1]] > t) {
+        double t = time(last);
+        if (k > 0 && time(heap[(k - 1) >>> 1]) > t) {
             siftUp(k, last);
         } else {
             siftDown(k, last);
@@ -240,45 +260,41 @@ final class CalendarQueue {
     }
 
     private void siftUp(int k, int i) {
-        double t = time[i];
+        double t = time(i);
         int[] h = heap;
         while (k > 0) {
             int parent = (k - 1) >>> 1;
             int p = h[parent];
-            if (time[p] <= t) {
+            if (time(p) <= t) {
                 break;
             }
             h[k] = p;
-            prev[p] = k;
             k = parent;
         }
         h[k] = i;
-        prev[i] = k;
     }
 
     private void siftDown(int k, int i) {
-        double t = time[i];
+        double t = time(i);
         int[] h = heap;
         int size = heapSize;
         int half = size >>> 1;
         while (k < half) {
             int child = 2 * k + 1;
             int c = h[child];
-            double ct = time[c];
+            double ct = time(c);
             int right = child + 1;
-            if (right < size && time[h[right]] < ct) {
+            if (right < size && time(h[right]) < ct) {
                 child = right;
                 c = h[child];
-                ct = time[c];
+                ct = time(c);
             }
             if (t <= ct) {
                 break;
             }
             h[k] = c;
-            prev[c] = k;
             k = child;
         }
         h[k] = i;
-        prev[i] = k;
     }
 }

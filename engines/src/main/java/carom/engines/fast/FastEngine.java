@@ -17,7 +17,8 @@ import java.util.Set;
  *
  * <p>Counters in {@link RunResult#counters()}: {@code events} (all processed events: collisions, cell
  * crossings and stale events), {@code cellCrossings}, {@code staleEvents}, {@code predictions},
- * {@code resyncs} (clock re-anchorings), {@code bytesPerDisc} (heap held by the run's arrays over N).
+ * {@code resyncs} (clock re-anchorings), {@code bytes} (heap held by the run's arrays) and
+ * {@code bytesPerDisc} (the same over N, rounded).
  */
 public final class FastEngine implements Engine {
     @Override

@@ -25,6 +25,7 @@ class FastDenseScenesTest {
         assertThat(r.counters().get("resyncs")).as("clock re-anchorings").isPositive();
         assertThat(r.events()).isEqualTo(r.counters().get("events"))
                 .isGreaterThanOrEqualTo(r.collisions() + r.counters().get("cellCrossings") + r.counters().get("staleEvents"));
-        assertThat(r.counters().get("bytesPerDisc")).isBetween(90L, 200L);
+        // Records of x, y, vx, vy and clock (radius and mass shared) and about 35 bytes of bookkeeping.
+        assertThat(r.counters().get("bytesPerDisc")).as("bytes per disc").isBetween(60L, 100L);
     }
 }

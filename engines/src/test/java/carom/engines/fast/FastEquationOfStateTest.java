@@ -21,6 +21,12 @@ import org.junit.jupiter.params.provider.CsvSource;
  */
 class FastEquationOfStateTest {
     private static Pressure measure(int n, double phi, double equilibrateCollisionsPerDisc, double measureCollisionsPerDisc) {
+        return measure(n, phi, equilibrateCollisionsPerDisc, measureCollisionsPerDisc, false);
+    }
+
+    /** As above; if {@code report}, prints Z, its error and the run lengths (collisions per disc). */
+    private static Pressure measure(int n, double phi, double equilibrateCollisionsPerDisc, double measureCollisionsPerDisc,
+                                    boolean report) {
         // Collision rate per disc per unit time, roughly (Enskog-like): used only to size the runs.
         double rate = 4 * phi / (1 - phi) * 1.6;
         double warmTime = equilibrateCollisionsPerDisc / rate;
@@ -29,7 +35,16 @@ class FastEquationOfStateTest {
         double measured = 2.0 * warm.pairCollisions() / n / warmTime;
         double measureTime = measureCollisionsPerDisc / measured;
         Scene equilibrated = start.withState(warm.finalState()).withUntil(measureTime);
-        return new FastEngine().run(equilibrated, RunOptions.until(measureTime)).pressure();
+        RunResult run = new FastEngine().run(equilibrated, RunOptions.until(measureTime));
+        Pressure p = run.pressure();
+        if (report) {
+            // The figures for the measurements notes (surefire shows a test's standard output).
+            System.out.println(String.format(
+                    "EOS N %d phi %s: Z = %.5f +- %.5f (%d blocks); equilibration %.0f, measurement %.0f collisions per disc (T = %.2f)",
+                    n, phi, p.compressibility(), p.compressibilityError(), p.blocks(), 2.0 * warm.pairCollisions() / n,
+                    2.0 * run.pairCollisions() / n, measureTime));
+        }
+        return p;
     }
 
     /** ~1 s: N = 2500 at phi 0.5, ~400 collisions per disc: Z within 1% of 4.1069. */
@@ -46,7 +61,7 @@ class FastEquationOfStateTest {
     @CsvSource({"0.3, 2.0633", "0.5, 4.1069", "0.65, 8.4078", "0.68, 9.8328"})
     @Tag("physics")
     void compressibilityWithinTwoTenthsOfAPercent(double phi, double z) {
-        Pressure p = measure(10_000, phi, phi > 0.6 ? 400 : 100, 2000);
+        Pressure p = measure(10_000, phi, phi > 0.6 ? 400 : 100, 2000, true);
         double tolerance = 0.002 * z;
         assertThat(p.compressibilityError()).isPositive().isLessThan(tolerance / 2);
         assertThat(p.compressibility()).isCloseTo(z, within(tolerance));

@@ -1,0 +1,87 @@
+package carom.jmh;
+
+import carom.core.engine.Engine;
+import carom.core.engine.RunOptions;
+import carom.core.engine.RunResult;
+import carom.engines.EngineCatalog;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+
+/**
+ * A quick bench beside the JMH scenario: the same equilibrated periodic gas as
+ * {@link GasThroughputBenchmark}, timed run by run, printing what the JMH rows lack: events per
+ * collision and bytes per disc (engines that report them), with N, packing fraction, JVM and machine.
+ * The JMH scenario stays the one to quote (forks, warm-up, error bars); this is for a look.
+ *
+ * <pre>
+ * java -cp jmh/target/benchmarks.jar carom.jmh.GasBench fast 10000,100000 0.3,0.5,0.68 [collisionsPerDisc 10] [repeats 5] [tunables]
+ * </pre>
+ * Each line: the mean and standard deviation of collisions per second over the repeats (the first run
+ * of each scene is warm-up and not counted), timed around the whole {@code Engine.run}.
+ */
+public final class GasBench {
+    private GasBench() {
+    }
+
+    public static void main(String[] args) {
+        if (args.length < 3) {
+            System.err.println("usage: GasBench ENGINE N[,N...] PHI[,PHI...] [COLLISIONS_PER_DISC] [REPEATS] [TUNABLES]");
+            System.exit(2);
+        }
+        Engine engine = EngineCatalog.byName(args[0]);
+        double perDisc = args.length > 3 ? Double.parseDouble(args[3]) : 10;
+        int repeats = args.length > 4 ? Integer.parseInt(args[4]) : 5;
+        String tunables = args.length > 5 ? args[5] : "";
+        System.out.printf("# JVM %s %s (%s), max heap %d MiB; machine %s %s, %d cores, %s%n",
+                System.getProperty("java.vm.name"), System.getProperty("java.runtime.version"),
+                System.getProperty("java.vm.vendor"), Runtime.getRuntime().maxMemory() >> 20,
+                System.getProperty("os.name"), System.getProperty("os.arch"),
+                Runtime.getRuntime().availableProcessors(), cpuModel());
+        System.out.printf("# engine %s, about %s collisions per disc per run, %d timed runs after one warm-up%s%n",
+                engine.name(), perDisc, repeats, tunables.isBlank() ? "" : ", tunables " + tunables);
+        System.out.println("engine,N,phi,collisionsPerSecond,stddev,eventsPerCollision,bytesPerDisc,collisionsPerRun");
+        for (String nText : args[1].split(",")) {
+            for (String phiText : args[2].split(",")) {
+                bench(engine, Integer.parseInt(nText), Double.parseDouble(phiText), perDisc, repeats, tunables);
+            }
+        }
+    }
+
+    private static void bench(Engine engine, int n, double phi, double perDisc, int repeats, String tunables) {
+        Equilibrated gas = Equilibrated.gas(n, phi, perDisc);
+        RunOptions options = Tunables.apply(RunOptions.until(gas.scene().until()), tunables);
+        double sum = 0;
+        double sumSquares = 0;
+        RunResult last = null;
+        for (int r = -1; r < repeats; r++) {
+            long started = System.nanoTime();
+            last = engine.run(gas.scene(), options);
+            double rate = last.collisions() / ((System.nanoTime() - started) * 1e-9);
+            if (r >= 0) {
+                sum += rate;
+                sumSquares += rate * rate;
+            }
+        }
+        double mean = sum / repeats;
+        double sd = repeats > 1 ? Math.sqrt(Math.max(0, (sumSquares - repeats * mean * mean) / (repeats - 1))) : 0;
+        Long bytes = last.counters().get("bytes");
+        String perDiscBytes = bytes == null ? "n/a" : String.format(Locale.ROOT, "%.1f", (double) bytes / n);
+        System.out.printf(Locale.ROOT, "%s,%d,%s,%.0f,%.0f,%.3f,%s,%d%n", engine.name(), n, phi, mean, sd,
+                (double) last.events() / last.collisions(), perDiscBytes, last.collisions());
+    }
+
+    private static String cpuModel() {
+        try {
+            for (String line : Files.readAllLines(Path.of("/proc/cpuinfo"))) {
+                if (line.startsWith("model name")) {
+                    return line.substring(line.indexOf(':') + 1).trim();
+                }
+            }
+        } catch (IOException | RuntimeException e) {
+            // Not Linux: the JVM's own description has to do.
+        }
+        return "cpu unknown";
+    }
+}
