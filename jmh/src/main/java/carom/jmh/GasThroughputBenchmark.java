@@ -39,7 +39,8 @@ import org.openjdk.jmh.annotations.Warmup;
  * Benchmark                          (n)  (phi)   Mode  Cnt       Score      Error  Units
  * GasThroughputBenchmark.run:collisions  10000    0.5  thrpt    5  ~1.0e6 ...        ops/s
  * </pre>
- * (see the project's closing notes for measured figures).
+ * (see the project's closing notes for measured figures). {@link GasBench} runs the same scene and
+ * also prints events per collision, bytes per disc, JVM and machine.
  */
 @BenchmarkMode(Mode.Throughput)
 @OutputTimeUnit(TimeUnit.SECONDS)

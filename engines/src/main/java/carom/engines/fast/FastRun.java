@@ -27,7 +27,7 @@ import java.util.Map;
  * Each mobile disc has exactly one scheduled event, the earliest of: its pair collisions with discs
  * in its 3x3 cell neighbourhood, its wall hits, and its crossing out of its cell (Smallenburg 2022,
  * "Efficient event-driven simulations of hard spheres", Eur. Phys. J. E 45, 22; the classic Rapaport
- * scheme with one event per particle). Events sit in Paul's calendar queue ({@link CalendarQueue}).
+ * scheme with one event per particle). Events sit in a calendar queue ({@link CalendarQueue}).
  * <ul>
  *   <li>Collision of i and j: both advance, collide ({@link PairLaw#collide}), bump their collision
  *       counters, and re-predict against their whole neighbourhood.</li>
@@ -58,12 +58,12 @@ import java.util.Map;
  * <h2>Layout</h2>
  * Discs are renumbered along a Morton curve of their initial cells (neighbours close in memory). The
  * permutation is not kept: it is recomputed from the scene for the final state (copied back in
- * original id order) and for error messages. A disc's kinematics are one record of a flat array (x,
- * y, vx, vy, clock, and radius and inverse mass unless all discs share them), so a candidate costs
- * one or two cache lines, not one per quantity: at large N the run is bound by memory latency. Core
- * physics that takes {@link Discs} sees discs through a two-slot window ({@link #pair}); straight
- * flight, the common case, is inlined. Each disc's cell and event kind share one int. No allocation
- * per event.
+ * original id order) and for error messages. Each disc is one record of doubles (x, y, vx, vy, clock,
+ * event time, and radius and inverse mass unless all discs share them) and one record of ints (cell
+ * and event kind, partner, counters, cell and queue links), so an event or a candidate costs a cache
+ * line or two, not one per quantity: at large N the run is bound by memory latency. Core physics that
+ * takes {@link Discs} sees discs through a two-slot window ({@link #pair}); straight flight, the
+ * common case, is inlined on the records. No allocation per event.
  */
 final class FastRun {
     private static final int PRESSURE_BLOCKS = 20;
@@ -484,7 +484,7 @@ final class FastRun {
             } else if (k != HIT) {
                 crossCell(i, now, k);
             } else {
-                int p = ir[i * IS + PARTNER];
+                int p = other;
                 if (p >= 0) {
                     if (ir[p * IS + COUNT] != ir[i * IS + PCOUNT]) {
                         staleEvents++;
