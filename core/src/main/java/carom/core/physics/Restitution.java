@@ -10,7 +10,7 @@ package carom.core.physics;
  * <p>Times are absolute simulated times. Each engine (or worker) owns its instance: the TC model keeps
  * per-disc state ({@link #forRun(int)} makes a fresh one).
  */
-public abstract sealed class Restitution permits Restitution.Elastic, Restitution.Constant, Restitution.TcModel {
+public abstract sealed class Restitution permits Restitution.Memoryless, Restitution.TcModel {
     public static final Restitution ELASTIC = new Elastic();
 
     /** Restitution of a collision between discs i and j at time {@code time}. */
@@ -41,17 +41,8 @@ public abstract sealed class Restitution permits Restitution.Elastic, Restitutio
         return new Constant(pairRestitution, wallRestitution);
     }
 
-    static final class Elastic extends Restitution {
-        @Override
-        public double pair(int i, int j, double time) {
-            return 1;
-        }
-
-        @Override
-        public double wall(int i, double time) {
-            return 1;
-        }
-
+    /** Models that keep no per-disc history: one shared instance serves every run. */
+    abstract static sealed class Memoryless extends Restitution permits Elastic, Constant {
         @Override
         public void collided(int i, double time) {
         }
@@ -67,7 +58,20 @@ public abstract sealed class Restitution permits Restitution.Elastic, Restitutio
         }
     }
 
-    static final class Constant extends Restitution {
+    static final class Elastic extends Memoryless {
+        @Override
+        public double pair(int i, int j, double time) {
+            return 1;
+        }
+
+        @Override
+        public double wall(int i, double time) {
+            return 1;
+        }
+
+    }
+
+    static final class Constant extends Memoryless {
         private final double pairE;
         private final double wallE;
 
@@ -86,19 +90,6 @@ public abstract sealed class Restitution permits Restitution.Elastic, Restitutio
             return wallE;
         }
 
-        @Override
-        public void collided(int i, double time) {
-        }
-
-        @Override
-        public double lastCollision(int i) {
-            return Double.NEGATIVE_INFINITY;
-        }
-
-        @Override
-        public Restitution forRun(int discs) {
-            return this;
-        }
     }
 
     static final class TcModel extends Restitution {
