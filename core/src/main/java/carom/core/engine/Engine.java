@@ -20,9 +20,11 @@ public interface Engine {
 
     /**
      * Throws {@link carom.core.BadInputException} if the scene needs an effect this engine does not
-     * simulate. Called before any output is written; {@link #run} calls it too.
+     * simulate. Called before any output is written; {@link #run} calls it too. Every engine so far
+     * simulates all of SPEC's effects, so the default accepts every scene.
      */
-    void checkSupports(Scene scene);
+    default void checkSupports(Scene scene) {
+    }
 
     /**
      * The engine options ({@code --option key=value}) this engine understands; any other key is bad

@@ -39,10 +39,6 @@ public final class AkkaEngine implements Engine {
     }
 
     @Override
-    public void checkSupports(Scene scene) {
-    }
-
-    @Override
     public Set<String> tunables() {
         Set<String> keys = new HashSet<>(ActorRun.TUNABLES);
         keys.add("throughput");

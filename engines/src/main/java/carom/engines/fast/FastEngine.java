@@ -36,11 +36,6 @@ public final class FastEngine implements Engine {
         return "one event per disc, cell crossings as events, Paul's O(1) calendar queue, Morton-ordered discs";
     }
 
-    /** Supports every effect of SPEC: walls, periodic, fixed discs, gravity, restitution, TC model. */
-    @Override
-    public void checkSupports(Scene scene) {
-    }
-
     @Override
     public Set<String> tunables() {
         return Set.of("cellFactor", "auditEnergy");

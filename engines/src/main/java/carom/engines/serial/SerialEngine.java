@@ -30,11 +30,6 @@ public final class SerialEngine implements Engine {
         return "the thesis's single-thread time-stepped grid algorithm with its six-linked bucket queue (reference)";
     }
 
-    /** Supports every effect of SPEC: walls, periodic, fixed discs, gravity, restitution, TC model. */
-    @Override
-    public void checkSupports(Scene scene) {
-    }
-
     @Override
     public Set<String> tunables() {
         return Set.of("cellFactor", "auditEnergy");

@@ -35,10 +35,6 @@ public final class StripesEngine implements Engine {
     }
 
     @Override
-    public void checkSupports(Scene scene) {
-    }
-
-    @Override
     public Set<String> tunables() {
         return Set.of("cellFactor", "stepFactor");
     }

@@ -35,10 +35,6 @@ public final class VThreadsEngine implements Engine {
     }
 
     @Override
-    public void checkSupports(Scene scene) {
-    }
-
-    @Override
     public Set<String> tunables() {
         return ActorRun.TUNABLES;
     }
