@@ -184,7 +184,8 @@ public final class BlockActor {
         this.sentOwn = new double[neighbours.length];
         this.sentOthers = new double[neighbours.length];
         this.sentOthersId = new int[neighbours.length];
-        this.particleTargets = Arrays.stream(neighbours).filter(b -> layout.holdsAnyCellOf(b, id)).toArray();
+        this.particleTargets = Arrays.copyOfRange(layout.particleTargetList, layout.particleTargetStart[id],
+                layout.particleTargetStart[id + 1]);
         this.targetCellStart = new int[particleTargets.length + 1];
         int[] held = new int[0];
         for (int t = 0; t < particleTargets.length; t++) {
@@ -207,7 +208,7 @@ public final class BlockActor {
             int c = cells[l];
             for (int m = grid.neighbourStart[c]; m < grid.neighbourStart[c + 1]; m++) {
                 int other = grid.neighbours[m];
-                if (other > c && layout.actorOfCell[other] != id && !contains(cells, ownCells, size, other)) {
+                if (other > c && layout.actorOfCell[other] != id && BlockLayout.indexOf(cells, ownCells, size, other) < 0) {
                     if (size == cells.length) {
                         cells = Arrays.copyOf(cells, 2 * size);
                     }
@@ -216,15 +217,6 @@ public final class BlockActor {
             }
         }
         return Arrays.copyOf(cells, size);
-    }
-
-    private static boolean contains(int[] a, int from, int to, int value) {
-        for (int i = from; i < to; i++) {
-            if (a[i] == value) {
-                return true;
-            }
-        }
-        return false;
     }
 
     /** Own cell: every own neighbour and the held neighbours of a higher index. Held cell: own neighbours of a lower index. */

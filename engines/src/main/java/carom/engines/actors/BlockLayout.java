@@ -32,6 +32,9 @@ public final class BlockLayout {
     /** Actors holding copies of each cell's discs (CSR per cell, ascending, never the owner). */
     public final int[] holderStart;
     public final int[] holderList;
+    /** Neighbours holding some cell of each actor (CSR, ascending): they get its Particles at a step start. */
+    public final int[] particleTargetStart;
+    public final int[] particleTargetList;
     /** How many Particles messages each actor receives at a step start. */
     public final int[] particleSenders;
 
@@ -66,7 +69,8 @@ public final class BlockLayout {
         neighbourStart = new int[actors + 1];
         neighbourList = neighbours();
         particleSenders = new int[actors];
-        countParticleSenders();
+        particleTargetStart = new int[actors + 1];
+        particleTargetList = particleTargets();
     }
 
     public int cellCount(int actor) {
@@ -152,20 +156,26 @@ public final class BlockLayout {
         return Arrays.copyOf(result, size);
     }
 
-    /** Actor a receives one Particles message from each distinct owner of a cell it holds. */
-    private void countParticleSenders() {
+    /** Actor a sends one Particles message to each neighbour holding a cell of a; each receiver counts its senders. */
+    private int[] particleTargets() {
+        int[] result = new int[neighbourList.length];
+        int size = 0;
         for (int a = 0; a < actors; a++) {
+            particleTargetStart[a] = size;
             for (int m = neighbourStart[a]; m < neighbourStart[a + 1]; m++) {
                 int b = neighbourList[m];
-                if (holdsAnyCellOf(a, b)) {
-                    particleSenders[a]++;
+                if (holdsAnyCellOf(b, a)) {
+                    result[size++] = b;
+                    particleSenders[b]++;
                 }
             }
         }
+        particleTargetStart[actors] = size;
+        return Arrays.copyOf(result, size);
     }
 
     /** Whether actor {@code holder} holds copies of some cell of actor {@code owner}. */
-    public boolean holdsAnyCellOf(int holder, int owner) {
+    private boolean holdsAnyCellOf(int holder, int owner) {
         for (int q = cellStart[owner]; q < cellStart[owner + 1]; q++) {
             int c = cellList[q];
             if (indexOf(holderList, holderStart[c], holderStart[c + 1], holder) >= 0) {
@@ -183,7 +193,8 @@ public final class BlockLayout {
         return indexOf(a, 0, size, value);
     }
 
-    private static int indexOf(int[] a, int from, int to, int value) {
+    /** Position of value in a[from, to), or -1: the lists here are a few entries long. */
+    static int indexOf(int[] a, int from, int to, int value) {
         for (int i = from; i < to; i++) {
             if (a[i] == value) {
                 return i;
