@@ -17,6 +17,7 @@ import carom.core.state.Discs;
 import carom.engines.reference.ChainScenes;
 import carom.engines.reference.Invariants;
 import carom.engines.reference.RandomScenes;
+import carom.engines.reference.ThreadCounts;
 import carom.engines.serial.SerialEngine;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
@@ -231,7 +232,7 @@ public abstract class ActorEngineContract {
                 .isInstanceOf(EngineFailure.class)
                 .hasMessageContaining("actor " + failing.get() + " (")
                 .hasMessageContaining("IllegalStateException: injected");
-        assertThat(liveEngineThreads()).isLessThanOrEqualTo(before);
+        assertThat(ThreadCounts.settledCount(this::liveEngineThreads, before)).isLessThanOrEqualTo(before);
     }
 
     @Test

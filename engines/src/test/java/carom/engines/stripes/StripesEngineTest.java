@@ -16,6 +16,7 @@ import carom.core.scene.StandardScenes;
 import carom.core.state.Discs;
 import carom.engines.reference.ChainScenes;
 import carom.engines.reference.Invariants;
+import carom.engines.reference.ThreadCounts;
 import carom.engines.serial.SerialEngine;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
@@ -120,7 +121,7 @@ class StripesEngineTest {
         long before = poolThreads();
         assertThatThrownBy(() -> stripes(zeno, 2)).isInstanceOf(SimulationStuckException.class)
                 .hasMessageContaining("disc 0");
-        assertThat(poolThreads()).isLessThanOrEqualTo(before);
+        assertThat(ThreadCounts.settledCount(StripesEngineTest::poolThreads, before)).isLessThanOrEqualTo(before);
     }
 
     private static long poolThreads() {
