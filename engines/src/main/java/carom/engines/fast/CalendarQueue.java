@@ -33,7 +33,7 @@ import java.util.Arrays;
  * large runs): removal walks a bucket list (a slice holds a few events) or searches the heap (about
  * as small).
  */
-final class CalendarQueue {
+public final class CalendarQueue {
     private static final long MAX_SLICE = 1L << 60;
     private static final int NIL = -1;
 
@@ -63,7 +63,7 @@ final class CalendarQueue {
      *
      * @param buckets a power of two
      */
-    CalendarQueue(int n, int buckets, double[] keys, int keyStride, int keyAt, int[] links, int linkStride, int linkAt) {
+    public CalendarQueue(int n, int buckets, double[] keys, int keyStride, int keyAt, int[] links, int linkStride, int linkAt) {
         if (Integer.bitCount(buckets) != 1) {
             throw new IllegalArgumentException("buckets must be a power of two: " + buckets);
         }
@@ -84,7 +84,7 @@ final class CalendarQueue {
     }
 
     /** Disc i's event time (local), or +Infinity when it is not queued. */
-    double time(int i) {
+    public double time(int i) {
         return keys[i * keyStride + keyAt];
     }
 
@@ -100,15 +100,15 @@ final class CalendarQueue {
         links[i * linkStride + linkAt] = j;
     }
 
-    int buckets() {
+    public int buckets() {
         return buckets;
     }
 
-    double width() {
+    public double width() {
         return width;
     }
 
-    long bytes() {
+    public long bytes() {
         return 4L * head.length + 4L * heap.length;
     }
 
@@ -121,7 +121,7 @@ final class CalendarQueue {
      * Empties the queue, sets the slice width and the current time, and queues every disc whose
      * {@code time} is finite (times must be >= now).
      */
-    void rebuild(double newWidth, double now) {
+    public void rebuild(double newWidth, double now) {
         width = newWidth;
         invWidth = 1 / newWidth;
         Arrays.fill(head, NIL);
@@ -136,8 +136,28 @@ final class CalendarQueue {
         }
     }
 
+    /**
+     * As {@link #rebuild(double, double)}, over the discs {@code members[0..count)} only: for queues
+     * that share their key array with other queues (one per domain of a parallel engine).
+     */
+    public void rebuild(double newWidth, double now, int[] members, int count) {
+        width = newWidth;
+        invWidth = 1 / newWidth;
+        Arrays.fill(head, NIL);
+        heapSize = 0;
+        inBuckets = 0;
+        idle = 0;
+        cur = sliceOf(now);
+        for (int k = 0; k < count; k++) {
+            int i = members[k];
+            if (time(i) != INF) {
+                place(i);
+            }
+        }
+    }
+
     /** Queues disc i (not queued now) at time t; +Infinity leaves it unqueued. */
-    void insert(int i, double t) {
+    public void insert(int i, double t) {
         setTime(i, t);
         if (t != INF) {
             place(i);
@@ -157,7 +177,7 @@ final class CalendarQueue {
     }
 
     /** Unqueues disc i if it is queued. */
-    void remove(int i) {
+    public void remove(int i) {
         double t = time(i);
         if (t == INF) {
             return;
@@ -176,7 +196,7 @@ final class CalendarQueue {
     }
 
     /** The disc with the earliest event (ties in any order), or -1 if none is queued. */
-    int peek() {
+    public int peek() {
         while (heapSize == 0) {
             if (inBuckets == 0) {
                 return NIL;
@@ -192,7 +212,7 @@ final class CalendarQueue {
     }
 
     /** Unqueues the disc {@link #peek} returned. */
-    void pollTop() {
+    public void pollTop() {
         int i = heap[0];
         heapRemoveAt(0);
         setTime(i, INF);

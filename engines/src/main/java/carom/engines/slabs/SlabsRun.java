@@ -1,0 +1,1768 @@
+package carom.engines.slabs;
+
+import carom.core.BadInputException;
+import carom.core.engine.ProgressListener;
+import carom.core.engine.RunOptions;
+import carom.core.engine.RunResult;
+import carom.core.engine.StallGuard;
+import carom.core.observe.EnergyAudit;
+import carom.core.observe.Observables;
+import carom.core.observe.Pressure;
+import carom.core.observe.VirialAccumulator;
+import carom.core.physics.Boundary;
+import carom.core.physics.Flight;
+import carom.core.physics.PairLaw;
+import carom.core.physics.Physics;
+import carom.core.physics.Restitution;
+import carom.core.scene.Scene;
+import carom.core.state.Discs;
+import carom.engines.fast.CalendarQueue;
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.Map;
+
+/**
+ * One run of the slabs engine.
+ *
+ * <h2>Domains</h2>
+ * The grid is {@code fast}'s (cells a hair wider than the largest diameter, discs Morton-ordered, one
+ * record of doubles and one of ints per disc, shared by all threads). Its columns are cut into K slabs
+ * of at least {@link #MIN_SLAB_COLS} columns (fewer domains if the box is too narrow); a disc belongs to the domain owning its logical cell's
+ * column. Each {@link Domain} keeps its own calendar queue over its discs and predicts only against
+ * discs of its own columns, so during a window a thread reads and writes only its own discs and cells.
+ * An <em>edge</em> column borders a foreign slab; only discs in edge columns can meet foreign discs.
+ *
+ * <h2>Cross-domain events</h2>
+ * A contact between discs of two domains, and a disc crossing into a foreign column (a migration),
+ * are cross events. They are predicted serially, at barriers, for every mobile disc in an edge column
+ * ({@link #crossPredict}), into a small indexed heap keyed by time; a prediction against disc j is
+ * valid while j's collision counter is unchanged, exactly as in {@code fast}.
+ *
+ * <h2>Windows</h2>
+ * With H the heap's earliest cross event, every domain processes its own events before H in parallel,
+ * logging each touched disc's record before the event (undo log; the saved records are also the
+ * disc's trajectory segments). A domain whose next event is a migration (a trajectory changed within
+ * the window) stops there. After the barrier, {@link #verify} checks, with the real segments, every
+ * pair of an edge disc that changed in the window and a foreign disc near it: the earliest contact (or
+ * stop) t* before the time all domains reached is a violation, and every domain undoes its events at
+ * or after t*; then the violating event is processed serially. Otherwise the window is committed and
+ * the cross event at H is processed serially. Either way the changed edge discs are re-predicted into
+ * the cross heap. With one domain there are no edges and the loop is {@code fast}'s.
+ *
+ * <p>Why it is exact: a domain's events before t* read only its own discs, and no foreign disc touched
+ * one of them before t* (contacts between two discs unchanged in the window are after H by the heap's
+ * invariant; the others are checked on their segments), so they are the events the serial order has.
+ *
+ * <p>Counters: {@code domains}, {@code windows}, {@code commits} (windows without violation),
+ * {@code rollbacks}, {@code undoneEvents}, {@code crossDomainEvents} (contacts processed serially),
+ * {@code migrations}, {@code crossPredictions}, {@code serialNanos} and {@code windowNanos} (wall time
+ * in serial phases and in windows, on the coordinating thread), and {@code fast}'s counters.
+ */
+final class SlabsRun {
+    private static final int PRESSURE_BLOCKS = 20;
+    private static final byte HIT = 0;
+    private static final byte CROSS_LEFT = 1;
+    private static final byte CROSS_RIGHT = 2;
+    private static final byte CROSS_DOWN = 3;
+    private static final byte CROSS_UP = 4;
+    private static final byte RECHECK = 5;
+    private static final int NONE = Integer.MIN_VALUE;
+    /** Cross-heap partner code: the disc's next event is its migration into a foreign column. */
+    private static final int MIGRATE = Integer.MIN_VALUE + 1;
+    private static final int NIL = -1;
+    private static final int AXIS_BITS = 14;
+    private static final int AXIS_MASK = (1 << AXIS_BITS) - 1;
+    private static final int CELL_MASK = (1 << 2 * AXIS_BITS) - 1;
+    private static final int KIND_SHIFT = 2 * AXIS_BITS;
+    private static final double SPAN_MEANS = 4;
+    private static final double RESYNC_SPANS = 4;
+    private static final double INF = Double.POSITIVE_INFINITY;
+    /**
+     * Narrowest slab. Nothing breaks below it (a column bordering two foreign slabs is handled), but
+     * a slab of one column is all edge: every event would be logged and verified.
+     */
+    static final int MIN_SLAB_COLS = 2;
+
+    private final Scene scene;
+    private final int n;
+    private final double until;
+    private final double[] rec;
+    private final int stride;
+    private static final int X = 0;
+    private static final int Y = 1;
+    private static final int VX = 2;
+    private static final int VY = 3;
+    private static final int T = 4;
+    private static final int EV = 5;
+    private static final int R = 6;
+    private static final int IM = 7;
+    private final double sharedRadius;
+    private final double sharedInvMass;
+    private final boolean straight;
+    private final Flight flight;
+    private final Boundary boundary;
+    private final Boundary.Walls walls;
+    private final boolean periodic;
+    private final Restitution restitution;
+    private final boolean gravity;
+    private final EnergyAudit audit;
+    private final ProgressListener progress;
+    private final double energyStart;
+    private final double[] momentumStart;
+
+    private final int cols;
+    private final int rows;
+    private final double cellW;
+    private final double cellH;
+    private final double width;
+    private final double height;
+    private final int[] cellHead;
+    private final int[] ir;
+    private static final int IS = 6;
+    private static final int CELL = 0;
+    private static final int PARTNER = 1;
+    private static final int PCOUNT = 2;
+    private static final int COUNT = 3;
+    private static final int CNEXT = 4;
+    private static final int QNEXT = 5;
+    private final boolean fullOnCross;
+    private final double recheckX;
+    private final double recheckY;
+    private final boolean straightImages;
+    private final int[] around;
+    private final int[][] ahead;
+    private static final double[] NO_SHIFT = new double[9];
+    private int[] sceneIds;
+
+    // Domains.
+    private final int domainCount;
+    private final Domain[] domains;
+    /** Owning domain of each column, and whether a column borders a foreign slab. */
+    private final int[] colOwner;
+    private final boolean[] edgeCol;
+    /** Per disc: the window in which it was last logged or marked dirty, and its last log entry. */
+    private final int[] logStamp;
+    private final int[] lastEntry;
+    private final int[] dirtyStamp;
+    private final int[] undoMark;
+    private int undoStamp;
+    /** Number of the window under way (stamps). */
+    private int window;
+
+    // Cross-domain predictions: an indexed binary heap of edge discs keyed by xTime.
+    private final double[] xTime;
+    private final int[] xPartner;
+    private final int[] xPCount;
+    private final int[] xPos;
+    private int[] xHeap = new int[64];
+    private int xSize;
+    /** Scratch for serial contact tests. */
+    private final Discs xpair = new Discs(2);
+
+    private double epoch;
+    private double untilLocal;
+    private double resyncAt;
+    private long resyncs;
+    private long windows;
+    private long commits;
+    private long rollbacks;
+    private long undoneEvents;
+    private long crossDomainEvents;
+    private long migrations;
+    private long crossPredictions;
+    private long crossPairCollisions;
+    private long serialNanos;
+    private long windowNanos;
+    private final VirialAccumulator serialVirial;
+    private final StallGuard serialStall;
+
+    // Barrier: the coordinator publishes a window by bumping generation; each worker answers with done.
+    private volatile int generation;
+    private volatile double windowEnd;
+    private volatile boolean windowInclusive;
+    private volatile boolean shutdown;
+    private volatile Throwable failure;
+
+    SlabsRun(Scene scene, RunOptions options) {
+        this.scene = scene;
+        this.until = options.until();
+        Discs src = scene.newDiscs();
+        this.n = src.n;
+        Physics physics = Physics.of(scene);
+        this.flight = physics.flight;
+        this.boundary = physics.boundary;
+        this.walls = boundary instanceof Boundary.Walls w ? w : null;
+        this.periodic = walls == null;
+        this.restitution = physics.restitution;
+        this.gravity = flight.maxAcceleration() > 0;
+        this.width = scene.box().width();
+        this.height = scene.box().height();
+        this.audit = Boolean.parseBoolean(options.tunables().getOrDefault("auditEnergy", "false")) ? EnergyAudit.forScene(scene) : null;
+        this.serialVirial = periodic ? new VirialAccumulator(0, until, PRESSURE_BLOCKS) : null;
+        this.progress = options.progress();
+        this.serialStall = new StallGuard(scene, this::sceneId);
+        this.energyStart = Observables.kineticEnergy(src);
+        this.momentumStart = Observables.momentum(src);
+
+        double cellFactor = options.tunable("cellFactor", 1.0);
+        if (!(cellFactor >= 1) || Double.isInfinite(cellFactor)) {
+            throw new BadInputException("engine option cellFactor: must be >= 1, got " + cellFactor);
+        }
+        double minCell = 2 * src.maxRadius() * cellFactor * (1 + 1e-9);
+        long c = cellsAlong(width, minCell);
+        long r = cellsAlong(height, minCell);
+        long cap = Math.max(64, 4L * n);
+        while (c * r > cap) {
+            double shrink = Math.sqrt((double) c * r / cap) * 1.0001;
+            c = Math.max(1, (long) (c / shrink));
+            r = Math.max(1, (long) (r / shrink));
+        }
+        this.cols = (int) Math.min(c, AXIS_MASK);
+        this.rows = (int) Math.min(r, AXIS_MASK);
+        this.cellW = width / cols;
+        this.cellH = height / rows;
+        double maxDiameter = 2 * src.maxRadius();
+        this.recheckX = periodic && cols < 4 ? 0.5 * (0.5 * width - maxDiameter) : 0;
+        this.recheckY = periodic && rows < 4 ? 0.5 * (0.5 * height - maxDiameter) : 0;
+        this.straight = flight instanceof Flight.Straight;
+        this.straightImages = straight && recheckX == 0 && recheckY == 0;
+        this.fullOnCross = (gravity && scene.hasFixedDiscs()) || recheckX > 0 || recheckY > 0;
+        this.cellHead = new int[cols * rows];
+        this.around = new int[] {-cols - 1, -cols, -cols + 1, -1, 0, 1, cols - 1, cols, cols + 1};
+        this.ahead = new int[5][];
+        ahead[CROSS_LEFT] = new int[] {-cols - 1, -1, cols - 1};
+        ahead[CROSS_RIGHT] = new int[] {-cols + 1, 1, cols + 1};
+        ahead[CROSS_DOWN] = new int[] {-cols - 1, -cols, -cols + 1};
+        ahead[CROSS_UP] = new int[] {cols - 1, cols, cols + 1};
+        this.ir = new int[Math.multiplyExact(n, IS)];
+        Arrays.fill(cellHead, NIL);
+
+        // Slabs: K domains of at least MIN_SLAB_COLS columns; tiny periodic axes (rechecks) use one.
+        int k = Math.max(1, options.threads());
+        k = Math.min(k, cols / MIN_SLAB_COLS);
+        if (recheckX > 0 || recheckY > 0 || k < 1) {
+            k = 1;
+        }
+        this.domainCount = k;
+        this.colOwner = new int[cols];
+        this.edgeCol = new boolean[cols];
+        for (int col = 0; col < cols; col++) {
+            colOwner[col] = (int) ((long) col * k / cols);
+        }
+        for (int col = 0; col < cols && k > 1; col++) {
+            int left = col > 0 ? col - 1 : (periodic ? cols - 1 : -1);
+            int right = col < cols - 1 ? col + 1 : (periodic ? 0 : -1);
+            edgeCol[col] = (left >= 0 && colOwner[left] != colOwner[col]) || (right >= 0 && colOwner[right] != colOwner[col]);
+        }
+
+        boolean shared = true;
+        for (int i = 1; i < n && shared; i++) {
+            shared = src.radius[i] == src.radius[0] && src.invMass[i] == src.invMass[0];
+        }
+        this.stride = shared ? R : IM + 1;
+        this.sharedRadius = shared && n > 0 ? src.radius[0] : Double.NaN;
+        this.sharedInvMass = shared && n > 0 ? src.invMass[0] : Double.NaN;
+        this.rec = new double[Math.multiplyExact(n, stride)];
+        int[] order = mortonOrder(src);
+        for (int q = 0; q < n; q++) {
+            int o = order[q];
+            int at = q * stride;
+            rec[at + X] = src.x[o];
+            rec[at + Y] = src.y[o];
+            rec[at + VX] = src.vx[o];
+            rec[at + VY] = src.vy[o];
+            if (!shared) {
+                rec[at + R] = src.radius[o];
+                rec[at + IM] = src.invMass[o];
+            }
+        }
+        for (int q = n - 1; q >= 0; q--) {
+            int row = rowOf(rec[q * stride + Y]);
+            int col = colOf(rec[q * stride + X]);
+            int cell = row * cols + col;
+            ir[q * IS + CELL] = row << AXIS_BITS | col;
+            ir[q * IS + CNEXT] = cellHead[cell];
+            cellHead[cell] = q;
+        }
+        for (int i = 0; i < n; i++) {
+            ir[i * IS + PARTNER] = NONE;
+        }
+        this.domains = new Domain[k];
+        int buckets = Integer.highestOneBit(Math.max(64, n / (2 * k) - 1)) << 1;
+        for (int d = 0; d < k; d++) {
+            domains[d] = new Domain(d, new CalendarQueue(n, buckets, rec, stride, EV, ir, IS, QNEXT));
+        }
+        boolean many = k > 1;
+        this.logStamp = many ? new int[n] : null;
+        this.lastEntry = many ? new int[n] : null;
+        this.dirtyStamp = many ? new int[n] : null;
+        this.undoMark = many ? new int[n] : null;
+        this.xTime = many ? new double[n] : null;
+        this.xPartner = many ? new int[n] : null;
+        this.xPCount = many ? new int[n] : null;
+        this.xPos = many ? new int[n] : null;
+        if (many) {
+            Arrays.fill(xPos, -1);
+        }
+    }
+
+    private static long cellsAlong(double length, double minCell) {
+        double k = Math.floor(length / minCell);
+        return k >= 1 ? (long) Math.min(k, 1 << 30) : 1;
+    }
+
+    private int colOf(double x) {
+        int col = (int) (x / cellW);
+        return col < 0 ? 0 : (col >= cols ? cols - 1 : col);
+    }
+
+    private int rowOf(double y) {
+        int row = (int) (y / cellH);
+        return row < 0 ? 0 : (row >= rows ? rows - 1 : row);
+    }
+
+    /** Disc ids sorted by the Morton code of their cell (as in {@code fast}). */
+    private int[] mortonOrder(Discs src) {
+        int shiftC = Math.max(0, 32 - Integer.numberOfLeadingZeros(cols - 1) - 16);
+        int shiftR = Math.max(0, 32 - Integer.numberOfLeadingZeros(rows - 1) - 16);
+        int[] key = new int[n];
+        int[] ids = new int[n];
+        for (int i = 0; i < n; i++) {
+            key[i] = spread(colOf(src.x[i]) >>> shiftC) | (spread(rowOf(src.y[i]) >>> shiftR) << 1);
+            ids[i] = i;
+        }
+        int[] ids2 = new int[n];
+        int[] key2 = new int[n];
+        int[] counts = new int[1 << 16];
+        for (int pass = 0; pass < 2; pass++) {
+            int shift = 16 * pass;
+            Arrays.fill(counts, 0);
+            for (int i = 0; i < n; i++) {
+                counts[(key[i] >>> shift) & 0xFFFF]++;
+            }
+            int sum = 0;
+            for (int b = 0; b < counts.length; b++) {
+                int cnt = counts[b];
+                counts[b] = sum;
+                sum += cnt;
+            }
+            for (int i = 0; i < n; i++) {
+                int at = counts[(key[i] >>> shift) & 0xFFFF]++;
+                ids2[at] = ids[i];
+                key2[at] = key[i];
+            }
+            int[] t = ids;
+            ids = ids2;
+            ids2 = t;
+            t = key;
+            key = key2;
+            key2 = t;
+        }
+        return ids;
+    }
+
+    private static int spread(int v) {
+        v &= 0xFFFF;
+        v = (v | (v << 8)) & 0x00FF00FF;
+        v = (v | (v << 4)) & 0x0F0F0F0F;
+        v = (v | (v << 2)) & 0x33333333;
+        return (v | (v << 1)) & 0x55555555;
+    }
+
+    private int sceneId(int k) {
+        if (sceneIds == null) {
+            sceneIds = mortonOrder(scene.newDiscs());
+        }
+        return sceneIds[k];
+    }
+
+    private double radius(int i) {
+        return stride > R ? rec[i * stride + R] : sharedRadius;
+    }
+
+    private double invMass(int i) {
+        return stride > IM ? rec[i * stride + IM] : sharedInvMass;
+    }
+
+    private int colOfDisc(int i) {
+        return ir[i * IS + CELL] & AXIS_MASK;
+    }
+
+    private Domain ownerOf(int i) {
+        return domains[colOwner[colOfDisc(i)]];
+    }
+
+    // ------------------------------------------------------------------------------------------------
+    // The run: windows and serial phases.
+
+    RunResult run() {
+        long started = System.nanoTime();
+        for (int i = 0; i < n; i++) {
+            if (invMass(i) > 0) {
+                rec[i * stride + EV] = ownerOf(i).predictFull(i, 0);
+            }
+        }
+        untilLocal = until;
+        replan(0);
+        if (domainCount > 1) {
+            for (int i = 0; i < n; i++) {
+                if (invMass(i) > 0) {
+                    crossPredict(i, 0);
+                }
+            }
+        }
+        Thread[] workers = new Thread[domainCount - 1];
+        try {
+            for (int d = 1; d < domainCount; d++) {
+                Domain dom = domains[d];
+                workers[d - 1] = Thread.ofPlatform().daemon().name("slabs-domain-" + d).start(dom::work);
+            }
+            loop();
+        } finally {
+            shutdown = true;
+            generation++;
+            for (Thread w : workers) {
+                if (w != null) {
+                    try {
+                        w.join();
+                    } catch (InterruptedException e) {
+                        Thread.currentThread().interrupt();
+                    }
+                }
+            }
+        }
+        double seconds = (System.nanoTime() - started) * 1e-9;
+        Discs out = finalState();
+        double energyEnd = Observables.kineticEnergy(out);
+        VirialAccumulator virial = serialVirial;
+        long pair = crossPairCollisions;
+        long wall = 0;
+        long events = crossDomainEvents + migrations;
+        long crossings = migrations;
+        long stale = 0;
+        long predictions = 0;
+        for (Domain d : domains) {
+            if (virial != null) {
+                virial.addAll(d.virial);
+            }
+            pair += d.pairCollisions;
+            wall += d.wallCollisions;
+            events += d.events;
+            crossings += d.crossings;
+            stale += d.staleEvents;
+            predictions += d.predictions;
+        }
+        Pressure pressure = VirialAccumulator.pressureOf(virial, out, energyStart, energyEnd, scene.box().area());
+        Map<String, Long> counters = new HashMap<>();
+        counters.put("domains", (long) domainCount);
+        counters.put("events", events);
+        counters.put("cellCrossings", crossings);
+        counters.put("staleEvents", stale);
+        counters.put("predictions", predictions);
+        counters.put("resyncs", resyncs);
+        counters.put("windows", windows);
+        counters.put("commits", commits);
+        counters.put("rollbacks", rollbacks);
+        counters.put("undoneEvents", undoneEvents);
+        counters.put("crossDomainEvents", crossDomainEvents);
+        counters.put("migrations", migrations);
+        counters.put("crossPredictions", crossPredictions);
+        counters.put("serialNanos", serialNanos);
+        counters.put("windowNanos", windowNanos);
+        return new RunResult("slabs", true, out, until, pair, wall, events,
+                energyStart, energyEnd, momentumStart, Observables.momentum(out), pressure, 0, seconds,
+                Map.copyOf(counters));
+    }
+
+    private void loop() {
+        double now = 0;
+        long progressMark = 0;
+        Domain single = domainCount == 1 ? domains[0] : null;
+        while (true) {
+            if (now >= resyncAt) {
+                resync(now);
+                now = 0;
+            }
+            // The earliest valid cross event bounds the window.
+            int top = validCrossTop(now);
+            double h = top >= 0 ? xTime[top] : INF;
+            double end = Math.min(Math.min(h, resyncAt), untilLocal);
+            boolean last = end == untilLocal && h > untilLocal && resyncAt > untilLocal;
+            if (single != null) {
+                single.runWindow(end, last);
+                if (last) {
+                    return;
+                }
+                now = end;
+                continue;
+            }
+            long t0 = System.nanoTime();
+            window++;
+            windows++;
+            for (Domain d : domains) {
+                d.startWindow(now);
+            }
+            windowEnd = end;
+            windowInclusive = last;
+            generation++;
+            domains[0].runWindowSafely(end, last);
+            for (int d = 1; d < domainCount; d++) {
+                domains[d].awaitDone(generation);
+            }
+            long t1 = System.nanoTime();
+            windowNanos += t1 - t0;
+            if (failure != null) {
+                throwFailure();
+            }
+            // Verify: the earliest contact with a changed edge disc, or the earliest stop.
+            double reached = end;
+            Domain stopper = null;
+            for (Domain d : domains) {
+                if (d.stopTime < reached) {
+                    reached = d.stopTime;
+                    stopper = d;
+                }
+            }
+            verify(now, reached);
+            double tStar = reached;
+            boolean contact = false;
+            if (violationT <= reached) {
+                tStar = violationT;
+                contact = true;
+            }
+            boolean violated = contact || stopper != null;
+            if (violated) {
+                rollbacks++;
+                for (Domain d : domains) {
+                    d.undo(tStar);
+                }
+            } else {
+                commits++;
+            }
+            // Changed edge discs (records restored if undone) get new cross predictions.
+            for (Domain d : domains) {
+                for (int q = 0; q < d.dirtyCount; q++) {
+                    crossPredict(d.dirty[q], tStar);
+                }
+            }
+            if (contact) {
+                serialCollide(violationX, violationY, tStar);
+            } else if (stopper != null) {
+                migrate(stopper.stopDisc, tStar);
+            } else if (end == h && h <= untilLocal && dirtyStamp[top] != window && crossValid(top)) {
+                // (A top whose disc or partner changed in the window is not processed: the next window,
+                // from here, re-predicts it.)
+                processCrossTop(top, h);
+            } else if (last) {
+                serialNanos += System.nanoTime() - t1;
+                return;
+            }
+            now = tStar;
+            if (audit != null) {
+                audit.check(snapshot(), flight, now, epoch + now);
+            }
+            serialNanos += System.nanoTime() - t1;
+            if (windows - progressMark >= 1024) {
+                progressMark = windows;
+                progress.simulatedTime(epoch + now);
+            }
+        }
+    }
+
+    private void throwFailure() {
+        Throwable f = failure;
+        if (f instanceof RuntimeException re) {
+            throw re;
+        }
+        if (f instanceof Error e) {
+            throw e;
+        }
+        throw new IllegalStateException(f);
+    }
+
+    /** The cross heap's top after re-predicting stale tops, or -1 if empty. */
+    private int validCrossTop(double now) {
+        if (domainCount == 1) {
+            return -1;
+        }
+        while (xSize > 0) {
+            int i = xHeap[0];
+            if (crossValid(i)) {
+                return i;
+            }
+            crossPredict(i, now);
+        }
+        return -1;
+    }
+
+    /** Whether disc i's cross prediction still holds, given that i itself has not changed since. */
+    private boolean crossValid(int i) {
+        int p = xPartner[i];
+        return p >= 0 ? ir[p * IS + COUNT] == xPCount[i]
+                : p != MIGRATE || (rec[i * stride + EV] == xTime[i] && ownerOf(i).migratesAtEvent(i));
+    }
+
+    private void processCrossTop(int i, double t) {
+        int p = xPartner[i];
+        if (p == MIGRATE) {
+            migrate(i, t);
+        } else {
+            serialCollide(i, p, t);
+        }
+    }
+
+    /** Contact of discs x and y (different domains) at local time t, processed serially. */
+    private void serialCollide(int a, int b, double now) {
+        crossDomainEvents++;
+        Domain da = ownerOf(a);
+        Domain db = ownerOf(b);
+        double abs = epoch + now;
+        serialStall.event(abs, a, b);
+        da.queue.remove(a);
+        db.queue.remove(b);
+        da.advance(a, now);
+        db.advance(b, now);
+        int at = a * stride;
+        int bt = b * stride;
+        double dx = boundary.separationX(rec[bt + X] - rec[at + X]);
+        double dy = boundary.separationY(rec[bt + Y] - rec[at + Y]);
+        double e = restitution.pair(a, b, abs);
+        boolean bMobile = invMass(b) > 0;
+        if (gravity && !bMobile) {
+            double dist = Math.sqrt(dx * dx + dy * dy);
+            serialStall.pegContact(abs, a, b, dx / dist, dy / dist, rec[at + VX], rec[at + VY], dist);
+        }
+        da.load(a, 0);
+        da.load(b, 1);
+        double w = PairLaw.collide(da.pair, 0, 1, dx, dy, e);
+        da.store(a, 0);
+        da.store(b, 1);
+        crossPairCollisions++;
+        restitution.collided(a, abs);
+        ir[a * IS + COUNT]++;
+        if (bMobile) {
+            restitution.collided(b, abs);
+            ir[b * IS + COUNT]++;
+        }
+        if (serialVirial != null) {
+            serialVirial.add(abs, w);
+        }
+        da.queue.insert(a, da.predictFull(a, now));
+        if (bMobile) {
+            db.queue.insert(b, db.predictFull(b, now));
+        }
+        crossPredict(a, now);
+        if (bMobile) {
+            crossPredict(b, now);
+        }
+    }
+
+    /** Disc i crosses into a foreign column at local {@code now}: it changes domain. */
+    private void migrate(int i, double now) {
+        migrations++;
+        Domain from = ownerOf(i);
+        byte k = (byte) (ir[i * IS + CELL] >>> KIND_SHIFT);
+        serialStall.event(epoch + now, i, StallGuard.CELL_SIDE);
+        from.queue.remove(i);
+        from.advance(i, now);
+        moveCell(i, k);
+        // Predictions of i's old domain against i are stale from now on.
+        ir[i * IS + COUNT]++;
+        Domain to = ownerOf(i);
+        to.queue.insert(i, to.predictFull(i, now));
+        crossPredict(i, now);
+    }
+
+    /**
+     * Moves disc i to the neighbouring cell through side k (periodic edges move the position by exactly
+     * one box length) and relinks the cell lists; returns the new packed cell.
+     */
+    private int moveCell(int i, byte k) {
+        int packed = ir[i * IS + CELL];
+        int col = packed & AXIS_MASK;
+        int row = (packed >>> AXIS_BITS) & AXIS_MASK;
+        int old = row * cols + col;
+        switch (k) {
+            case CROSS_LEFT -> {
+                if (--col < 0) {
+                    col = cols - 1;
+                    rec[i * stride + X] += width;
+                }
+            }
+            case CROSS_RIGHT -> {
+                if (++col == cols) {
+                    col = 0;
+                    rec[i * stride + X] -= width;
+                }
+            }
+            case CROSS_DOWN -> {
+                if (--row < 0) {
+                    row = rows - 1;
+                    rec[i * stride + Y] += height;
+                }
+            }
+            default -> {
+                if (++row == rows) {
+                    row = 0;
+                    rec[i * stride + Y] -= height;
+                }
+            }
+        }
+        unlink(i, old);
+        int cell = row * cols + col;
+        ir[i * IS + CELL] = row << AXIS_BITS | col;
+        ir[i * IS + CNEXT] = cellHead[cell];
+        cellHead[cell] = i;
+        return row << AXIS_BITS | col;
+    }
+
+    private void unlink(int i, int cell) {
+        int h = cellHead[cell];
+        if (h == i) {
+            cellHead[cell] = ir[i * IS + CNEXT];
+        } else {
+            while (ir[h * IS + CNEXT] != i) {
+                h = ir[h * IS + CNEXT];
+            }
+            ir[h * IS + CNEXT] = ir[i * IS + CNEXT];
+        }
+    }
+
+    // ------------------------------------------------------------------------------------------------
+    // Cross predictions (serial phases only: they read discs of two domains).
+
+    /**
+     * Predicts mobile disc i's earliest cross event from local {@code now}: a contact with a disc in a
+     * foreign column next to its cell, or its migration if its scheduled event is one. Discs outside
+     * edge columns leave the heap.
+     */
+    private void crossPredict(int i, double now) {
+        if (invMass(i) == 0) {
+            return;
+        }
+        int packed = ir[i * IS + CELL];
+        int col = packed & AXIS_MASK;
+        if (!edgeCol[col]) {
+            xRemove(i);
+            return;
+        }
+        crossPredictions++;
+        int row = (packed >>> AXIS_BITS) & AXIS_MASK;
+        int own = colOwner[col];
+        Domain dom = domains[own];
+        double best = INF;
+        int bestP = NONE;
+        if (dom.migratesAtEvent(i)) {
+            best = rec[i * stride + EV];
+            bestP = MIGRATE;
+        }
+        // Contacts are searched up to the disc's next cell side, as the domain searches (quartics).
+        double horizon = INF;
+        if (fullOnCross) {
+            dom.load(i, 0);
+            horizon = now + dom.crossing(i, now);
+        }
+        load(xpair, i, 0);
+        for (int dc = -1; dc <= 1; dc += 2) {
+            int c = col + dc;
+            if (c < 0 || c >= cols) {
+                if (!periodic) {
+                    continue;
+                }
+                c = c < 0 ? c + cols : c - cols;
+            }
+            if (colOwner[c] == own) {
+                continue;
+            }
+            for (int dr = -1; dr <= 1; dr++) {
+                int r = row + dr;
+                if (r < 0 || r >= rows) {
+                    if (!periodic) {
+                        continue;
+                    }
+                    r = r < 0 ? r + rows : r - rows;
+                }
+                for (int j = cellHead[r * cols + c]; j != NIL; j = ir[j * IS + CNEXT]) {
+                    load(xpair, j, 1);
+                    double t = now + flight.timeToContact(xpair, 0, 1, now, horizon, boundary);
+                    if (t < best) {
+                        best = t;
+                        bestP = j;
+                    }
+                }
+            }
+        }
+        if (best == INF) {
+            xRemove(i);
+            return;
+        }
+        xTime[i] = best;
+        xPartner[i] = bestP;
+        xPCount[i] = bestP >= 0 ? ir[bestP * IS + COUNT] : 0;
+        xUpdate(i);
+    }
+
+    private void load(Discs d, int i, int slot) {
+        int at = i * stride;
+        d.x[slot] = rec[at + X];
+        d.y[slot] = rec[at + Y];
+        d.vx[slot] = rec[at + VX];
+        d.vy[slot] = rec[at + VY];
+        d.t[slot] = rec[at + T];
+        d.radius[slot] = radius(i);
+        d.invMass[slot] = invMass(i);
+    }
+
+    private void xUpdate(int i) {
+        int k = xPos[i];
+        if (k < 0) {
+            if (xSize == xHeap.length) {
+                xHeap = Arrays.copyOf(xHeap, 2 * xSize);
+            }
+            k = xSize++;
+            xHeap[k] = i;
+            xPos[i] = k;
+        }
+        xSiftUp(k);
+        xSiftDown(xPos[i]);
+    }
+
+    private void xRemove(int i) {
+        int k = xPos[i];
+        if (k < 0) {
+            return;
+        }
+        xPos[i] = -1;
+        int last = xHeap[--xSize];
+        if (k == xSize) {
+            return;
+        }
+        xHeap[k] = last;
+        xPos[last] = k;
+        xSiftUp(k);
+        xSiftDown(xPos[last]);
+    }
+
+    private void xSiftUp(int k) {
+        int i = xHeap[k];
+        double t = xTime[i];
+        while (k > 0) {
+            int parent = (k - 1) >>> 1;
+            int p = xHeap[parent];
+            if (xTime[p] <= t) {
+                break;
+            }
+            xHeap[k] = p;
+            xPos[p] = k;
+            k = parent;
+        }
+        xHeap[k] = i;
+        xPos[i] = k;
+    }
+
+    private void xSiftDown(int k) {
+        int i = xHeap[k];
+        double t = xTime[i];
+        int half = xSize >>> 1;
+        while (k < half) {
+            int child = 2 * k + 1;
+            int c = xHeap[child];
+            int right = child + 1;
+            if (right < xSize && xTime[xHeap[right]] < xTime[c]) {
+                child = right;
+                c = xHeap[child];
+            }
+            if (t <= xTime[c]) {
+                break;
+            }
+            xHeap[k] = c;
+            xPos[c] = k;
+            k = child;
+        }
+        xHeap[k] = i;
+        xPos[i] = k;
+    }
+
+    // ------------------------------------------------------------------------------------------------
+    // Verification of a window against the logged segments.
+
+    private double violationT;
+    private int violationX;
+    private int violationY;
+    /** Scratch: one disc's segments (state from the record or a log entry, valid from..to). */
+    private final Discs segA = new Discs(2);
+
+    /**
+     * Sets {@link #violationT} (and the pair) to the earliest contact before {@code limit} between a
+     * disc that changed in the window (an edge disc, logged) and a foreign disc, with the segments the
+     * discs really followed; +Infinity if none.
+     */
+    private void verify(double start, double limit) {
+        violationT = INF;
+        for (Domain a : domains) {
+            for (int q = 0; q < a.dirtyCount; q++) {
+                int x = a.dirty[q];
+                if (invMass(x) == 0) {
+                    continue;
+                }
+                // Segments of x: the current record from its last event on, then each logged state.
+                int e = logStamp[x] == window ? lastEntry[x] : -1;
+                double segEnd = limit;
+                double segStart = e >= 0 ? a.evTime[a.enEvent[e]] : start;
+                int cell = ir[x * IS + CELL] & CELL_MASK;
+                checkSegment(a, x, -1, cell, segStart, segEnd, start, limit);
+                while (e >= 0) {
+                    segEnd = a.evTime[a.enEvent[e]];
+                    int prev = a.enPrev[e];
+                    segStart = prev >= 0 ? a.evTime[a.enEvent[prev]] : start;
+                    checkSegment(a, x, e, a.enInts[e * 4 + CELL] & CELL_MASK, segStart, segEnd, start, limit);
+                    e = prev;
+                }
+            }
+        }
+    }
+
+    /**
+     * Checks disc x's segment (its record if {@code entry} is -1, else the state saved in log entry
+     * {@code entry} of domain a), in cell {@code cell} over [from, to], against the foreign discs in
+     * the columns next to that cell: unchanged ones on their records, changed ones on all their
+     * segments.
+     */
+    private void checkSegment(Domain a, int x, int entry, int cell, double from, double to, double start, double limit) {
+        if (from > limit) {
+            return;
+        }
+        to = Math.min(to, limit);
+        int col = cell & AXIS_MASK;
+        if (!edgeCol[col]) {
+            return;
+        }
+        int row = cell >>> AXIS_BITS;
+        loadSegment(segA, 0, a, x, entry);
+        for (int dc = -1; dc <= 1; dc += 2) {
+            int c = col + dc;
+            if (c < 0 || c >= cols) {
+                if (!periodic) {
+                    continue;
+                }
+                c = c < 0 ? c + cols : c - cols;
+            }
+            if (colOwner[c] == a.id) {
+                continue;
+            }
+            Domain b = domains[colOwner[c]];
+            for (int dr = -1; dr <= 1; dr++) {
+                int r = row + dr;
+                if (r < 0 || r >= rows) {
+                    if (!periodic) {
+                        continue;
+                    }
+                    r = r < 0 ? r + rows : r - rows;
+                }
+                for (int y = cellHead[r * cols + c]; y != NIL; y = ir[y * IS + CNEXT]) {
+                    if (logStamp[y] != window) {
+                        loadSegment(segA, 1, b, y, -1);
+                        contact(x, y, from, to);
+                    }
+                }
+            }
+            // Changed discs of b: wherever they were, on every segment.
+            for (int q = 0; q < b.dirtyCount; q++) {
+                int y = b.dirty[q];
+                int e = logStamp[y] == window ? lastEntry[y] : -1;
+                double yEnd = limit;
+                double yStart = e >= 0 ? b.evTime[b.enEvent[e]] : start;
+                loadSegment(segA, 1, b, y, -1);
+                contact(x, y, Math.max(from, yStart), Math.min(to, yEnd));
+                while (e >= 0) {
+                    yEnd = b.evTime[b.enEvent[e]];
+                    int prev = b.enPrev[e];
+                    yStart = prev >= 0 ? b.evTime[b.enEvent[prev]] : start;
+                    loadSegment(segA, 1, b, y, e);
+                    contact(x, y, Math.max(from, yStart), Math.min(to, yEnd));
+                    e = prev;
+                }
+            }
+        }
+    }
+
+    private void loadSegment(Discs d, int slot, Domain dom, int i, int entry) {
+        if (entry < 0) {
+            load(d, i, slot);
+            return;
+        }
+        int at = entry * dom.rs;
+        d.x[slot] = dom.enRec[at + X];
+        d.y[slot] = dom.enRec[at + Y];
+        d.vx[slot] = dom.enRec[at + VX];
+        d.vy[slot] = dom.enRec[at + VY];
+        d.t[slot] = dom.enRec[at + T];
+        d.radius[slot] = radius(i);
+        d.invMass[slot] = invMass(i);
+    }
+
+    /** Contact of the two loaded segments within [from, to], lowering {@link #violationT}. */
+    private void contact(int x, int y, double from, double to) {
+        if (!(from <= to)) {
+            return;
+        }
+        double t = from + flight.timeToContact(segA, 0, 1, from, to, boundary);
+        if (t <= to && t < violationT) {
+            violationT = t;
+            violationX = x;
+            violationY = y;
+        }
+    }
+
+    // ------------------------------------------------------------------------------------------------
+    // Clocks.
+
+    /** Re-anchors time at local {@code now} (serial): every disc advanced, clocks and event times shifted. */
+    private void resync(double now) {
+        if (now > 0) {
+            resyncs++;
+            Domain d0 = domains[0];
+            for (int i = 0; i < n; i++) {
+                d0.advance(i, now);
+                int at = i * stride;
+                rec[at + T] = 0;
+                if (rec[at + EV] != INF) {
+                    rec[at + EV] = Math.max(0, rec[at + EV] - now);
+                }
+            }
+            for (int k = 0; k < xSize; k++) {
+                int i = xHeap[k];
+                xTime[i] = Math.max(0, xTime[i] - now);
+            }
+            epoch += now;
+            untilLocal = until - epoch;
+        }
+        replan(0);
+    }
+
+    /** Sizes each domain's calendar from the mean event delay (trimmed of outliers) and rebuilds it. */
+    private void replan(double now) {
+        int[] members = new int[n];
+        double spanMax = 0;
+        for (Domain d : domains) {
+            int count = 0;
+            for (int i = 0; i < n; i++) {
+                if (colOwner[colOfDisc(i)] == d.id) {
+                    members[count++] = i;
+                }
+            }
+            double sum = 0;
+            long k = 0;
+            for (int q = 0; q < count; q++) {
+                double t = rec[members[q] * stride + EV];
+                if (t != INF) {
+                    sum += t - now;
+                    k++;
+                }
+            }
+            double mean = k > 0 ? sum / k : 1;
+            if (k > 0) {
+                double cut = 10 * mean;
+                sum = 0;
+                k = 0;
+                for (int q = 0; q < count; q++) {
+                    double t = rec[members[q] * stride + EV];
+                    if (t - now <= cut) {
+                        sum += t - now;
+                        k++;
+                    }
+                }
+                mean = k > 0 ? sum / k : mean;
+            }
+            if (!(mean > 0) || Double.isInfinite(mean)) {
+                mean = untilLocal > 0 && Double.isFinite(untilLocal) ? untilLocal : 1;
+            }
+            double span = SPAN_MEANS * mean;
+            d.queue.rebuild(span / d.queue.buckets(), now, members, count);
+            spanMax = Math.max(spanMax, span);
+        }
+        resyncAt = now + RESYNC_SPANS * spanMax;
+    }
+
+    private Discs finalState() {
+        Discs out = scene.newDiscs();
+        int[] order = mortonOrder(out);
+        Domain d0 = domains[0];
+        for (int k = 0; k < n; k++) {
+            d0.advance(k, untilLocal);
+            int o = order[k];
+            int at = k * stride;
+            out.x[o] = boundary.wrapX(rec[at + X]);
+            out.y[o] = boundary.wrapY(rec[at + Y]);
+            out.vx[o] = rec[at + VX];
+            out.vy[o] = rec[at + VY];
+            out.t[o] = until;
+        }
+        return out;
+    }
+
+    private Discs snapshot() {
+        Discs all = new Discs(n);
+        for (int i = 0; i < n; i++) {
+            int at = i * stride;
+            all.x[i] = rec[at + X];
+            all.y[i] = rec[at + Y];
+            all.vx[i] = rec[at + VX];
+            all.vy[i] = rec[at + VY];
+            all.t[i] = rec[at + T];
+            all.radius[i] = radius(i);
+            all.invMass[i] = invMass(i);
+        }
+        return all;
+    }
+
+    // ------------------------------------------------------------------------------------------------
+
+    /**
+     * One slab: {@code fast}'s event loop over the discs of its columns, with an undo log while windows
+     * can be rolled back. Its methods run on its own thread during a window, and on the coordinator's
+     * in serial phases (the owner then waits at the barrier).
+     */
+    final class Domain {
+        final int id;
+        final CalendarQueue queue;
+        final Discs pair = new Discs(2);
+        private final int[] visitCell = new int[9];
+        private final int[] heads = new int[9];
+        private final double[] visitShiftX = new double[9];
+        private final double[] visitShiftY = new double[9];
+        private double found;
+        private int foundP;
+        private byte crossKind;
+        final StallGuard stallGuard = new StallGuard(scene, SlabsRun.this::sceneId);
+        final VirialAccumulator virial = periodic ? new VirialAccumulator(0, until, PRESSURE_BLOCKS) : null;
+        long events;
+        long pairCollisions;
+        long wallCollisions;
+        long crossings;
+        long staleEvents;
+        long predictions;
+
+        /** Where the last window stopped before its end (a migration), +Infinity if it did not. */
+        double stopTime;
+        int stopDisc;
+        private volatile int done;
+
+        /** Undo log (only with several domains): events, then the disc records saved before them. */
+        private final boolean logging;
+        final int rs;
+        int logEvents;
+        double[] evTime = new double[64];
+        private long[] evCounters = new long[64 * 5];
+        private double[] evVirial = new double[64];
+        private int[] evFirst = new int[64];
+        int logEntries;
+        private int[] enDisc = new int[128];
+        int[] enEvent = new int[128];
+        int[] enPrev = new int[128];
+        double[] enRec;
+        int[] enInts = new int[128 * 4];
+        /** Edge discs touched in this window. */
+        int[] dirty = new int[64];
+        int dirtyCount;
+
+        Domain(int id, CalendarQueue queue) {
+            this.id = id;
+            this.queue = queue;
+            this.logging = domainCount > 1;
+            this.rs = stride + 1;
+            this.enRec = new double[128 * rs];
+        }
+
+        /** Worker thread body: run each published window, then report done. */
+        void work() {
+            int seen = 0;
+            while (true) {
+                int g = seen;
+                int spins = 0;
+                while ((g = generation) == seen) {
+                    if (++spins < 1 << 12) {
+                        Thread.onSpinWait();
+                    } else {
+                        Thread.yield();
+                    }
+                }
+                seen = g;
+                if (shutdown) {
+                    return;
+                }
+                runWindowSafely(windowEnd, windowInclusive);
+                done = g;
+            }
+        }
+
+        void runWindowSafely(double end, boolean inclusive) {
+            try {
+                runWindow(end, inclusive);
+            } catch (Throwable t) {
+                failure = t;
+                stopTime = -INF;
+            }
+        }
+
+        void awaitDone(int g) {
+            int spins = 0;
+            while (done != g) {
+                if (++spins < 1 << 12) {
+                    Thread.onSpinWait();
+                } else {
+                    Thread.yield();
+                }
+            }
+        }
+
+        void startWindow(double start) {
+            logEvents = 0;
+            logEntries = 0;
+            dirtyCount = 0;
+            stopTime = INF;
+            stopDisc = -1;
+        }
+
+        /** Whether disc i's scheduled event is a crossing into a foreign column. */
+        boolean migratesAtEvent(int i) {
+            if (domainCount == 1 || rec[i * stride + EV] == INF) {
+                return false;
+            }
+            int packed = ir[i * IS + CELL];
+            int k = packed >>> KIND_SHIFT;
+            if (k != CROSS_LEFT && k != CROSS_RIGHT) {
+                return false;
+            }
+            int col = packed & AXIS_MASK;
+            int c = k == CROSS_LEFT ? (col == 0 ? cols - 1 : col - 1) : (col == cols - 1 ? 0 : col + 1);
+            return colOwner[c] != id;
+        }
+
+        /**
+         * Processes this domain's events before {@code end} (up to it if {@code inclusive}); stops early
+         * at a migration, which only the serial phase may carry out.
+         */
+        void runWindow(double end, boolean inclusive) {
+            long progressMark = events;
+            while (true) {
+                int i = queue.peek();
+                if (i < 0) {
+                    return;
+                }
+                double now = queue.time(i);
+                if (now > end || (now == end && !inclusive)) {
+                    return;
+                }
+                if (logging && migratesAtEvent(i)) {
+                    stopTime = now;
+                    stopDisc = i;
+                    return;
+                }
+                if (logging) {
+                    beginEvent(now);
+                    log(i);
+                }
+                queue.pollTop();
+                events++;
+                int other = ir[i * IS + PARTNER];
+                byte k = (byte) (ir[i * IS + CELL] >>> KIND_SHIFT);
+                stallGuard.event(epoch + now, i, k != HIT ? StallGuard.CELL_SIDE : other);
+                if (k == RECHECK) {
+                    advance(i, now);
+                    queue.insert(i, predictFull(i, now));
+                } else if (k != HIT) {
+                    crossCell(i, now, k);
+                } else {
+                    int p = other;
+                    if (p >= 0) {
+                        if (ir[p * IS + COUNT] != ir[i * IS + PCOUNT]) {
+                            staleEvents++;
+                            advance(i, now);
+                            queue.insert(i, predictFull(i, now));
+                        } else {
+                            collidePair(i, p, now);
+                        }
+                    } else {
+                        collideWall(i, -1 - p, now);
+                    }
+                }
+                if (logging) {
+                    markIfEdge(i);
+                } else if (events - progressMark >= (1 << 16)) {
+                    progressMark = events;
+                    progress.simulatedTime(epoch + now);
+                }
+            }
+        }
+
+        private void beginEvent(double now) {
+            int k = logEvents++;
+            if (k == evTime.length) {
+                evTime = Arrays.copyOf(evTime, 2 * k);
+                evCounters = Arrays.copyOf(evCounters, 2 * k * 5);
+                evVirial = Arrays.copyOf(evVirial, 2 * k);
+                evFirst = Arrays.copyOf(evFirst, 2 * k);
+            }
+            evTime[k] = now;
+            evCounters[5 * k] = events;
+            evCounters[5 * k + 1] = pairCollisions;
+            evCounters[5 * k + 2] = wallCollisions;
+            evCounters[5 * k + 3] = crossings;
+            evCounters[5 * k + 4] = staleEvents;
+            evVirial[k] = 0;
+            evFirst[k] = logEntries;
+        }
+
+        /** Saves disc i's record before the event under way modifies it. */
+        private void log(int i) {
+            int e = logEntries++;
+            if (e == enDisc.length) {
+                enDisc = Arrays.copyOf(enDisc, 2 * e);
+                enEvent = Arrays.copyOf(enEvent, 2 * e);
+                enPrev = Arrays.copyOf(enPrev, 2 * e);
+                enRec = Arrays.copyOf(enRec, 2 * e * rs);
+                enInts = Arrays.copyOf(enInts, 2 * e * 4);
+            }
+            enDisc[e] = i;
+            enEvent[e] = logEvents - 1;
+            enPrev[e] = logStamp[i] == window ? lastEntry[i] : -1;
+            lastEntry[i] = e;
+            logStamp[i] = window;
+            System.arraycopy(rec, i * stride, enRec, e * rs, stride);
+            enRec[e * rs + stride] = restitution.lastCollision(i);
+            int it = i * IS;
+            enInts[4 * e + CELL] = ir[it + CELL];
+            enInts[4 * e + PARTNER] = ir[it + PARTNER];
+            enInts[4 * e + PCOUNT] = ir[it + PCOUNT];
+            enInts[4 * e + COUNT] = ir[it + COUNT];
+            markIfEdge(i);
+        }
+
+        private void markIfEdge(int i) {
+            if (edgeCol[ir[i * IS + CELL] & AXIS_MASK] && dirtyStamp[i] != window) {
+                dirtyStamp[i] = window;
+                if (dirtyCount == dirty.length) {
+                    dirty = Arrays.copyOf(dirty, 2 * dirtyCount);
+                }
+                dirty[dirtyCount++] = i;
+            }
+        }
+
+        /** Undoes every logged event at or after local {@code tStar}: records, cells, queue, counters. */
+        void undo(double tStar) {
+            int k = logEvents;
+            while (k > 0 && evTime[k - 1] >= tStar) {
+                k--;
+            }
+            if (k == logEvents) {
+                return;
+            }
+            undoneEvents += logEvents - k;
+            int first = evFirst[k];
+            for (int e = first; e < logEntries; e++) {
+                queue.remove(enDisc[e]);
+            }
+            for (int e = logEntries - 1; e >= first; e--) {
+                int i = enDisc[e];
+                int it = i * IS;
+                int savedCell = enInts[4 * e + CELL];
+                if ((savedCell & CELL_MASK) != (ir[it + CELL] & CELL_MASK)) {
+                    int cur = ir[it + CELL] & CELL_MASK;
+                    unlink(i, (cur >>> AXIS_BITS) * cols + (cur & AXIS_MASK));
+                    int back = ((savedCell & CELL_MASK) >>> AXIS_BITS) * cols + (savedCell & AXIS_MASK);
+                    ir[it + CNEXT] = cellHead[back];
+                    cellHead[back] = i;
+                }
+                ir[it + CELL] = savedCell;
+                ir[it + PARTNER] = enInts[4 * e + PARTNER];
+                ir[it + PCOUNT] = enInts[4 * e + PCOUNT];
+                ir[it + COUNT] = enInts[4 * e + COUNT];
+                System.arraycopy(enRec, e * rs, rec, i * stride, stride);
+                restitution.collided(i, enRec[e * rs + stride]);
+            }
+            undoStamp++;
+            for (int e = first; e < logEntries; e++) {
+                int i = enDisc[e];
+                if (undoMark[i] != undoStamp) {
+                    undoMark[i] = undoStamp;
+                    double t = rec[i * stride + EV];
+                    rec[i * stride + EV] = INF;
+                    queue.insert(i, t);
+                }
+            }
+            for (int q = k; q < logEvents; q++) {
+                if (evVirial[q] != 0 && virial != null) {
+                    virial.add(epoch + evTime[q], -evVirial[q]);
+                }
+            }
+            events = evCounters[5 * k];
+            pairCollisions = evCounters[5 * k + 1];
+            wallCollisions = evCounters[5 * k + 2];
+            crossings = evCounters[5 * k + 3];
+            staleEvents = evCounters[5 * k + 4];
+            logEvents = k;
+            logEntries = first;
+        }
+
+        void load(int i, int slot) {
+            int at = i * stride;
+            pair.x[slot] = rec[at + X];
+            pair.y[slot] = rec[at + Y];
+            pair.vx[slot] = rec[at + VX];
+            pair.vy[slot] = rec[at + VY];
+            pair.t[slot] = rec[at + T];
+            pair.radius[slot] = radius(i);
+            pair.invMass[slot] = invMass(i);
+        }
+
+        void store(int i, int slot) {
+            int at = i * stride;
+            rec[at + X] = pair.x[slot];
+            rec[at + Y] = pair.y[slot];
+            rec[at + VX] = pair.vx[slot];
+            rec[at + VY] = pair.vy[slot];
+            rec[at + T] = pair.t[slot];
+        }
+
+        void advance(int i, double time) {
+            if (straight) {
+                int at = i * stride;
+                double dt = time - rec[at + T];
+                rec[at + X] += rec[at + VX] * dt;
+                rec[at + Y] += rec[at + VY] * dt;
+                rec[at + T] = time;
+            } else {
+                load(i, 0);
+                flight.advance(pair, 0, time);
+                store(i, 0);
+            }
+        }
+
+        private Discs snapshotIfAudited() {
+            return snapshot();
+        }
+
+        private void collidePair(int a, int b, double now) {
+            double abs = epoch + now;
+            if (logging) {
+                log(b);
+            }
+            advance(a, now);
+            advance(b, now);
+            int at = a * stride;
+            int bt = b * stride;
+            double dx = boundary.separationX(rec[bt + X] - rec[at + X]);
+            double dy = boundary.separationY(rec[bt + Y] - rec[at + Y]);
+            double e = restitution.pair(a, b, abs);
+            boolean bMobile = invMass(b) > 0;
+            if (gravity && !bMobile) {
+                double dist = Math.sqrt(dx * dx + dy * dy);
+                stallGuard.pegContact(abs, a, b, dx / dist, dy / dist, rec[at + VX], rec[at + VY], dist);
+            }
+            load(a, 0);
+            load(b, 1);
+            double w = PairLaw.collide(pair, 0, 1, dx, dy, e);
+            store(a, 0);
+            store(b, 1);
+            pairCollisions++;
+            restitution.collided(a, abs);
+            ir[a * IS + COUNT]++;
+            if (bMobile) {
+                restitution.collided(b, abs);
+                ir[b * IS + COUNT]++;
+            }
+            if (virial != null) {
+                virial.add(abs, w);
+                if (logging) {
+                    evVirial[logEvents - 1] = w;
+                }
+            }
+            if (audit != null && !logging) {
+                audit.check(snapshotIfAudited(), flight, now, abs);
+            }
+            queue.insert(a, predictFull(a, now));
+            if (bMobile) {
+                queue.remove(b);
+                queue.insert(b, predictFull(b, now));
+            }
+            if (logging) {
+                markIfEdge(b);
+            }
+        }
+
+        private void collideWall(int i, int wall, double now) {
+            double abs = epoch + now;
+            advance(i, now);
+            double e = restitution.wall(i, abs);
+            load(i, 0);
+            if (gravity) {
+                stallGuard.wallContact(abs, i, wall, pair.vx[0], pair.vy[0]);
+            }
+            boundary.reflect(pair, 0, wall, e);
+            store(i, 0);
+            restitution.collided(i, abs);
+            ir[i * IS + COUNT]++;
+            wallCollisions++;
+            if (audit != null && !logging) {
+                audit.check(snapshotIfAudited(), flight, now, abs);
+            }
+            queue.insert(i, predictFull(i, now));
+        }
+
+        private void crossCell(int i, double now, byte k) {
+            crossings++;
+            advance(i, now);
+            int packed = moveCell(i, k);
+            int col = packed & AXIS_MASK;
+            int row = packed >>> AXIS_BITS;
+            queue.insert(i, fullOnCross ? predictFull(i, now) : predictAfterCrossing(i, now, k, col, row));
+        }
+
+        double crossing(int i, double now) {
+            int packed = ir[i * IS + CELL];
+            int col = packed & AXIS_MASK;
+            int row = (packed >>> AXIS_BITS) & AXIS_MASK;
+            double loX = col > 0 ? col * cellW : (periodic ? 0 : -INF);
+            double hiX = col < cols - 1 ? (col + 1) * cellW : (periodic ? width : INF);
+            double loY = row > 0 ? row * cellH : (periodic ? 0 : -INF);
+            double hiY = row < rows - 1 ? (row + 1) * cellH : (periodic ? height : INF);
+            if (straightImages) {
+                int at = i * stride;
+                double vx = rec[at + VX];
+                double vy = rec[at + VY];
+                double dt = now - rec[at + T];
+                double x = rec[at + X] + vx * dt;
+                double y = rec[at + Y] + vy * dt;
+                double tx = vx > 0 ? Math.max(0, (hiX - x) / vx) : (vx < 0 ? Math.max(0, (loX - x) / vx) : INF);
+                double ty = vy > 0 ? Math.max(0, (hiY - y) / vy) : (vy < 0 ? Math.max(0, (loY - y) / vy) : INF);
+                if (tx <= ty) {
+                    crossKind = vx > 0 ? CROSS_RIGHT : CROSS_LEFT;
+                    return tx;
+                }
+                crossKind = vy > 0 ? CROSS_UP : CROSS_DOWN;
+                return ty;
+            }
+            double tx = flight.timeToLeaveX(pair, 0, now, loX, hiX);
+            double ty = flight.timeToLeaveY(pair, 0, now, loY, hiY);
+            if (recheckX > 0 || recheckY > 0) {
+                double tr = INF;
+                if (recheckX > 0) {
+                    double x = flight.x(pair, 0, now);
+                    tr = flight.timeToLeaveX(pair, 0, now, x - recheckX, x + recheckX);
+                }
+                if (recheckY > 0) {
+                    double y = flight.y(pair, 0, now);
+                    tr = Math.min(tr, flight.timeToLeaveY(pair, 0, now, y - recheckY, y + recheckY));
+                }
+                if (tr < tx && tr < ty) {
+                    crossKind = RECHECK;
+                    return tr;
+                }
+            }
+            if (tx <= ty) {
+                if (tx == INF) {
+                    return INF;
+                }
+                double v = flight.vx(pair, 0, now + tx);
+                boolean right = v > 0 || (v == 0 && flight.x(pair, 0, now + tx) > 0.5 * (loX + hiX));
+                crossKind = right ? CROSS_RIGHT : CROSS_LEFT;
+                return tx;
+            }
+            double v = flight.vy(pair, 0, now + ty);
+            boolean up = v > 0 || (v == 0 && flight.y(pair, 0, now + ty) > 0.5 * (loY + hiY));
+            crossKind = up ? CROSS_UP : CROSS_DOWN;
+            return ty;
+        }
+
+        /** {@code fast}'s full prediction, against the discs of this domain's columns only. */
+        double predictFull(int i, double now) {
+            if (!straightImages) {
+                load(i, 0);
+            }
+            double best = INF;
+            int bestP = NONE;
+            if (walls != null) {
+                for (int w = 0; w < 4; w++) {
+                    double t = wallTime(i, w, now);
+                    if (t < best) {
+                        best = t;
+                        bestP = -1 - w;
+                    }
+                }
+            }
+            double cross = crossing(i, now);
+            byte ck = crossKind;
+            found = best;
+            foundP = bestP;
+            int packed = ir[i * IS + CELL];
+            int col = packed & AXIS_MASK;
+            int row = (packed >>> AXIS_BITS) & AXIS_MASK;
+            if (col > 0 && col < cols - 1 && row > 0 && row < rows - 1 && !edgeCol[col]) {
+                scan(i, now, now + cross, row * cols + col, around, NO_SHIFT, NO_SHIFT, 9);
+            } else {
+                int m = 0;
+                for (int dr = -1; dr <= 1; dr++) {
+                    for (int dc = -1; dc <= 1; dc++) {
+                        m = visit(col + dc, row + dr, m);
+                    }
+                }
+                scan(i, now, now + cross, 0, visitCell, visitShiftX, visitShiftY, m);
+            }
+            predictions++;
+            return schedule(i, now, found, foundP, cross, ck);
+        }
+
+        private double predictAfterCrossing(int i, double now, byte k, int col, int row) {
+            if (!straightImages) {
+                load(i, 0);
+            }
+            int bestP = ir[i * IS + PARTNER];
+            double cross = crossing(i, now);
+            byte ck = crossKind;
+            double horizon = now + cross;
+            double best = INF;
+            if (bestP >= 0) {
+                if (ir[bestP * IS + COUNT] != ir[i * IS + PCOUNT]) {
+                    return predictFull(i, now);
+                }
+                best = contactTime(i, bestP, now, horizon);
+            } else if (bestP != NONE) {
+                best = wallTime(i, -1 - bestP, now);
+            }
+            found = best;
+            foundP = best == INF ? NONE : bestP;
+            if (col > 0 && col < cols - 1 && row > 0 && row < rows - 1 && !edgeCol[col]) {
+                scan(i, now, horizon, row * cols + col, ahead[k], NO_SHIFT, NO_SHIFT, 3);
+            } else {
+                int dc = k == CROSS_RIGHT ? 1 : (k == CROSS_LEFT ? -1 : 0);
+                int dr = k == CROSS_UP ? 1 : (k == CROSS_DOWN ? -1 : 0);
+                int m = 0;
+                for (int s = -1; s <= 1; s++) {
+                    m = visit(col + dc + (dc == 0 ? s : 0), row + dr + (dr == 0 ? s : 0), m);
+                }
+                scan(i, now, horizon, 0, visitCell, visitShiftX, visitShiftY, m);
+            }
+            predictions++;
+            return schedule(i, now, found, foundP, cross, ck);
+        }
+
+        private double contactTime(int i, int j, double now, double horizon) {
+            if (!straightImages) {
+                load(j, 1);
+                return flight.timeToContact(pair, 0, 1, now, horizon, boundary);
+            }
+            int at = i * stride;
+            int jt = j * stride;
+            double xi = rec[at + X] + rec[at + VX] * (now - rec[at + T]);
+            double yi = rec[at + Y] + rec[at + VY] * (now - rec[at + T]);
+            double dx = boundary.separationX(rec[jt + X] + rec[jt + VX] * (now - rec[jt + T]) - xi);
+            double dy = boundary.separationY(rec[jt + Y] + rec[jt + VY] * (now - rec[jt + T]) - yi);
+            return PairLaw.timeToContact(dx, dy, rec[jt + VX] - rec[at + VX], rec[jt + VY] - rec[at + VY],
+                    radius(i) + radius(j));
+        }
+
+        private double wallTime(int i, int wall, double now) {
+            if (!straightImages) {
+                return flight.timeToWall(pair, 0, wall, now, walls);
+            }
+            int at = i * stride;
+            double dt = now - rec[at + T];
+            return walls.timeToWall(wall, rec[at + X] + rec[at + VX] * dt, rec[at + Y] + rec[at + VY] * dt,
+                    rec[at + VX], rec[at + VY], radius(i));
+        }
+
+        /** As {@code fast}'s visit, but a column of another domain is not visited. */
+        private int visit(int c, int r, int m) {
+            double shiftX = 0;
+            double shiftY = 0;
+            if (c < 0 || c >= cols) {
+                if (!periodic) {
+                    return m;
+                }
+                shiftX = c < 0 ? -width : width;
+                c = c < 0 ? c + cols : c - cols;
+            }
+            if (colOwner[c] != id) {
+                return m;
+            }
+            if (r < 0 || r >= rows) {
+                if (!periodic) {
+                    return m;
+                }
+                shiftY = r < 0 ? -height : height;
+                r = r < 0 ? r + rows : r - rows;
+            }
+            visitCell[m] = r * cols + c;
+            visitShiftX[m] = shiftX;
+            visitShiftY[m] = shiftY;
+            return m + 1;
+        }
+
+        private void scan(int i, double now, double horizon, int base, int[] cells, double[] shiftX, double[] shiftY,
+                          int m) {
+            double best = found;
+            int bestP = foundP;
+            int[] first = heads;
+            for (int k = 0; k < m; k++) {
+                first[k] = cellHead[base + cells[k]];
+            }
+            if (!straightImages) {
+                for (int k = 0; k < m; k++) {
+                    for (int j = first[k]; j != NIL; j = ir[j * IS + CNEXT]) {
+                        if (j != i) {
+                            load(j, 1);
+                            double t = flight.timeToContact(pair, 0, 1, now, horizon, boundary);
+                            if (t < best) {
+                                best = t;
+                                bestP = j;
+                            }
+                        }
+                    }
+                }
+            } else {
+                double[] r = rec;
+                int st = stride;
+                boolean shared = st == R;
+                int at = i * st;
+                double vxi = r[at + VX];
+                double vyi = r[at + VY];
+                double xi = r[at + X] + vxi * (now - r[at + T]);
+                double yi = r[at + Y] + vyi * (now - r[at + T]);
+                double ri = radius(i);
+                double sigmaShared = ri + sharedRadius;
+                for (int k = 0; k < m; k++) {
+                    double ox = xi - shiftX[k];
+                    double oy = yi - shiftY[k];
+                    for (int j = first[k]; j != NIL; j = ir[j * IS + CNEXT]) {
+                        if (j != i) {
+                            int jt = j * st;
+                            double dt = now - r[jt + T];
+                            double vxj = r[jt + VX];
+                            double vyj = r[jt + VY];
+                            double t = PairLaw.timeToContact(r[jt + X] + vxj * dt - ox, r[jt + Y] + vyj * dt - oy,
+                                    vxj - vxi, vyj - vyi, shared ? sigmaShared : ri + r[jt + R]);
+                            if (t < best) {
+                                best = t;
+                                bestP = j;
+                            }
+                        }
+                    }
+                }
+            }
+            found = best;
+            foundP = bestP;
+        }
+
+        private double schedule(int i, double now, double best, int bestP, double cross, byte ck) {
+            ir[i * IS + PARTNER] = bestP;
+            ir[i * IS + PCOUNT] = bestP >= 0 ? ir[bestP * IS + COUNT] : 0;
+            if (cross < best) {
+                ir[i * IS + CELL] = (ir[i * IS + CELL] & CELL_MASK) | ck << KIND_SHIFT;
+                return now + cross;
+            }
+            ir[i * IS + CELL] &= CELL_MASK;
+            return best == INF ? INF : now + best;
+        }
+    }
+}

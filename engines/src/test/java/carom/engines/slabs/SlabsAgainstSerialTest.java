@@ -1,0 +1,103 @@
+package carom.engines.slabs;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
+
+import carom.core.engine.RunOptions;
+import carom.core.engine.RunResult;
+import carom.core.scene.Scene;
+import carom.core.state.Discs;
+import carom.engines.reference.ChainScenes;
+import carom.engines.reference.Invariants;
+import carom.engines.reference.RandomScenes;
+import carom.engines.serial.SerialEngine;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Several domains against the serial reference where cross-slab traffic is heavy: dense mid-size
+ * scenes cut into 2 to 4 slabs (the windows are short, some are rolled back) and the six-disc chains
+ * laid across slab boundaries, whose momentum crosses a boundary faster than any disc moves.
+ */
+class SlabsAgainstSerialTest {
+    private static final double SAME = 1e-8;
+
+    private static RunResult slabs(Scene scene, int domains) {
+        return Invariants.check(scene, new SlabsEngine().run(scene, RunOptions.until(scene.until()).withThreads(domains)));
+    }
+
+    private static void assertSame(String name, RunResult actual, RunResult serial) {
+        assertThat(actual.pairCollisions()).as("%s: pair collisions", name).isEqualTo(serial.pairCollisions());
+        assertThat(actual.wallCollisions()).as("%s: wall collisions", name).isEqualTo(serial.wallCollisions());
+        Discs a = actual.finalState();
+        Discs s = serial.finalState();
+        for (int i = 0; i < s.n; i++) {
+            assertThat(a.x[i]).as("%s: x of %d", name, i).isCloseTo(s.x[i], within(SAME));
+            assertThat(a.y[i]).as("%s: y of %d", name, i).isCloseTo(s.y[i], within(SAME));
+            assertThat(a.vx[i]).as("%s: vx of %d", name, i).isCloseTo(s.vx[i], within(SAME));
+            assertThat(a.vy[i]).as("%s: vy of %d", name, i).isCloseTo(s.vy[i], within(SAME));
+        }
+    }
+
+    @ParameterizedTest(name = "N {0}, phi {1}, periodic {2}, {5} domains")
+    @CsvSource({
+            "900, 0.7, false, 4, 0.15, 2",
+            "900, 0.7, true, 4, 0.15, 3",
+            "1600, 0.45, true, 5, 0.4, 4",
+            "1600, 0.6, false, 6, 0.3, 3",
+            "2500, 0.7, true, 7, 0.12, 4",
+    })
+    void denseScenesCutIntoSlabsMatchSerial(int n, double phi, boolean periodic, long seed, double until, int domains) {
+        Scene scene = RandomScenes.dense(n, phi, periodic, seed, until);
+        RunResult r = slabs(scene, domains);
+        RunResult serial = new SerialEngine().run(scene, RunOptions.until(until));
+        assertThat(r.counters().get("domains")).isEqualTo(domains);
+        assertThat(r.pairCollisions()).as("collisions").isGreaterThan(n / 2);
+        assertThat(r.counters().get("crossDomainEvents")).as("cross-slab contacts").isPositive();
+        assertThat(r.counters().get("windows")).isEqualTo(r.counters().get("commits") + r.counters().get("rollbacks"));
+        assertSame(scene.name(), r, serial);
+    }
+
+    @Test
+    void denseScenesDoRollBackAndStillMatch() {
+        // Many short windows with heavy traffic at four boundaries: the undo path must be exercised.
+        Scene scene = RandomScenes.dense(2500, 0.7, true, 7, 0.12);
+        RunResult r = slabs(scene, 4);
+        assertThat(r.counters().get("rollbacks")).as("rollbacks").isPositive();
+        assertThat(r.counters().get("undoneEvents")).as("undone events").isPositive();
+        assertSame(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())));
+    }
+
+    @ParameterizedTest(name = "{0} domains")
+    @CsvSource({"2", "3"})
+    void theSixDiscChainAcrossASlabBoundaryMatchesSerial(int domains) {
+        for (Scene scene : new Scene[] {ChainScenes.alongX(), ChainScenes.downTheRows()}) {
+            RunResult r = slabs(scene, domains);
+            assertThat(r.counters().get("domains")).isEqualTo(domains);
+            assertSame(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())));
+        }
+        RunResult along = slabs(ChainScenes.alongX(), domains);
+        assertThat(along.counters().get("crossDomainEvents")).as("chain contacts across the boundary").isPositive();
+    }
+
+    @ParameterizedTest(name = "{0} domains")
+    @CsvSource({"2", "3", "4"})
+    void theLongChainThroughSeveralSlabsMatchesSerial(int domains) {
+        Scene scene = ChainScenes.longAlongX();
+        RunResult r = slabs(scene, domains);
+        assertThat(r.counters().get("domains")).isEqualTo(domains);
+        assertThat(r.counters().get("crossDomainEvents")).as("chain contacts across boundaries").isPositive();
+        assertSame(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())));
+    }
+
+    @Test
+    void aBoxTooNarrowForSlabsRunsOnOneDomain() {
+        Scene scene = RandomScenes.small(3);
+        RunResult r = slabs(scene, 64);
+        assertThat(r.counters().get("domains")).isLessThan(64);
+        RunResult one = new SlabsEngine().run(scene.withUntil(1.0), RunOptions.until(1.0).withThreads(1));
+        assertThat(one.counters().get("domains")).isEqualTo(1);
+        assertThat(one.counters().get("windows")).isZero();
+    }
+}

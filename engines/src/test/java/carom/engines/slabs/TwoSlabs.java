@@ -1,0 +1,44 @@
+package carom.engines.slabs;
+
+import carom.core.engine.Engine;
+import carom.core.engine.RunOptions;
+import carom.core.engine.RunResult;
+import carom.core.scene.Scene;
+import java.util.Set;
+
+/**
+ * The slabs engine with a fixed domain count whatever {@code --threads} the caller passes: the shared
+ * contracts run engines with one thread, and this engine must hold them with several domains.
+ */
+final class TwoSlabs implements Engine {
+    private final int domains;
+
+    TwoSlabs(int domains) {
+        this.domains = domains;
+    }
+
+    @Override
+    public String name() {
+        return "slabs";
+    }
+
+    @Override
+    public boolean exact() {
+        return true;
+    }
+
+    @Override
+    public String description() {
+        return "slabs at " + domains + " domains";
+    }
+
+    @Override
+    public Set<String> tunables() {
+        return new SlabsEngine().tunables();
+    }
+
+    @Override
+    public RunResult run(Scene scene, RunOptions options) {
+        return new SlabsEngine().run(scene, options.withThreads(domains));
+    }
+}
