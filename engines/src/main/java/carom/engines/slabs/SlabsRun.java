@@ -17,6 +17,8 @@ import carom.core.physics.Restitution;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
 import carom.engines.fast.CalendarQueue;
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
 import java.util.Arrays;
 import java.util.HashMap;
 import java.util.Map;
@@ -173,6 +175,9 @@ final class SlabsRun {
     private long crossPairCollisions;
     private long serialNanos;
     private long windowNanos;
+    /** CPU time of the coordinator in serial phases (robust to a loaded machine, unlike wall time). */
+    private long serialCpuNanos;
+    private static final ThreadMXBean CPU = ManagementFactory.getThreadMXBean();
     private final VirialAccumulator serialVirial;
     private final StallGuard serialStall;
 
@@ -469,6 +474,12 @@ final class SlabsRun {
         counters.put("crossPredictions", crossPredictions);
         counters.put("serialNanos", serialNanos);
         counters.put("windowNanos", windowNanos);
+        counters.put("serialCpuNanos", serialCpuNanos);
+        long windowCpu = 0;
+        for (Domain d : domains) {
+            windowCpu += d.windowCpuNanos;
+        }
+        counters.put("windowCpuNanos", windowCpu);
         return new RunResult("slabs", true, out, until, pair, wall, events,
                 energyStart, energyEnd, momentumStart, Observables.momentum(out), pressure, 0, seconds,
                 Map.copyOf(counters));
@@ -500,7 +511,7 @@ final class SlabsRun {
             window++;
             windows++;
             for (Domain d : domains) {
-                d.startWindow(now);
+                d.startWindow();
             }
             windowEnd = end;
             windowInclusive = last;
@@ -510,6 +521,7 @@ final class SlabsRun {
                 domains[d].awaitDone(generation);
             }
             long t1 = System.nanoTime();
+            long c1 = CPU.getCurrentThreadCpuTime();
             windowNanos += t1 - t0;
             if (failure != null) {
                 throwFailure();
@@ -555,6 +567,7 @@ final class SlabsRun {
                 processCrossTop(top, h);
             } else if (last) {
                 serialNanos += System.nanoTime() - t1;
+                serialCpuNanos += CPU.getCurrentThreadCpuTime() - c1;
                 return;
             }
             now = tStar;
@@ -562,6 +575,7 @@ final class SlabsRun {
                 audit.check(snapshot(), flight, now, epoch + now);
             }
             serialNanos += System.nanoTime() - t1;
+            serialCpuNanos += CPU.getCurrentThreadCpuTime() - c1;
             if (windows - progressMark >= 1024) {
                 progressMark = windows;
                 progress.simulatedTime(epoch + now);
@@ -1142,6 +1156,8 @@ final class SlabsRun {
         long crossings;
         long staleEvents;
         long predictions;
+        /** CPU time spent in windows (this domain's thread). */
+        long windowCpuNanos;
 
         /** Where the last window stopped before its end (a migration), +Infinity if it did not. */
         double stopTime;
@@ -1181,7 +1197,7 @@ final class SlabsRun {
                 int g = seen;
                 int spins = 0;
                 while ((g = generation) == seen) {
-                    if (++spins < 1 << 12) {
+                    if (++spins < 1 << 10) {
                         Thread.onSpinWait();
                     } else {
                         Thread.yield();
@@ -1197,18 +1213,20 @@ final class SlabsRun {
         }
 
         void runWindowSafely(double end, boolean inclusive) {
+            long c0 = CPU.getCurrentThreadCpuTime();
             try {
                 runWindow(end, inclusive);
             } catch (Throwable t) {
                 failure = t;
                 stopTime = -INF;
             }
+            windowCpuNanos += CPU.getCurrentThreadCpuTime() - c0;
         }
 
         void awaitDone(int g) {
             int spins = 0;
             while (done != g) {
-                if (++spins < 1 << 12) {
+                if (++spins < 1 << 10) {
                     Thread.onSpinWait();
                 } else {
                     Thread.yield();
@@ -1216,7 +1234,7 @@ final class SlabsRun {
             }
         }
 
-        void startWindow(double start) {
+        void startWindow() {
             logEvents = 0;
             logEntries = 0;
             dirtyCount = 0;
@@ -1439,10 +1457,6 @@ final class SlabsRun {
             }
         }
 
-        private Discs snapshotIfAudited() {
-            return snapshot();
-        }
-
         private void collidePair(int a, int b, double now) {
             double abs = epoch + now;
             if (logging) {
@@ -1479,7 +1493,7 @@ final class SlabsRun {
                 }
             }
             if (audit != null && !logging) {
-                audit.check(snapshotIfAudited(), flight, now, abs);
+                audit.check(snapshot(), flight, now, abs);
             }
             queue.insert(a, predictFull(a, now));
             if (bMobile) {
@@ -1505,7 +1519,7 @@ final class SlabsRun {
             ir[i * IS + COUNT]++;
             wallCollisions++;
             if (audit != null && !logging) {
-                audit.check(snapshotIfAudited(), flight, now, abs);
+                audit.check(snapshot(), flight, now, abs);
             }
             queue.insert(i, predictFull(i, now));
         }

@@ -5,6 +5,8 @@ import static org.assertj.core.api.Assertions.within;
 
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
+import carom.core.engine.SimulationStuckException;
+import carom.core.scene.Effects;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
 import carom.engines.reference.ChainScenes;
@@ -24,7 +26,14 @@ class SlabsAgainstSerialTest {
     private static final double SAME = 1e-8;
 
     private static RunResult slabs(Scene scene, int domains) {
-        return Invariants.check(scene, new SlabsEngine().run(scene, RunOptions.until(scene.until()).withThreads(domains)));
+        return Invariants.check(scene, slabsWithEffects(scene, domains));
+    }
+
+    /** Without {@link Invariants#check}, whose energy check assumes elastic flight without gravity. */
+    private static RunResult slabsWithEffects(Scene scene, int domains) {
+        RunResult r = new SlabsEngine().run(scene, RunOptions.until(scene.until()).withThreads(domains));
+        Invariants.noOverlapsAndInside(scene, r.finalState());
+        return r;
     }
 
     private static void assertSame(String name, RunResult actual, RunResult serial) {
@@ -67,6 +76,40 @@ class SlabsAgainstSerialTest {
         assertThat(r.counters().get("rollbacks")).as("rollbacks").isPositive();
         assertThat(r.counters().get("undoneEvents")).as("undone events").isPositive();
         assertSame(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())));
+    }
+
+    @ParameterizedTest(name = "{0} domains")
+    @CsvSource({"2", "4"})
+    void denseWalledGasWithGravityRestitutionAndTcMatchesSerial(int domains) {
+        // Parabolic flight, dissipative pairs and walls, TC memory: all undone and redone by rollbacks.
+        Scene scene = RandomScenes.dense(900, 0.5, false, 11, 0.25)
+                .withEffects(new Effects(0, -2, 1, 1, 0).withRestitution(0.8, 0.9).withTc(1e-3));
+        RunResult r = slabsWithEffects(scene, domains);
+        assertThat(r.counters().get("domains")).isEqualTo(domains);
+        assertThat(r.counters().get("crossDomainEvents")).isPositive();
+        assertSame(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())));
+    }
+
+    @ParameterizedTest(name = "{0} domains")
+    @CsvSource({"2", "3"})
+    void randomEffectScenesMatchSerialOnSeveralDomains(int domains) {
+        int split = 0;
+        for (long seed = 1; seed <= 40; seed++) {
+            Scene scene = RandomScenes.effects(seed);
+            RunResult r;
+            RunResult serial;
+            try {
+                serial = new SerialEngine().run(scene, RunOptions.until(scene.until()));
+            } catch (SimulationStuckException e) {
+                continue;
+            }
+            r = slabsWithEffects(scene, domains);
+            if (r.counters().get("domains") > 1) {
+                split++;
+            }
+            assertSame(scene.name(), r, serial);
+        }
+        assertThat(split).as("scenes that ran on several domains").isGreaterThan(10);
     }
 
     @ParameterizedTest(name = "{0} domains")
