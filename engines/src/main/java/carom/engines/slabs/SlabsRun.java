@@ -58,7 +58,11 @@ import java.util.Map;
  * <p>Counters: {@code domains}, {@code windows}, {@code commits} (windows without violation),
  * {@code rollbacks}, {@code undoneEvents}, {@code crossDomainEvents} (contacts processed serially),
  * {@code migrations}, {@code crossPredictions}, {@code serialNanos} and {@code windowNanos} (wall time
- * in serial phases and in windows, on the coordinating thread), and {@code fast}'s counters.
+ * in serial phases and in windows, on the coordinating thread), {@code serialCpuNanos} and
+ * {@code windowCpuNanos} (CPU time of the serial phases, and of all domains in windows),
+ * {@code criticalCpuNanos} (the sum over windows of the slowest domain's CPU time: with
+ * {@code serialCpuNanos}, what the run would take on dedicated cores, barrier latency aside; on a
+ * loaded machine wall time mostly measures the scheduler), and {@code fast}'s counters.
  */
 final class SlabsRun {
     private static final int PRESSURE_BLOCKS = 20;
@@ -177,6 +181,8 @@ final class SlabsRun {
     private long windowNanos;
     /** CPU time of the coordinator in serial phases (robust to a loaded machine, unlike wall time). */
     private long serialCpuNanos;
+    /** Sum over windows of the slowest domain's CPU time: the windows' wall time on dedicated cores. */
+    private long criticalCpuNanos;
     private static final ThreadMXBean CPU = ManagementFactory.getThreadMXBean();
     private final VirialAccumulator serialVirial;
     private final StallGuard serialStall;
@@ -185,6 +191,8 @@ final class SlabsRun {
     private volatile int generation;
     private volatile double windowEnd;
     private volatile boolean windowInclusive;
+    /** The published task is the first predictions, not a window. */
+    private volatile boolean initialTask;
     private volatile boolean shutdown;
     private volatile Throwable failure;
 
@@ -402,25 +410,31 @@ final class SlabsRun {
 
     RunResult run() {
         long started = System.nanoTime();
-        for (int i = 0; i < n; i++) {
-            if (invMass(i) > 0) {
-                rec[i * stride + EV] = ownerOf(i).predictFull(i, 0);
-            }
-        }
         untilLocal = until;
-        replan(0);
-        if (domainCount > 1) {
-            for (int i = 0; i < n; i++) {
-                if (invMass(i) > 0) {
-                    crossPredict(i, 0);
-                }
-            }
-        }
         Thread[] workers = new Thread[domainCount - 1];
         try {
             for (int d = 1; d < domainCount; d++) {
                 Domain dom = domains[d];
                 workers[d - 1] = Thread.ofPlatform().daemon().name("slabs-domain-" + d).start(dom::work);
+            }
+            // First predictions, each domain its own discs in its own thread.
+            initialTask = true;
+            generation++;
+            domains[0].predictOwnSafely();
+            for (int d = 1; d < domainCount; d++) {
+                domains[d].awaitDone(generation);
+            }
+            initialTask = false;
+            if (failure != null) {
+                throwFailure();
+            }
+            replan(0);
+            if (domainCount > 1) {
+                for (int i = 0; i < n; i++) {
+                    if (invMass(i) > 0) {
+                        crossPredict(i, 0);
+                    }
+                }
             }
             loop();
         } finally {
@@ -475,6 +489,7 @@ final class SlabsRun {
         counters.put("serialNanos", serialNanos);
         counters.put("windowNanos", windowNanos);
         counters.put("serialCpuNanos", serialCpuNanos);
+        counters.put("criticalCpuNanos", criticalCpuNanos);
         long windowCpu = 0;
         for (Domain d : domains) {
             windowCpu += d.windowCpuNanos;
@@ -523,6 +538,11 @@ final class SlabsRun {
             long t1 = System.nanoTime();
             long c1 = CPU.getCurrentThreadCpuTime();
             windowNanos += t1 - t0;
+            long slowest = 0;
+            for (Domain d : domains) {
+                slowest = Math.max(slowest, d.lastWindowCpu);
+            }
+            criticalCpuNanos += slowest;
             if (failure != null) {
                 throwFailure();
             }
@@ -1156,8 +1176,9 @@ final class SlabsRun {
         long crossings;
         long staleEvents;
         long predictions;
-        /** CPU time spent in windows (this domain's thread). */
+        /** CPU time spent in windows (this domain's thread), and in the last one. */
         long windowCpuNanos;
+        long lastWindowCpu;
 
         /** Where the last window stopped before its end (a migration), +Infinity if it did not. */
         double stopTime;
@@ -1207,7 +1228,11 @@ final class SlabsRun {
                 if (shutdown) {
                     return;
                 }
-                runWindowSafely(windowEnd, windowInclusive);
+                if (initialTask) {
+                    predictOwnSafely();
+                } else {
+                    runWindowSafely(windowEnd, windowInclusive);
+                }
                 done = g;
             }
         }
@@ -1220,7 +1245,21 @@ final class SlabsRun {
                 failure = t;
                 stopTime = -INF;
             }
-            windowCpuNanos += CPU.getCurrentThreadCpuTime() - c0;
+            lastWindowCpu = CPU.getCurrentThreadCpuTime() - c0;
+            windowCpuNanos += lastWindowCpu;
+        }
+
+        /** Schedules every mobile disc of this domain's columns (before the first window). */
+        void predictOwnSafely() {
+            try {
+                for (int i = 0; i < n; i++) {
+                    if (colOwner[colOfDisc(i)] == id && invMass(i) > 0) {
+                        rec[i * stride + EV] = predictFull(i, 0);
+                    }
+                }
+            } catch (Throwable t) {
+                failure = t;
+            }
         }
 
         void awaitDone(int g) {
