@@ -146,8 +146,11 @@ final class SlabsRun {
     /** Owning domain of each column, and whether a column borders a foreign slab. */
     private final int[] colOwner;
     private final boolean[] edgeCol;
-    /** Per disc: the window in which it was last logged or marked dirty, and its last log entry. */
-    private final int[] logStamp;
+    /**
+     * Per disc, touched only for discs in edge columns (a per-disc array read on every event would
+     * cost a cache miss per event): the window in which it was last marked dirty, and its last log
+     * entry with an edge-column state in that window (-1 if none).
+     */
     private final int[] lastEntry;
     private final int[] dirtyStamp;
     private final int[] undoMark;
@@ -306,7 +309,6 @@ final class SlabsRun {
             domains[d] = new Domain(d, new CalendarQueue(n, buckets, rec, stride, EV, ir, IS, QNEXT));
         }
         boolean many = k > 1;
-        this.logStamp = many ? new int[n] : null;
         this.lastEntry = many ? new int[n] : null;
         this.dirtyStamp = many ? new int[n] : null;
         this.undoMark = many ? new int[n] : null;
@@ -939,18 +941,13 @@ final class SlabsRun {
                 if (invMass(x) == 0) {
                     continue;
                 }
-                // Segments of x: the current record from its last event on, then each logged state.
-                int e = logStamp[x] == window ? lastEntry[x] : -1;
-                double segEnd = limit;
-                double segStart = e >= 0 ? a.evTime[a.enEvent[e]] : start;
+                // Segments of x in edge columns: the current record from its clock (every event advances
+                // the disc to its time) on, then each logged edge-column state up to its event.
                 int cell = ir[x * IS + CELL] & CELL_MASK;
-                checkSegment(a, x, -1, cell, segStart, segEnd, start, limit);
-                while (e >= 0) {
-                    segEnd = a.evTime[a.enEvent[e]];
-                    int prev = a.enPrev[e];
-                    segStart = prev >= 0 ? a.evTime[a.enEvent[prev]] : start;
-                    checkSegment(a, x, e, a.enInts[e * 4 + CELL] & CELL_MASK, segStart, segEnd, start, limit);
-                    e = prev;
+                checkSegment(a, x, -1, cell, Math.max(start, rec[x * stride + T]), limit, start, limit);
+                for (int e = lastEntry[x]; e >= 0; e = a.enPrev[e]) {
+                    checkSegment(a, x, e, a.enInts[e * 4 + CELL] & CELL_MASK, Math.max(start, a.enRec[e * a.rs + T]),
+                            a.evTime[a.enEvent[e]], start, limit);
                 }
             }
         }
@@ -994,7 +991,8 @@ final class SlabsRun {
                     r = r < 0 ? r + rows : r - rows;
                 }
                 for (int y = cellHead[r * cols + c]; y != NIL; y = ir[y * IS + CNEXT]) {
-                    if (logStamp[y] != window) {
+                    // In an edge column now and not dirty: no event in this window.
+                    if (dirtyStamp[y] != window) {
                         loadSegment(segA, 1, b, y, -1);
                         contact(x, y, from, to);
                     }
@@ -1003,18 +1001,11 @@ final class SlabsRun {
             // Changed discs of b: wherever they were, on every segment.
             for (int q = 0; q < b.dirtyCount; q++) {
                 int y = b.dirty[q];
-                int e = logStamp[y] == window ? lastEntry[y] : -1;
-                double yEnd = limit;
-                double yStart = e >= 0 ? b.evTime[b.enEvent[e]] : start;
                 loadSegment(segA, 1, b, y, -1);
-                contact(x, y, Math.max(from, yStart), Math.min(to, yEnd));
-                while (e >= 0) {
-                    yEnd = b.evTime[b.enEvent[e]];
-                    int prev = b.enPrev[e];
-                    yStart = prev >= 0 ? b.evTime[b.enEvent[prev]] : start;
+                contact(x, y, Math.max(from, Math.max(start, rec[y * stride + T])), to);
+                for (int e = lastEntry[y]; e >= 0; e = b.enPrev[e]) {
                     loadSegment(segA, 1, b, y, e);
-                    contact(x, y, Math.max(from, yStart), Math.min(to, yEnd));
-                    e = prev;
+                    contact(x, y, Math.max(from, Math.max(start, b.enRec[e * b.rs + T])), Math.min(to, b.evTime[b.enEvent[e]]));
                 }
             }
         }
@@ -1383,9 +1374,12 @@ final class SlabsRun {
             }
             enDisc[e] = i;
             enEvent[e] = logEvents - 1;
-            enPrev[e] = logStamp[i] == window ? lastEntry[i] : -1;
-            lastEntry[i] = e;
-            logStamp[i] = window;
+            if (edgeCol[ir[i * IS + CELL] & AXIS_MASK]) {
+                // An edge-column segment: chained for verify.
+                markDirty(i);
+                enPrev[e] = lastEntry[i];
+                lastEntry[i] = e;
+            }
             System.arraycopy(rec, i * stride, enRec, e * rs, stride);
             enRec[e * rs + stride] = restitution.lastCollision(i);
             int it = i * IS;
@@ -1393,12 +1387,19 @@ final class SlabsRun {
             enInts[4 * e + PARTNER] = ir[it + PARTNER];
             enInts[4 * e + PCOUNT] = ir[it + PCOUNT];
             enInts[4 * e + COUNT] = ir[it + COUNT];
-            markIfEdge(i);
         }
 
+        /** After an event: a disc now in an edge column is dirty (it may just have entered it). */
         private void markIfEdge(int i) {
-            if (edgeCol[ir[i * IS + CELL] & AXIS_MASK] && dirtyStamp[i] != window) {
+            if (edgeCol[ir[i * IS + CELL] & AXIS_MASK]) {
+                markDirty(i);
+            }
+        }
+
+        private void markDirty(int i) {
+            if (dirtyStamp[i] != window) {
                 dirtyStamp[i] = window;
+                lastEntry[i] = -1;
                 if (dirtyCount == dirty.length) {
                     dirty = Arrays.copyOf(dirty, 2 * dirtyCount);
                 }
