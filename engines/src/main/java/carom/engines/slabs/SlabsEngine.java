@@ -17,7 +17,8 @@ import java.util.Set;
  * one domain (the {@code fast} algorithm).
  *
  * <p>Tunables: {@code cellFactor}, {@code auditEnergy} (as {@code fast}; with several domains the
- * energy is audited at every barrier). Counters: see {@link SlabsRun}.
+ * energy is audited at every barrier); {@code sequential} (measurement mode: all domains' windows run
+ * one after another on the calling thread, for single-core costs). Counters: see {@link SlabsRun}.
  */
 public final class SlabsEngine implements Engine {
     @Override
@@ -37,7 +38,7 @@ public final class SlabsEngine implements Engine {
 
     @Override
     public Set<String> tunables() {
-        return Set.of("cellFactor", "auditEnergy");
+        return Set.of("cellFactor", "auditEnergy", "sequential");
     }
 
     @Override

@@ -142,6 +142,12 @@ final class SlabsRun {
 
     // Domains.
     private final int domainCount;
+    /**
+     * Measurement mode (tunable {@code sequential}): the coordinator runs every domain's window itself,
+     * one after another, so that CPU counters give the algorithm's single-core costs without thread
+     * hand-offs, cache coherence traffic or a busy machine's scheduling. Same results.
+     */
+    private final boolean sequential;
     private final Domain[] domains;
     /** Owning domain of each column, and whether a column borders a foreign slab. */
     private final int[] colOwner;
@@ -260,6 +266,7 @@ final class SlabsRun {
             k = 1;
         }
         this.domainCount = k;
+        this.sequential = Boolean.parseBoolean(options.tunables().getOrDefault("sequential", "false"));
         this.colOwner = new int[cols];
         this.edgeCol = new boolean[cols];
         for (int col = 0; col < cols; col++) {
@@ -413,9 +420,9 @@ final class SlabsRun {
     RunResult run() {
         long started = System.nanoTime();
         untilLocal = until;
-        Thread[] workers = new Thread[domainCount - 1];
+        Thread[] workers = new Thread[sequential ? 0 : domainCount - 1];
         try {
-            for (int d = 1; d < domainCount; d++) {
+            for (int d = 1; d <= workers.length; d++) {
                 Domain dom = domains[d];
                 workers[d - 1] = Thread.ofPlatform().daemon().name("slabs-domain-" + d).start(dom::work);
             }
@@ -424,7 +431,11 @@ final class SlabsRun {
             generation++;
             domains[0].predictOwnSafely();
             for (int d = 1; d < domainCount; d++) {
-                domains[d].awaitDone(generation);
+                if (sequential) {
+                    domains[d].predictOwnSafely();
+                } else {
+                    domains[d].awaitDone(generation);
+                }
             }
             initialTask = false;
             if (failure != null) {
@@ -535,7 +546,11 @@ final class SlabsRun {
             generation++;
             domains[0].runWindowSafely(end, last);
             for (int d = 1; d < domainCount; d++) {
-                domains[d].awaitDone(generation);
+                if (sequential) {
+                    domains[d].runWindowSafely(end, last);
+                } else {
+                    domains[d].awaitDone(generation);
+                }
             }
             long t1 = System.nanoTime();
             long c1 = CPU.getCurrentThreadCpuTime();

@@ -135,6 +135,21 @@ class SlabsAgainstSerialTest {
     }
 
     @Test
+    void threadsChangeNothing() {
+        // Each window is a deterministic function of its start state: threaded and sequential
+        // (measurement mode) runs give the same bits and the same windows.
+        Scene scene = RandomScenes.dense(1600, 0.6, true, 9, 0.3);
+        RunOptions options = RunOptions.until(scene.until()).withThreads(3);
+        RunResult threaded = new SlabsEngine().run(scene, options);
+        RunResult sequential = new SlabsEngine().run(scene, options.withTunable("sequential", "true"));
+        assertThat(sequential.finalState().x).isEqualTo(threaded.finalState().x);
+        assertThat(sequential.finalState().vy).isEqualTo(threaded.finalState().vy);
+        for (String counter : new String[] {"windows", "rollbacks", "undoneEvents", "crossDomainEvents", "events"}) {
+            assertThat(sequential.counters().get(counter)).as(counter).isEqualTo(threaded.counters().get(counter));
+        }
+    }
+
+    @Test
     void aBoxTooNarrowForSlabsRunsOnOneDomain() {
         Scene scene = RandomScenes.small(3);
         RunResult r = slabs(scene, 64);
