@@ -7,7 +7,7 @@ import carom.engines.reference.ExactEngineAgainstReferenceContract;
 class SlabsAgainstReferenceTest extends ExactEngineAgainstReferenceContract {
     @Override
     protected Engine engine() {
-        return new TwoSlabs(2);
+        return new FixedDomains(2);
     }
 
     @Override

@@ -10,7 +10,7 @@ import carom.engines.reference.ExactEngineDenseScenesContract;
 class SlabsDenseScenesTest extends ExactEngineDenseScenesContract {
     @Override
     protected Engine engine() {
-        return new TwoSlabs(2);
+        return new FixedDomains(2);
     }
 
     @Override

@@ -7,6 +7,6 @@ import carom.engines.reference.ExactEngineEffectsAgainstReferenceContract;
 class SlabsEffectsAgainstReferenceTest extends ExactEngineEffectsAgainstReferenceContract {
     @Override
     protected Engine engine() {
-        return new TwoSlabs(2);
+        return new FixedDomains(2);
     }
 }

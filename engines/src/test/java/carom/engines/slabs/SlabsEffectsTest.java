@@ -7,6 +7,6 @@ import carom.engines.reference.ExactEngineEffectsContract;
 class SlabsEffectsTest extends ExactEngineEffectsContract {
     @Override
     protected Engine engine() {
-        return new TwoSlabs(2);
+        return new FixedDomains(2);
     }
 }

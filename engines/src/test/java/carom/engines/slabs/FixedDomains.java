@@ -10,10 +10,10 @@ import java.util.Set;
  * The slabs engine with a fixed domain count whatever {@code --threads} the caller passes: the shared
  * contracts run engines with one thread, and this engine must hold them with several domains.
  */
-final class TwoSlabs implements Engine {
+final class FixedDomains implements Engine {
     private final int domains;
 
-    TwoSlabs(int domains) {
+    FixedDomains(int domains) {
         this.domains = domains;
     }
 
