@@ -22,6 +22,7 @@ import java.lang.management.ThreadMXBean;
 import java.util.Arrays;
 import java.util.HashMap;
 import java.util.Map;
+import java.util.concurrent.locks.LockSupport;
 
 /**
  * One run of the slabs engine.
@@ -204,6 +205,11 @@ final class SlabsRun {
     private volatile boolean initialTask;
     private volatile boolean shutdown;
     private volatile Throwable failure;
+    /** Spins before a waiting thread parks (a busy machine may not run both threads at once). */
+    private static final int SPINS = 1 << 11;
+    private final Thread coordinator = Thread.currentThread();
+    /** The coordinator is parked (or about to) waiting for domains; workers unpark it. */
+    private volatile boolean coordinatorParked;
 
     SlabsRun(Scene scene, RunOptions options) {
         this.scene = scene;
@@ -428,7 +434,7 @@ final class SlabsRun {
             }
             // First predictions, each domain its own discs in its own thread.
             initialTask = true;
-            generation++;
+            publish();
             domains[0].predictOwnSafely();
             for (int d = 1; d < domainCount; d++) {
                 if (sequential) {
@@ -452,7 +458,7 @@ final class SlabsRun {
             loop();
         } finally {
             shutdown = true;
-            generation++;
+            publish();
             for (Thread w : workers) {
                 if (w != null) {
                     try {
@@ -543,7 +549,7 @@ final class SlabsRun {
             }
             windowEnd = end;
             windowInclusive = last;
-            generation++;
+            publish();
             domains[0].runWindowSafely(end, last);
             for (int d = 1; d < domainCount; d++) {
                 if (sequential) {
@@ -616,6 +622,16 @@ final class SlabsRun {
             if (windows - progressMark >= 1024) {
                 progressMark = windows;
                 progress.simulatedTime(epoch + now);
+            }
+        }
+    }
+
+    /** Starts the next task on every worker (a new generation), waking parked ones. */
+    private void publish() {
+        generation++;
+        for (Domain d : domains) {
+            if (d.parked) {
+                LockSupport.unpark(d.thread);
             }
         }
     }
@@ -1190,6 +1206,9 @@ final class SlabsRun {
         double stopTime;
         int stopDisc;
         private volatile int done;
+        /** This domain's worker thread, and whether it is parked (or about to) waiting for a task. */
+        private volatile Thread thread;
+        private volatile boolean parked;
 
         /** Undo log (only with several domains): events, then the disc records saved before them. */
         private final boolean logging;
@@ -1219,15 +1238,22 @@ final class SlabsRun {
 
         /** Worker thread body: run each published window, then report done. */
         void work() {
+            thread = Thread.currentThread();
             int seen = 0;
             while (true) {
                 int g = seen;
                 int spins = 0;
                 while ((g = generation) == seen) {
-                    if (++spins < 1 << 10) {
+                    if (++spins < SPINS) {
                         Thread.onSpinWait();
                     } else {
-                        Thread.yield();
+                        // Dekker with publish(): it bumps generation then reads parked; we set parked
+                        // then re-read generation, so one of us sees the other.
+                        parked = true;
+                        if (generation == seen) {
+                            LockSupport.park(this);
+                        }
+                        parked = false;
                     }
                 }
                 seen = g;
@@ -1240,6 +1266,9 @@ final class SlabsRun {
                     runWindowSafely(windowEnd, windowInclusive);
                 }
                 done = g;
+                if (coordinatorParked) {
+                    LockSupport.unpark(coordinator);
+                }
             }
         }
 
@@ -1271,10 +1300,14 @@ final class SlabsRun {
         void awaitDone(int g) {
             int spins = 0;
             while (done != g) {
-                if (++spins < 1 << 10) {
+                if (++spins < SPINS) {
                     Thread.onSpinWait();
                 } else {
-                    Thread.yield();
+                    coordinatorParked = true;
+                    if (done != g) {
+                        LockSupport.park(this);
+                    }
+                    coordinatorParked = false;
                 }
             }
         }
