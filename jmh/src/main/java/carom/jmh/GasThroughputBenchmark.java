@@ -31,19 +31,28 @@ import org.openjdk.jmh.annotations.Warmup;
  * <p>Run (JMH forks a fresh JVM per parameter combination, so {@code threads} also sizes the
  * virtual-thread scheduler of each vthreads trial, see {@link EngineSetup#fixCarriers}):
  * <pre>
- * jmh/bench GasThroughput -p engine=stripes,akka,vthreads -p n=100000 -p phi=0.5 -p threads=1,2,4 \
- *     -p cellsPerActor=perThread -wi 1 -i 3
+ * jmh/bench GasThroughput -p engine=serial,fast,stripes,akka,vthreads -p n=100000 -p phi=0.5 \
+ *     -p threads=1,2,4 -p cellsPerActor=perThread -f 1 -wi 1 -i 3 -w 2s -r 3s
  * </pre>
- * ({@code jmh/bench ARGS} is {@code java --sun-misc-unsafe-memory-access=allow -jar
- * jmh/target/benchmarks.jar ARGS} with the JDK 21+ that {@code ./carom} uses, the flag on JDK 24+.)
- * Example rows (EXAMPLE_PLACEHOLDER):
+ * ({@code jmh/bench ARGS} is {@code java -jar jmh/target/benchmarks.jar ARGS} with the JDK 21+ that
+ * {@code ./carom} uses and, on JDK 24+, {@code --sun-misc-unsafe-memory-access=allow}.) Its akka rows
+ * on the project's 2-core VM (JDK 25, load average about 9 from other work; the other engines' rows
+ * cut, see docs/measurements/jmh):
  * <pre>
- * EXAMPLE_OUTPUT
+ * Benchmark                              (cellsPerActor)  (collisionsPerDisc)  (engine)     (n)  (phi)  (threads)  (tunables)   Mode  Cnt       Score         Error  Units
+ * GasThroughputBenchmark.run                   perThread                  1.0      akka  100000    0.5          1              thrpt    3       1.142 ±       3.201  ops/s
+ * GasThroughputBenchmark.run:collisions        perThread                  1.0      akka  100000    0.5          1              thrpt    3  136318.875 ±  382069.617  ops/s
+ * GasThroughputBenchmark.run                   perThread                  1.0      akka  100000    0.5          2              thrpt    3       0.507 ±       3.150  ops/s
+ * GasThroughputBenchmark.run:collisions        perThread                  1.0      akka  100000    0.5          2              thrpt    3   60470.209 ±  375982.722  ops/s
  * </pre>
- * Read the {@code run:collisions} rows: collisions per second, mean and JMH's 99.9% error over
- * the measurement iterations (blank with one iteration). The {@code run} rows are whole operations
- * per second. {@link GasBench} runs the same scene and also prints events per collision and bytes
- * per disc.
+ * Read the {@code run:collisions} rows: collisions per second (JMH says ops/s), the mean over the
+ * measured iterations, with JMH's 99.9% confidence half-width. The {@code run} rows count whole
+ * operations (engine runs) per second. With 3 iterations that half-width is 31.6 standard errors,
+ * hence the huge errors above: on a shared machine compare the iterations' spread (the JSON's
+ * rawData, {@code -rf json}) or run more forks. Here akka, one block of whole rows per thread, did
+ * about 136k collisions per second on 1 thread and 60k on 2 (a loaded machine: see the measurements
+ * README). {@link GasBench} runs the same scene and also prints events per collision and bytes per
+ * disc.
  */
 @BenchmarkMode(Mode.Throughput)
 @OutputTimeUnit(TimeUnit.SECONDS)
