@@ -17,7 +17,8 @@ import java.util.Set;
  * in time order; {@code dt} is the accuracy knob.
  *
  * <p>Tunable {@code dt} (simulated time per step). Default {@link #defaultDt}: a step in which the
- * fastest disc moves 5% of the smallest radius. Single thread: {@code --threads} is ignored.
+ * fastest disc moves 5% of the smallest radius. Single thread: {@code --threads} is ignored. It records
+ * no JFR step events: its steps are many and short, and a step holds no scheduling worth a timeline.
  *
  * <p>Counters: {@code steps}; {@code escapes} (disc-steps in which a disc's centre had left a walled box
  * before it was clamped back: it would have tunnelled through the wall); {@code deepestOverlapPpb}

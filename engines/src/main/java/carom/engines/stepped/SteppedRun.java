@@ -123,17 +123,32 @@ final class SteppedRun {
         }
     }
 
+    /**
+     * Every pair of discs in the same or neighbouring cells, once: cell by cell, each cell with itself and
+     * with its neighbours of higher index (the neighbour relation is symmetric, so each pair of cells
+     * comes up once). Cells go bottom row first, left to right.
+     */
     private void resolvePairs(double time) {
         int[] start = cells.start;
         int[] items = cells.items;
-        for (int i = 0; i < n; i++) {
-            int cell = cells.cellOf[i];
-            for (int k = grid.neighbourStart[cell], kEnd = grid.neighbourStart[cell + 1]; k < kEnd; k++) {
-                int other = grid.neighbours[k];
-                for (int m = start[other], mEnd = start[other + 1]; m < mEnd; m++) {
-                    int j = items[m];
-                    if (j > i) {
-                        resolvePair(i, j, time);
+        int[] neighbourStart = grid.neighbourStart;
+        int[] neighbours = grid.neighbours;
+        for (int c = 0, count = grid.cellCount(); c < count; c++) {
+            int cStart = start[c];
+            int cEnd = start[c + 1];
+            if (cStart == cEnd) {
+                continue;
+            }
+            for (int k = neighbourStart[c], kEnd = neighbourStart[c + 1]; k < kEnd; k++) {
+                int other = neighbours[k];
+                if (other < c) {
+                    continue;
+                }
+                int oEnd = start[other + 1];
+                for (int m = cStart; m < cEnd; m++) {
+                    int i = items[m];
+                    for (int o = other == c ? m + 1 : start[other]; o < oEnd; o++) {
+                        resolvePair(i, items[o], time);
                     }
                 }
             }
@@ -145,7 +160,7 @@ final class SteppedRun {
         double dy = boundary.separationY(d.y[j] - d.y[i]);
         double sigma = d.radius[i] + d.radius[j];
         double dist2 = dx * dx + dy * dy;
-        if (dist2 >= sigma * sigma) {
+        if (!(dist2 < sigma * sigma)) {
             return;
         }
         double invI = d.invMass[i];
