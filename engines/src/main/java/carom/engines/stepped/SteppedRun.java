@@ -39,6 +39,12 @@ import java.util.Map;
  * potential energy the clamps and pushes add. The collision time for restitution (TC model) is the
  * step's end. There is no stall to guard against: the run is ceil(until / dt) steps of O(N) work.
  *
+ * <p>Pressure (periodic boxes): the impulse virial J |r| of each collision as {@link PairLaw#collide}
+ * returns it, at the overlapped separation. The pushes also do virial work (mu * depth * the pair's
+ * separating normal speed) that this leaves out: measured on N 1024, phi 0.5, it would add 0.4% to Z at
+ * dt 0.01 and less at smaller dt, against a 3.3% deficit of Z there (with 2.6% fewer collisions than the
+ * exact engine's).
+ *
  * <p>Hot loop: primitive arrays of {@link Discs} and {@link CellLists}; no allocation per step.
  */
 final class SteppedRun {
