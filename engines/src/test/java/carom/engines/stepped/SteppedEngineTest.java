@@ -109,8 +109,9 @@ class SteppedEngineTest {
     @Test
     void newtonsCradlePassesTheWholeMomentumToTheLastBall() {
         // The ball at 1.5 reaches the row of five touching balls at t = 3.5; exactly, the last ball then
-        // leaves at speed 1 and is at 12.5 at t = 6, every other ball at rest. The grid visits pairs in
-        // id order, which here is along the row, so the impulse runs through the chain within one step.
+        // leaves at speed 1 and is at 12.5 at t = 6, every other ball at rest. The grid visits cells left
+        // to right along a row, which here is along the chain, so the impulse runs through it within one
+        // step and each ball hands on all of its momentum.
         SceneBuilder b = SceneBuilder.create("newton-cradle").box(14, 4, BoundaryKind.WALLS)
                 .species(Species.mobile("ball", 0.5, 1)).disc(0, 1.5, 2, 1, 0);
         for (int k = 0; k < 5; k++) {
