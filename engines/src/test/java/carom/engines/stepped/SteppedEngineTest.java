@@ -87,6 +87,19 @@ class SteppedEngineTest {
         assertThat(r.finalState().x[0]).isCloseTo(0.5 + 0.25 * 0.5, within(0.01));
     }
 
+    @ParameterizedTest(name = "tc {0}: wall bounce {1}")
+    @CsvSource({"0, 0.375", "10, 0.75"})
+    void theTcModelMakesACollisionSoonAfterAnotherElastic(double tc, double bounce) {
+        // Disc 1 (-1) meets disc 0 (at rest) at t = 0.5 with e = 0.5: closing speed 1 leaves at 0.5 with
+        // momentum -1, so v0 = -0.75, v1 = -0.25. Disc 0 reaches the left wall at t = 2.5 and leaves at
+        // 0.5 * 0.75, or, within tc of its pair collision, elastically at 0.75. They meet again after t = 3.
+        Scene scene = box20x10().effects(Effects.NONE.withRestitution(0.5, 0.5).withTc(tc))
+                .disc(0, 2, 5, 0, 0).disc(0, 3.5, 5, -1, 0).until(3).build();
+        Discs d = run(scene, 0.01).finalState();
+        assertThat(d.vx[0]).isCloseTo(bounce, within(EXACT));
+        assertThat(d.vx[1]).isCloseTo(-0.25, within(EXACT));
+    }
+
     @Test
     void aFixedDiscSendsAHeadOnDiscStraightBack() {
         Scene scene = SceneBuilder.create("peg").box(20, 10, BoundaryKind.WALLS)
