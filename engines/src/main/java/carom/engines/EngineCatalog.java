@@ -5,6 +5,7 @@ import carom.core.engine.Engine;
 import carom.engines.akka.AkkaEngine;
 import carom.engines.fast.FastEngine;
 import carom.engines.serial.SerialEngine;
+import carom.engines.stepped.SteppedEngine;
 import carom.engines.stripes.StripesEngine;
 import carom.engines.vthreads.VThreadsEngine;
 import java.util.List;
@@ -12,7 +13,7 @@ import java.util.List;
 /** Every engine carom ships, in the order {@code carom engines} lists them. */
 public final class EngineCatalog {
     private static final List<Engine> ENGINES = List.of(new SerialEngine(), new FastEngine(), new StripesEngine(),
-            new AkkaEngine(), new VThreadsEngine());
+            new AkkaEngine(), new VThreadsEngine(), new SteppedEngine());
 
     private EngineCatalog() {
     }
