@@ -34,7 +34,7 @@ public class AkkaThroughputPaired {
         // Equilibrate as Equilibrated.gas does: about 2 collisions per disc from the lattice.
         double guess = 4 * PHI / (1 - PHI);
         Scene lattice = StandardScenes.gas(N, PHI, true, 2 / guess, 42);
-        RunResult warm = EngineCatalog.defaultEngine().run(lattice, RunOptions.until(lattice.until()));
+        RunResult warm = EngineCatalog.byName("serial").run(lattice, RunOptions.until(lattice.until()));
         double ratePerDisc = warm.pairCollisions() / (double) N / lattice.until();
         Scene gas = lattice.withState(warm.finalState());
         int cells = new StepFrame(gas, 1, 2.0, 1.0).grid.cellCount();

@@ -18,7 +18,7 @@ import javax.management.ObjectName;
  *
  * <p>{@code threads} is what every engine gets as cores: the stripes engine's ForkJoinPool
  * parallelism, the akka dispatcher's parallelism-min = parallelism-max, and for vthreads the virtual
- * thread scheduler's carrier count ({@link #fixCarriers}). Serial engines ignore it.
+ * thread scheduler's carrier count ({@link #fixCarriers}). Single-thread engines (serial, fast, stepped) ignore it.
  */
 record EngineSetup(Engine engine, RunOptions options) {
     /** {@code cellsPerActor} value meaning one block of whole rows per thread: cells / threads. */

@@ -63,7 +63,7 @@ import org.openjdk.jmh.annotations.Warmup;
 @Fork(value = 1, jvmArgsPrepend = {"-Xmx8g", "-XX:+UseParallelGC"})
 @State(Scope.Benchmark)
 public class GasThroughputBenchmark {
-    /** serial, fast, stripes, akka or vthreads ({@code ./carom engines}). */
+    /** An engine of {@code ./carom engines}: serial, fast, stripes, akka, vthreads, ... */
     @Param({"serial"})
     public String engine;
     @Param({"10000"})
@@ -71,7 +71,7 @@ public class GasThroughputBenchmark {
     /** Packing fraction. */
     @Param({"0.5"})
     public double phi;
-    /** Cores the engine gets (see {@link EngineSetup}); serial engines ignore it. */
+    /** Cores the engine gets (see {@link EngineSetup}); single-thread engines ignore it. */
     @Param({"1"})
     public int threads;
     /**

@@ -51,12 +51,12 @@ import org.openjdk.jmh.annotations.Warmup;
 @Fork(value = 1, jvmArgsPrepend = {"-Xmx8g", "-XX:+UseParallelGC"})
 @State(Scope.Benchmark)
 public class ThesisWorkloadBenchmark {
-    /** serial, fast, stripes, akka or vthreads ({@code ./carom engines}). */
+    /** An engine of {@code ./carom engines}: serial, fast, stripes, akka, vthreads, ... */
     @Param({"serial"})
     public String engine;
     @Param({"100000"})
     public int n;
-    /** Cores the engine gets (see {@link EngineSetup}); serial engines ignore it. */
+    /** Cores the engine gets (see {@link EngineSetup}); single-thread engines ignore it. */
     @Param({"1"})
     public int threads;
     /** As in {@link GasThroughputBenchmark}: "", a whole number or {@code perThread}; actor engines only. */
