@@ -21,7 +21,7 @@ import org.openjdk.jmh.annotations.Warmup;
  * Collisions per second of an engine on an equilibrated periodic hard-disc gas.
  *
  * <p>Why: the rate of a hard-disc code depends on N (cache behaviour) and on the packing fraction
- * (collisions per step, candidates per disc), so both are parameters; the parallel engines' on the
+ * (collisions per step, candidates per disc), so both are parameters; the parallel engines' rate also on the
  * cores they get ({@code threads}) and, for the actor engines, on how many cells one actor owns. The
  * gas is equilibrated once per trial with the serial engine (about 2 collisions per disc from the
  * lattice); each benchmark operation then runs the engine from that same state for about
