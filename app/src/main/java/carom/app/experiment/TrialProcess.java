@@ -1,0 +1,101 @@
+package carom.app.experiment;
+
+import carom.core.engine.Engine;
+import carom.core.engine.RunOptions;
+import carom.core.engine.RunResult;
+import carom.core.scene.Scene;
+import carom.core.scene.StandardScenes;
+import carom.engines.EngineCatalog;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.util.Map;
+
+/**
+ * The child JVM of an experiment ({@link ChildJvm}): reads a {@link ChildPlan} as JSON from standard
+ * input, runs it, and writes one line per run to standard output, {@value #RECORD} followed by the
+ * {@link RunRecord} as JSON. Not a user command: {@code carom experiment} starts it.
+ *
+ * <p>A run that runs out of memory is reported as skipped, and so is every later run of the same
+ * options at least as large; the JVM's heap is free again once the run's arrays are gone, so the
+ * smaller runs of other options still go on. Any other failure ends the child with one
+ * {@code error:} line on stderr and exit status 1.
+ */
+public final class TrialProcess {
+    static final String RECORD = "carom-run ";
+    private static final ObjectMapper JSON = new ObjectMapper();
+
+    private TrialProcess() {
+    }
+
+    public static void main(String[] args) {
+        PrintStream out = System.out;
+        try {
+            ChildPlan plan = JSON.readValue(System.in, ChildPlan.class);
+            run(plan, line -> {
+                out.println(line);
+                out.flush();
+            });
+        } catch (Throwable e) {
+            System.err.println("error: " + e.getClass().getSimpleName() + ": " + e.getMessage());
+            System.exit(1);
+        }
+        // Akka's and the virtual-thread scheduler's threads must not keep the child alive.
+        System.exit(0);
+    }
+
+    static void run(ChildPlan plan, java.util.function.Consumer<String> lines) throws IOException {
+        Engine engine = EngineCatalog.byName(plan.engine());
+        if (plan.warmupDiscs() > 0 && !plan.runs().isEmpty()) {
+            // The first runs of a fresh JVM are interpreted: warm the engine's code up on its own
+            // workload (another seed), so that the smallest measured size is not the JIT's bill.
+            ChildPlan.Run first = plan.runs().get(0);
+            runOnce(engine, new ChildPlan.Run(plan.warmupDiscs(), first.seed() - 1, 0, first.tunables()), plan.threads());
+        }
+        // Smallest size that ran out of memory, by tunables: larger runs with those options are skipped.
+        Map<Map<String, String>, Integer> outOfMemoryAt = new java.util.HashMap<>();
+        for (ChildPlan.Run run : plan.runs()) {
+            Integer tooLarge = outOfMemoryAt.get(run.tunables());
+            RunRecord record;
+            if (tooLarge != null && run.discs() >= tooLarge) {
+                record = RunRecord.skipped(plan.engine(), run, plan.threads(), outOfMemory(tooLarge));
+            } else {
+                try {
+                    record = RunRecord.measured(plan.engine(), run, plan.threads(), runOnce(engine, run, plan.threads()));
+                } catch (Throwable e) {
+                    if (!causedByOutOfMemory(e)) {
+                        throw e;
+                    }
+                    outOfMemoryAt.merge(run.tunables(), run.discs(), Math::min);
+                    record = RunRecord.skipped(plan.engine(), run, plan.threads(), outOfMemory(run.discs()));
+                }
+            }
+            lines.accept(RECORD + JSON.writeValueAsString(record));
+        }
+    }
+
+    private static RunResult runOnce(Engine engine, ChildPlan.Run run, int threads) {
+        Scene scene = StandardScenes.thesis(run.discs(), run.seed());
+        RunOptions options = RunOptions.until(scene.until()).withThreads(threads);
+        for (Map.Entry<String, String> t : run.tunables().entrySet()) {
+            options = options.withTunable(t.getKey(), t.getValue());
+        }
+        // Collect the last run's garbage now, so that it is not charged to this one.
+        System.gc();
+        return engine.run(scene, options);
+    }
+
+    private static String outOfMemory(int discs) {
+        return "out of memory at " + discs + " discs with -Xmx" + (Runtime.getRuntime().maxMemory() >> 20) + "m";
+    }
+
+    /** Engines may wrap an actor's OutOfMemoryError in their own failure. */
+    private static boolean causedByOutOfMemory(Throwable e) {
+        for (Throwable c = e; c != null; c = c.getCause()) {
+            if (c instanceof OutOfMemoryError) {
+                return true;
+            }
+        }
+        return false;
+    }
+}
