@@ -79,8 +79,10 @@ final class ActorsReport {
         files.put(ThesisReport.REPORT, ReportParts.text(md.toString()));
         files.put(TABLE, ReportParts.text(csv.csv()));
         files.put(ReportParts.RUNS, ReportParts.text(ReportParts.runs(records).csv()));
+        // Log-log: one actor per cell can be a hundred times slower than a few large blocks. No error bars
+        // (a mean less its deviation may be below zero, off a log axis); the table has them.
         files.put(TIME_PLOT, Charts.lines("Wall time against actors per core (N = " + settings.discs() + ")",
-                "actors per core", "wall time (ms)", null, lines(points, s -> s.wallMs().mean(), s -> s.wallMs().sd()), true, false));
+                "actors per core", "wall time (ms)", null, lines(points, s -> s.wallMs().mean(), s -> Double.NaN), true, true));
         files.put(MESSAGES_PLOT, Charts.lines("Messages per collision against actors per core (N = " + settings.discs() + ")",
                 "actors per core", "messages per collision", null, lines(points, Summary::messagesPerCollision, s -> Double.NaN),
                 true, true));

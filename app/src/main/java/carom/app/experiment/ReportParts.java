@@ -45,7 +45,7 @@ final class ReportParts {
             byReason.forEach((reason, runs) -> md.append("- ").append(reason).append(" (N = ")
                     .append(String.join(", ", runs.stream().map(r -> Integer.toString(r.discs())).distinct().toList()))
                     .append(")\n"));
-            md.append('\n');
+            md.append("\nThe child JVMs' heap is set by `--heap` (an -Xmx in CAROM_JAVA_OPTS is not passed on).\n\n");
         }
         md.append("Every run: `").append(RUNS).append("`.\n");
     }

@@ -1,5 +1,6 @@
 package carom.app.experiment;
 
+import carom.core.BadInputException;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
@@ -16,10 +17,11 @@ import java.util.Map;
  * input, runs it, and writes one line per run to standard output, {@value #RECORD} followed by the
  * {@link RunRecord} as JSON. Not a user command: {@code carom experiment} starts it.
  *
- * <p>A run that runs out of memory is reported as skipped, and so is every later run of the same
- * options at least as large; the JVM's heap is free again once the run's arrays are gone, so the
- * smaller runs of other options still go on. Any other failure ends the child with one
- * {@code error:} line on stderr and exit status 1.
+ * <p>A run that does not fit, because it runs out of memory or because the scene's own check finds
+ * the heap too small (bad input), is reported as skipped, and so is every later run of the same
+ * options at least as large; the heap is free again once the run's arrays are gone, so the smaller
+ * runs of other options still go on. Any other failure ends the child with one {@code error:} line
+ * on stderr and exit status 1.
  */
 public final class TrialProcess {
     static final String RECORD = "carom-run ";
@@ -52,22 +54,25 @@ public final class TrialProcess {
             ChildPlan.Run first = plan.runs().get(0);
             runOnce(engine, new ChildPlan.Run(plan.warmupDiscs(), first.seed() - 1, 0, first.tunables()), plan.threads());
         }
-        // Smallest size that ran out of memory, by tunables: larger runs with those options are skipped.
-        Map<Map<String, String>, Integer> outOfMemoryAt = new java.util.HashMap<>();
+        // Why the smallest run that did not fit failed, by tunables: larger runs with those options are skipped.
+        Map<Map<String, String>, String> doesNotFit = new java.util.HashMap<>();
+        Map<Map<String, String>, Integer> doesNotFitFrom = new java.util.HashMap<>();
         for (ChildPlan.Run run : plan.runs()) {
-            Integer tooLarge = outOfMemoryAt.get(run.tunables());
+            Integer tooLarge = doesNotFitFrom.get(run.tunables());
             RunRecord record;
             if (tooLarge != null && run.discs() >= tooLarge) {
-                record = RunRecord.skipped(plan.engine(), run, plan.threads(), outOfMemory(tooLarge));
+                record = RunRecord.skipped(plan.engine(), run, plan.threads(), doesNotFit.get(run.tunables()));
             } else {
                 try {
                     record = RunRecord.measured(plan.engine(), run, plan.threads(), runOnce(engine, run, plan.threads()));
                 } catch (Throwable e) {
-                    if (!causedByOutOfMemory(e)) {
+                    String reason = whyItDoesNotFit(e, run.discs());
+                    if (reason == null) {
                         throw e;
                     }
-                    outOfMemoryAt.merge(run.tunables(), run.discs(), Math::min);
-                    record = RunRecord.skipped(plan.engine(), run, plan.threads(), outOfMemory(run.discs()));
+                    doesNotFit.putIfAbsent(run.tunables(), reason);
+                    doesNotFitFrom.merge(run.tunables(), run.discs(), Math::min);
+                    record = RunRecord.skipped(plan.engine(), run, plan.threads(), reason);
                 }
             }
             lines.accept(RECORD + JSON.writeValueAsString(record));
@@ -85,17 +90,21 @@ public final class TrialProcess {
         return engine.run(scene, options);
     }
 
-    private static String outOfMemory(int discs) {
-        return "out of memory at " + discs + " discs with -Xmx" + (Runtime.getRuntime().maxMemory() >> 20) + "m";
-    }
-
-    /** Engines may wrap an actor's OutOfMemoryError in their own failure. */
-    private static boolean causedByOutOfMemory(Throwable e) {
+    /**
+     * Why a run that failed with {@code e} does not fit in this JVM, or null if it failed otherwise.
+     * Engines may wrap an actor's OutOfMemoryError in their own failure.
+     */
+    private static String whyItDoesNotFit(Throwable e, int discs) {
         for (Throwable c = e; c != null; c = c.getCause()) {
             if (c instanceof OutOfMemoryError) {
-                return true;
+                return "out of memory at " + discs + " discs with a heap of " + (Runtime.getRuntime().maxMemory() >> 20)
+                        + " MiB (--heap)";
             }
         }
-        return false;
+        if (e instanceof BadInputException bad) {
+            // the scene's check that its discs fit in the heap, or an option value the engine refuses
+            return bad.getMessage();
+        }
+        return null;
     }
 }
