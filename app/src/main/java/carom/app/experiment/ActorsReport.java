@@ -82,9 +82,9 @@ final class ActorsReport {
         // Log-log: one actor per cell can be a hundred times slower than a few large blocks. No error bars
         // (a mean less its deviation may be below zero, off a log axis); the table has them.
         files.put(TIME_PLOT, Charts.lines("Wall time against actors per core (N = " + settings.discs() + ")",
-                "actors per core", "wall time (ms)", null, lines(points, s -> s.wallMs().mean(), s -> Double.NaN), true, true));
+                "actors per core", "wall time (ms)", null, lines(points, s -> s.wallMs().mean()), true, true));
         files.put(MESSAGES_PLOT, Charts.lines("Messages per collision against actors per core (N = " + settings.discs() + ")",
-                "actors per core", "messages per collision", null, lines(points, Summary::messagesPerCollision, s -> Double.NaN),
+                "actors per core", "messages per collision", null, lines(points, Summary::messagesPerCollision),
                 true, true));
         return files;
     }
@@ -105,9 +105,8 @@ final class ActorsReport {
         return points;
     }
 
-    /** One line per engine and thread count, points by actors per core; {@code error} NaN draws no bar. */
-    private List<Charts.Line> lines(List<Point> points, java.util.function.ToDoubleFunction<Summary> figure,
-                                    java.util.function.ToDoubleFunction<Summary> error) {
+    /** One line per engine and thread count, points by actors per core. */
+    private static List<Charts.Line> lines(List<Point> points, java.util.function.ToDoubleFunction<Summary> figure) {
         Map<String, List<Point>> byLine = new LinkedHashMap<>();
         for (Point p : points) {
             byLine.computeIfAbsent(p.engine() + ", " + p.threads() + (p.threads() == 1 ? " thread" : " threads"),
@@ -119,14 +118,8 @@ final class ActorsReport {
                     .filter(p -> p.summary().hasTime() && !Double.isNaN(figure.applyAsDouble(p.summary())))
                     .sorted(java.util.Comparator.comparingDouble(p -> p.summary().actorsPerCore()))
                     .toList();
-            List<Double> x = drawable.stream().map(p -> p.summary().actorsPerCore()).toList();
-            List<Double> y = drawable.stream().map(p -> figure.applyAsDouble(p.summary())).toList();
-            boolean bars = drawable.stream().anyMatch(p -> !Double.isNaN(error.applyAsDouble(p.summary())));
-            List<Double> e = bars ? drawable.stream().map(p -> {
-                double v = error.applyAsDouble(p.summary());
-                return Double.isNaN(v) ? 0.0 : v;
-            }).toList() : null;
-            lines.add(new Charts.Line(name, x, y, e, false));
+            lines.add(Charts.Line.of(name, drawable.stream().map(p -> p.summary().actorsPerCore()).toList(),
+                    drawable.stream().map(p -> figure.applyAsDouble(p.summary())).toList()));
         });
         return lines;
     }

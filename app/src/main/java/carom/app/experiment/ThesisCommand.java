@@ -101,7 +101,7 @@ public final class ThesisCommand implements Callable<Integer> {
         List<String> names = CommonOptions.checkedEngines(engines != null ? engines
                 : EngineCatalog.all().stream().map(Engine::name).toList());
         return new ThesisSettings(mainSizes, common.trials(2, 5), large,
-                CommonOptions.atLeast(CommonOptions.resolve(largeTrials, quick, 2, 2), 1, "--large-trials"),
+                CommonOptions.atLeast(largeTrials != null ? largeTrials : 2, 1, "--large-trials"),
                 names,
                 CommonOptions.atLeast(threads != null ? threads : Runtime.getRuntime().availableProcessors(), 1, "--threads"),
                 CommonOptions.atLeast(CommonOptions.resolve(cellsPerActor, quick, QUICK_CELLS_PER_ACTOR, CELLS_PER_ACTOR), 1,
