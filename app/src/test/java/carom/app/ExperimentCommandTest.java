@@ -114,7 +114,7 @@ class ExperimentCommandTest {
     @ParameterizedTest
     @ValueSource(strings = {
         "thesis --sizes 0", "thesis --sizes 10,abc", "thesis --trials 0", "thesis --engines serial,nope",
-        "thesis --engines serial,serial", "thesis --heap lots", "thesis --threads 0", "thesis --warmup -1",
+        "thesis --engines serial,serial", "thesis --engines serial,unknown-to-the-thesis", "thesis --heap lots", "thesis --threads 0", "thesis --warmup -1",
         "thesis --no-large --large-sizes 100", "thesis --cells-per-actor 0", "thesis --large-trials 0",
         "actors --engines serial", "actors --cells-per-actor 0", "actors --threads 1,1", "actors --size 0",
         "thesis --bogus"})

@@ -5,7 +5,9 @@ import java.util.Optional;
 /**
  * Which of the thesis's three algorithms each of our engines stands for, so that the report sets the
  * right published column beside it. {@code fast} is our own exact serial engine, compared with the
- * thesis's single-thread model as {@code serial} is.
+ * thesis's single-thread model as {@code serial} is. Engines with no counterpart (such as the
+ * fixed-step {@code stepped}) have no place in the thesis's tables; a new concurrency model gets a
+ * line in {@link #of}.
  */
 enum EngineRole {
     SINGLE_THREAD("Single", "4.1", false),
@@ -35,8 +37,14 @@ enum EngineRole {
         });
     }
 
-    /** Whether the engine runs on several threads; an engine unknown to the thesis is assumed to. */
+    /** Whether the engine runs on several threads (false for an engine without a counterpart). */
     static boolean isParallel(String engine) {
-        return of(engine).map(r -> r.parallel).orElse(true);
+        return of(engine).map(r -> r.parallel).orElse(false);
+    }
+
+    /** The engines that have a counterpart, in the order of {@code carom engines}. */
+    static java.util.List<String> engines() {
+        return carom.engines.EngineCatalog.all().stream().map(carom.core.engine.Engine::name)
+                .filter(name -> of(name).isPresent()).toList();
     }
 }

@@ -1,7 +1,6 @@
 package carom.app.experiment;
 
-import carom.engines.EngineCatalog;
-import carom.core.engine.Engine;
+import carom.core.BadInputException;
 import java.io.PrintStream;
 import java.nio.file.Path;
 import java.util.List;
@@ -56,7 +55,8 @@ public final class ThesisCommand implements Callable<Integer> {
     @Option(names = "--no-large", description = "Leave Table 4.4 out.")
     boolean noLarge;
 
-    @Option(names = "--engines", split = ",", paramLabel = "NAME,...", description = "Engines to run (default: all of 'carom engines').")
+    @Option(names = "--engines", split = ",", paramLabel = "NAME,...",
+            description = "Engines to run (default: those with a counterpart in the thesis: serial, fast, stripes, akka, vthreads).")
     List<String> engines;
 
     @Option(names = "--threads", paramLabel = "K",
@@ -98,8 +98,13 @@ public final class ThesisCommand implements Callable<Integer> {
         if (noLarge && largeSizes != null) {
             throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--no-large and --large-sizes contradict each other");
         }
-        List<String> names = CommonOptions.checkedEngines(engines != null ? engines
-                : EngineCatalog.all().stream().map(Engine::name).toList());
+        List<String> names = CommonOptions.checkedEngines(engines != null ? engines : EngineRole.engines());
+        for (String name : names) {
+            if (EngineRole.of(name).isEmpty()) {
+                throw new BadInputException("--engines: engine " + name + " has no counterpart in the thesis (those that have: "
+                        + String.join(", ", EngineRole.engines()) + ")");
+            }
+        }
         return new ThesisSettings(mainSizes, common.trials(2, 5), large,
                 CommonOptions.atLeast(largeTrials != null ? largeTrials : 2, 1, "--large-trials"),
                 names,

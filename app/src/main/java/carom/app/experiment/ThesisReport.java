@@ -49,10 +49,6 @@ final class ThesisReport {
                 files.put(tableFile(role), ReportParts.text(csv.csv()));
             }
         }
-        List<String> others = settings.engines().stream().filter(e -> EngineRole.of(e).isEmpty()).toList();
-        if (!others.isEmpty()) {
-            files.put("table-other-engines.csv", ReportParts.text(otherTable(md, others).csv()));
-        }
         if (!settings.largeEngines().isEmpty()) {
             files.put(LARGE_TABLE, ReportParts.text(largeTable(md).csv()));
         }
@@ -138,26 +134,6 @@ final class ThesisReport {
         if (role == EngineRole.ACTOR) {
             messages(md, engines);
         }
-        return csv;
-    }
-
-    /** Engines the thesis has no counterpart of (none yet): our numbers alone. */
-    private Table otherTable(StringBuilder md, List<String> engines) {
-        md.append("## Other engines\n\n");
-        List<String> header = new ArrayList<>(List.of("N"));
-        engines.forEach(e -> header.add(e + " (ms)"));
-        Table table = new Table(header);
-        Table csv = longTable();
-        for (int n : settings.sizes()) {
-            List<String> row = new ArrayList<>(List.of(Integer.toString(n)));
-            for (String e : engines) {
-                Summary s = summary(e, n, settings.trials());
-                row.add(cell(s));
-                addSummaryRow(csv, s);
-            }
-            table.add(row);
-        }
-        md.append(table.markdown()).append('\n');
         return csv;
     }
 
