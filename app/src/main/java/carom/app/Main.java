@@ -18,7 +18,7 @@ import picocli.CommandLine.Spec;
         versionProvider = VersionProvider.class,
         description = "Exact event-driven simulation of hard discs in 2D.",
         subcommands = {SimulateCommand.class, EnginesCommand.class, carom.app.render.RenderCommand.class,
-                carom.app.analyze.AnalyzeCommand.class})
+                carom.app.analyze.AnalyzeCommand.class, carom.app.experiment.ExperimentCommand.class})
 public final class Main implements Runnable {
     /** Exit status for a bad scene, bad option or other bad input. */
     public static final int BAD_INPUT = 2;
@@ -37,7 +37,7 @@ public final class Main implements Runnable {
         PrintWriter outWriter = new PrintWriter(new OutputStreamWriter(out, out.charset()), true);
         PrintWriter errWriter = new PrintWriter(new OutputStreamWriter(err, err.charset()), true);
         ErrorReporting errors = new ErrorReporting(errWriter, ErrorReporting.debugFromEnvironment());
-        // simulate draws its progress bar only on a real terminal, so it is told which streams these are.
+        // simulate and the experiments draw their progress bars only on a real terminal, so they are told which streams these are.
         CommandLine cl = new CommandLine(new Main(), new CommandFactory(out, err));
         cl.setOut(outWriter);
         cl.setErr(errWriter);
@@ -59,7 +59,7 @@ public final class Main implements Runnable {
     /** {@code carom} alone: say which commands exist rather than doing nothing. */
     @Override
     public void run() {
-        throw new ParameterException(spec.commandLine(), "missing command: use 'carom simulate SCENE.json', 'carom render SCENE.json --at T1,T2 --out DIR', 'carom analyze FILE.jfr' or 'carom engines'");
+        throw new ParameterException(spec.commandLine(), "missing command: use 'carom simulate SCENE.json', 'carom render SCENE.json --at T1,T2 --out DIR', 'carom analyze FILE.jfr', 'carom experiment thesis' or 'carom engines'");
     }
 
     /** Hands the raw streams to the command that needs to know what they are. */
@@ -68,6 +68,12 @@ public final class Main implements Runnable {
         public <K> K create(Class<K> cls) throws Exception {
             if (cls == SimulateCommand.class) {
                 return cls.cast(new SimulateCommand(out, err));
+            }
+            if (cls == carom.app.experiment.ThesisCommand.class) {
+                return cls.cast(new carom.app.experiment.ThesisCommand(err));
+            }
+            if (cls == carom.app.experiment.ActorsCommand.class) {
+                return cls.cast(new carom.app.experiment.ActorsCommand(err));
             }
             return CommandLine.defaultFactory().create(cls);
         }

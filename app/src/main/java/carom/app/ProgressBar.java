@@ -9,22 +9,29 @@ import java.util.Locale;
  * thread from the latest simulated time the engine reported. The engine's side is one volatile write,
  * so reporting costs it nothing measurable. Short runs never show a bar: it appears only after
  * {@link #DELAY_MILLIS}, and it is erased when the run ends.
+ *
+ * <p>{@link #forCount} makes the same bar count units of work instead ({@code 12/30 runs}), with a
+ * status line of what is running; {@code carom experiment} uses it.
  */
-final class ProgressBar implements ProgressListener, AutoCloseable {
+public final class ProgressBar implements ProgressListener, AutoCloseable {
     static final long DELAY_MILLIS = 2000;
     private static final long PERIOD_MILLIS = 200;
     private static final int WIDTH = 30;
 
     private final PrintStream err;
     private final double until;
+    /** What is counted ("runs"), or null for simulated time. */
+    private final String unit;
     private final Thread painter;
     private volatile double time;
+    private volatile String status = "";
     /** Length of what is on screen, to erase it; touched only by the painter until it has stopped. */
     private int drawn;
 
-    private ProgressBar(PrintStream err, double until, boolean visible) {
+    private ProgressBar(PrintStream err, double until, String unit, boolean visible) {
         this.err = err;
         this.until = until;
+        this.unit = unit;
         if (visible) {
             painter = new Thread(this::paint, "carom-progress");
             painter.setDaemon(true);
@@ -39,7 +46,16 @@ final class ProgressBar implements ProgressListener, AutoCloseable {
      * files) one that only records the time and never draws.
      */
     static ProgressBar forRun(PrintStream err, double until) {
-        return new ProgressBar(err, until, err == System.err && Terminal.interactive());
+        return new ProgressBar(err, until, null, visibleOn(err));
+    }
+
+    /** A bar counting {@code total} units of work named {@code unit}, shown as {@link #forRun}'s is. */
+    public static ProgressBar forCount(PrintStream err, long total, String unit) {
+        return new ProgressBar(err, total, unit, visibleOn(err));
+    }
+
+    private static boolean visibleOn(PrintStream err) {
+        return err == System.err && Terminal.interactive();
     }
 
     @Override
@@ -47,11 +63,17 @@ final class ProgressBar implements ProgressListener, AutoCloseable {
         time = t;
     }
 
+    /** For a counting bar: {@code done} units are finished, and {@code now} is what runs next. */
+    public void completed(long done, String now) {
+        status = now;
+        time = done;
+    }
+
     private void paint() {
         try {
             Thread.sleep(DELAY_MILLIS);
             while (!Thread.currentThread().isInterrupted()) {
-                draw(render(time, until));
+                draw(unit == null ? render(time, until) : renderCount((long) time, (long) until, unit, status));
                 Thread.sleep(PERIOD_MILLIS);
             }
         } catch (InterruptedException e) {
@@ -70,14 +92,23 @@ final class ProgressBar implements ProgressListener, AutoCloseable {
     }
 
     static String render(double t, double until) {
+        return bar(t, until) + "t=" + compact(t) + "/" + compact(until);
+    }
+
+    static String renderCount(long done, long total, String unit, String status) {
+        String s = bar(done, total) + done + "/" + total + " " + unit;
+        return status.isEmpty() ? s : s + "  " + status;
+    }
+
+    /** {@code [=====     ]  42%  }: the bar and percentage that every rendering starts with. */
+    private static String bar(double t, double until) {
         double fraction = until > 0 ? Math.max(0, Math.min(1, t / until)) : 0;
         int filled = (int) Math.round(fraction * WIDTH);
         StringBuilder sb = new StringBuilder(WIDTH + 32).append('[');
         for (int i = 0; i < WIDTH; i++) {
             sb.append(i < filled ? '=' : ' ');
         }
-        return sb.append(']').append(String.format(Locale.ROOT, " %3d%%  t=", (int) Math.floor(100 * fraction)))
-                .append(compact(t)).append('/').append(compact(until)).toString();
+        return sb.append(']').append(String.format(Locale.ROOT, " %3d%%  ", (int) Math.floor(100 * fraction))).toString();
     }
 
     /** Four significant digits without trailing zeros: 4.2, 10, 1.235e+06. */

@@ -41,7 +41,7 @@ final class SimulateCommand implements Callable<Integer> {
     String sceneFile;
 
     @Option(names = "--engine", paramLabel = "NAME",
-            description = "Engine to run (see 'carom engines'); default: the exact serial reference.")
+            description = "Engine to run (see 'carom engines'); default: fast, the exact serial engine.")
     String engineName;
 
     @Option(names = "--until", paramLabel = "T", description = "Simulated end time, overriding the scene's.")

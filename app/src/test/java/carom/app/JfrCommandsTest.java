@@ -32,7 +32,7 @@ class JfrCommandsTest {
         stripesRun = Cli.run("simulate", gas.toString(), "--engine", "stripes", "--threads", "2", "--jfr", stripes.toString());
         Path headOn = Scenes.write(recordings, "head-on.json", Scenes.headOn());
         serial = recordings.resolve("serial.jfr");
-        Cli serialRun = Cli.run("simulate", headOn.toString(), "--jfr", serial.toString(),
+        Cli serialRun = Cli.run("simulate", headOn.toString(), "--engine", "serial", "--jfr", serial.toString(),
                 "--summary", recordings.resolve("summary.json").toString());
         assertThat(serialRun.status()).as(serialRun.err()).isZero();
     }

@@ -15,6 +15,13 @@ class ProgressBarTest {
     }
 
     @Test
+    void countingBarShowsUnitsDoneAndWhatRuns() {
+        assertThat(ProgressBar.renderCount(3, 12, "runs", "akka N=200"))
+                .isEqualTo("[" + "=".repeat(8) + " ".repeat(22) + "]  25%  3/12 runs  akka N=200");
+        assertThat(ProgressBar.renderCount(12, 12, "runs", "")).isEqualTo("[" + "=".repeat(30) + "] 100%  12/12 runs");
+    }
+
+    @Test
     void compactNumbers() {
         assertThat(ProgressBar.compact(4.2)).isEqualTo("4.2");
         assertThat(ProgressBar.compact(10)).isEqualTo("10");
@@ -28,6 +35,9 @@ class ProgressBarTest {
         PrintStream err = new PrintStream(bytes, true);
         try (ProgressBar bar = ProgressBar.forRun(err, 10)) {
             bar.simulatedTime(5);
+        }
+        try (ProgressBar bar = ProgressBar.forCount(err, 10, "runs")) {
+            bar.completed(5, "serial N=16");
         }
         assertThat(bytes.size()).isZero();
     }

@@ -47,7 +47,7 @@ class SimulateCommandTest {
         assertThat(rows[1][3]).isCloseTo(-1.0, within(1e-12));
 
         JsonNode s = JSON.readTree(summary.toFile());
-        assertThat(s.get("engine").asText()).isEqualTo("serial");
+        assertThat(s.get("engine").asText()).as("the default engine").isEqualTo("fast");
         assertThat(s.get("exact").isBoolean()).isTrue();
         assertThat(s.get("exact").asBoolean()).isTrue();
         assertThat(s.get("particles").asInt()).isEqualTo(2);
@@ -90,7 +90,7 @@ class SimulateCommandTest {
         assertThat(r.status()).as(r.err()).isZero();
         assertThat(r.err()).isEmpty();
         assertThat(r.out()).containsPattern("(?m)^scene +head-on$")
-                .containsPattern("(?m)^engine +serial \\(exact\\)$")
+                .containsPattern("(?m)^engine +fast \\(exact\\)$")
                 .containsPattern("(?m)^discs +2$")
                 .containsPattern("(?m)^until +10\\.0$")
                 .containsPattern("(?m)^pair collisions +1$")

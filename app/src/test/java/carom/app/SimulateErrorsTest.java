@@ -164,7 +164,7 @@ class SimulateErrorsTest {
     void unknownEngineOption() {
         Path scene = Scenes.write(dir, "head-on.json", Scenes.headOn());
         Cli r = Cli.run("simulate", scene.toString(), "--option", "cellFactr=2", "--out", out().toString());
-        assertRejected(r, "error: --option cellFactr: engine serial has no such option", "head-on.json");
+        assertRejected(r, "error: --option cellFactr: engine fast has no such option", "head-on.json");
     }
 
     @Test

@@ -51,7 +51,7 @@ public final class GasBench {
 
     private static void bench(Engine engine, int n, double phi, double perDisc, int repeats, String tunables) {
         Equilibrated gas = Equilibrated.gas(n, phi, perDisc);
-        RunOptions options = Tunables.apply(RunOptions.until(gas.scene().until()), tunables);
+        RunOptions options = Tunables.apply(engine, RunOptions.until(gas.scene().until()), tunables);
         double sum = 0;
         double sumSquares = 0;
         RunResult last = null;

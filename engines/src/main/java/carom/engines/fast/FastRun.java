@@ -9,6 +9,7 @@ import carom.core.observe.EnergyAudit;
 import carom.core.observe.Observables;
 import carom.core.observe.Pressure;
 import carom.core.observe.VirialAccumulator;
+import carom.core.observe.jfr.QueueRebuildEvent;
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
 import carom.core.physics.PairLaw;
@@ -908,6 +909,7 @@ final class FastRun {
 
     /** Sizes the calendar from the mean event delay (trimmed of far outliers) and rebuilds it. */
     private void replan(double now) {
+        QueueRebuildEvent rebuild = QueueRebuildEvent.start();
         double sum = 0;
         long k = 0;
         for (int i = 0; i < n; i++) {
@@ -917,6 +919,7 @@ final class FastRun {
                 k++;
             }
         }
+        long queued = k;
         double mean = k > 0 ? sum / k : 1;
         if (k > 0) {
             double cut = 10 * mean;
@@ -937,6 +940,7 @@ final class FastRun {
         double span = SPAN_MEANS * mean;
         queue.rebuild(span / queue.buckets(), now);
         resyncAt = now + RESYNC_SPANS * span;
+        rebuild.finish("fast", n, queued);
     }
 
     /** Every disc at {@code until}, in original id order, periodic positions wrapped into the box. */

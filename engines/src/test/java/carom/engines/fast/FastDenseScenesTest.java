@@ -2,26 +2,22 @@ package carom.engines.fast;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import carom.core.engine.RunOptions;
+import carom.core.engine.Engine;
 import carom.core.engine.RunResult;
-import carom.core.scene.Scene;
-import carom.engines.reference.Invariants;
-import carom.engines.reference.RandomScenes;
-import org.junit.jupiter.params.ParameterizedTest;
-import org.junit.jupiter.params.provider.MethodSource;
+import carom.engines.reference.ExactEngineDenseScenesContract;
 
 /**
- * Dense seeded scenes (225-2025 discs, packing fraction 0.3-0.7, walls and periodic, ~50 collisions per
- * disc, several clock re-anchorings): energy, momentum, no overlap, inside the box, no NaN
- * ({@link Invariants}); every counter consistent.
+ * The dense scenes every exact engine passes, on {@code fast}: several clock re-anchorings, every
+ * counter consistent, and the memory it promises.
  */
-class FastDenseScenesTest {
-    @ParameterizedTest(name = "N {0}, phi {1}, periodic {2}, seed {3}")
-    @MethodSource("carom.engines.reference.RandomScenes#denseCases")
-    void conservesEnergyAndMomentumAndNeverOverlaps(int n, double phi, boolean periodic, long seed, double until) {
-        Scene scene = RandomScenes.dense(n, phi, periodic, seed, until);
-        RunResult r = Invariants.check(scene, new FastEngine().run(scene, RunOptions.until(until)));
-        assertThat(2.0 * r.pairCollisions() / n).as("pair collisions per disc").isGreaterThan(35);
+class FastDenseScenesTest extends ExactEngineDenseScenesContract {
+    @Override
+    protected Engine engine() {
+        return new FastEngine();
+    }
+
+    @Override
+    protected void checkCounters(RunResult r) {
         assertThat(r.counters().get("resyncs")).as("clock re-anchorings").isPositive();
         assertThat(r.events()).isEqualTo(r.counters().get("events"))
                 .isGreaterThanOrEqualTo(r.collisions() + r.counters().get("cellCrossings") + r.counters().get("staleEvents"));

@@ -8,6 +8,7 @@ import carom.core.observe.jfr.ActorMailboxEvent;
 import carom.core.observe.jfr.CaromRecording;
 import carom.core.scene.Scene;
 import carom.core.scene.StandardScenes;
+import carom.engines.fast.FastEngine;
 import carom.engines.serial.SerialEngine;
 import carom.engines.stripes.StripesEngine;
 import java.io.IOException;
@@ -27,6 +28,7 @@ import org.junit.jupiter.api.io.TempDir;
 class JfrEventsTest {
     private static RunResult serial;
     private static RunResult stripes;
+    private static RunResult fast;
     private static Scene dense;
     private static List<RecordedEvent> events;
 
@@ -38,6 +40,7 @@ class JfrEventsTest {
             recording.start();
             serial = new SerialEngine().run(dense, RunOptions.until(dense.until()));
             stripes = new StripesEngine().run(dense, RunOptions.until(dense.until()).withThreads(2));
+            fast = new FastEngine().run(dense, RunOptions.until(dense.until()));
             ActorMailboxEvent.emit("test", "cell-7", 12, 10, 3, 5_000);
             recording.stop();
             recording.dump(file);
@@ -70,6 +73,15 @@ class JfrEventsTest {
         assertThat(rebuilds).hasSize(steps.size());
         assertThat(rebuilds).allSatisfy(e -> assertThat(e.getInt("discs")).isEqualTo(dense.size()));
         assertThat(sum(rebuilds, "potentials")).isPositive().isLessThanOrEqualTo(serial.counters().get("predictions"));
+    }
+
+    /** fast has no steps: one rebuild when it starts and one at every clock re-anchoring. */
+    @Test
+    void fastEmitsARebuildAtTheStartAndAtEveryResync() {
+        List<RecordedEvent> rebuilds = of("carom.QueueRebuild", "fast");
+        assertThat(rebuilds).hasSize(1 + fast.counters().get("resyncs").intValue());
+        assertThat(rebuilds).allSatisfy(e -> assertThat(e.getInt("discs")).isEqualTo(dense.size()));
+        assertThat(rebuilds).allSatisfy(e -> assertThat(e.getLong("potentials")).isPositive().isLessThanOrEqualTo(dense.size()));
     }
 
     @Test

@@ -1,85 +1,12 @@
 package carom.engines.serial;
 
-import static org.assertj.core.api.Assertions.assertThat;
-import static org.assertj.core.api.Assertions.within;
+import carom.core.engine.Engine;
+import carom.engines.reference.ExactEngineEffectsAgainstReferenceContract;
 
-import carom.core.engine.RunOptions;
-import carom.core.engine.RunResult;
-import carom.core.engine.SimulationStuckException;
-import carom.core.scene.Scene;
-import carom.core.state.Discs;
-import carom.engines.reference.BruteForceReference;
-import carom.engines.reference.Invariants;
-import carom.engines.reference.RandomScenes;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
-import java.util.stream.LongStream;
-import java.util.stream.Stream;
-import org.junit.jupiter.params.ParameterizedTest;
-import org.junit.jupiter.params.provider.MethodSource;
-
-/**
- * The serial engine against the brute-force judge on seeded random small scenes with effects
- * ({@link RandomScenes#effects}: gravity, pair and wall restitution, the TC model, fixed pegs): the same
- * pair and wall collision counts and the same final state to 1e-8. The horizons (0.7 to 1.1) are short
- * enough that rounding differences between the engine's step-local clocks and the judge's absolute ones
- * are not amplified beyond that by chaos.
- *
- * <p>A dissipative scene without the TC model may come to rest on a wall or peg (resting contact is not
- * modelled): then both must stop with {@link SimulationStuckException} naming the same disc.
- */
-class SerialEffectsAgainstReferenceTest {
-    private static final double SAME = 1e-8;
-    private static final Pattern DISC = Pattern.compile("disc (\\d+)");
-
-    static Stream<Long> seeds() {
-        return LongStream.range(1, Long.getLong("effectsSeeds", 121)).boxed();
-    }
-
-    @ParameterizedTest(name = "seed {0}")
-    @MethodSource("seeds")
-    void finalStateAndCollisionCountsMatchBruteForce(long seed) {
-        Scene scene = RandomScenes.effects(seed);
-        RunResult serial;
-        BruteForceReference.Result reference;
-        SimulationStuckException serialStuck = null;
-        SimulationStuckException referenceStuck = null;
-        try {
-            serial = new SerialEngine().run(scene, RunOptions.until(scene.until()));
-        } catch (SimulationStuckException e) {
-            serial = null;
-            serialStuck = e;
-        }
-        try {
-            reference = BruteForceReference.run(scene, scene.until());
-        } catch (SimulationStuckException e) {
-            reference = null;
-            referenceStuck = e;
-        }
-        if (serialStuck != null || referenceStuck != null) {
-            assertThat(serialStuck).as("%s: serial stuck as the judge (%s)", scene.name(), referenceStuck).isNotNull();
-            assertThat(referenceStuck).as("%s: judge stuck as serial (%s)", scene.name(), serialStuck).isNotNull();
-            assertThat(firstDisc(serialStuck.getMessage())).as("disc named: %s / %s", serialStuck.getMessage(),
-                    referenceStuck.getMessage()).isEqualTo(firstDisc(referenceStuck.getMessage()));
-            return;
-        }
-        String name = scene.name();
-        assertThat(serial.pairCollisions()).as("%s: pair collisions", name).isEqualTo(reference.pairCollisions());
-        assertThat(serial.wallCollisions()).as("%s: wall collisions", name).isEqualTo(reference.wallCollisions());
-        Discs s = serial.finalState();
-        Discs r = reference.state();
-        for (int i = 0; i < scene.size(); i++) {
-            assertThat(s.t[i]).as("%s: clock of %d", name, i).isEqualTo(scene.until());
-            assertThat(s.x[i]).as("%s: x of %d", name, i).isCloseTo(r.x[i], within(SAME));
-            assertThat(s.y[i]).as("%s: y of %d", name, i).isCloseTo(r.y[i], within(SAME));
-            assertThat(s.vx[i]).as("%s: vx of %d", name, i).isCloseTo(r.vx[i], within(SAME));
-            assertThat(s.vy[i]).as("%s: vy of %d", name, i).isCloseTo(r.vy[i], within(SAME));
-        }
-        Invariants.noOverlapsAndInside(scene, s);
-    }
-
-    private static int firstDisc(String message) {
-        Matcher m = DISC.matcher(message);
-        return m.find() ? Integer.parseInt(m.group(1)) : -1;
+/** {@code serial} against the brute-force judge on the seeded random scenes with effects. */
+class SerialEffectsAgainstReferenceTest extends ExactEngineEffectsAgainstReferenceContract {
+    @Override
+    protected Engine engine() {
+        return new SerialEngine();
     }
 }

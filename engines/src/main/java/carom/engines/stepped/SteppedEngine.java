@@ -1,0 +1,113 @@
+package carom.engines.stepped;
+
+import carom.core.BadInputException;
+import carom.core.engine.Engine;
+import carom.core.engine.RunOptions;
+import carom.core.engine.RunResult;
+import carom.core.scene.Effects;
+import carom.core.scene.Scene;
+import carom.core.state.Discs;
+import java.util.Set;
+
+/**
+ * What game engines do: advance every disc by a fixed {@code dt}, then find the pairs that overlap and
+ * give each approaching one the collision impulse, push every overlapping pair apart, and reflect and
+ * clamp discs that crossed a wall. Relaxed: collisions happen late (at the end of the step in which the
+ * discs came to overlap), at the overlapped separation, and in the order the grid lists them rather than
+ * in time order; {@code dt} is the accuracy knob.
+ *
+ * <p>Tunable {@code dt} (simulated time per step). Default {@link #defaultDt}: a step in which the
+ * fastest disc moves 5% of the smallest radius. Single thread: {@code --threads} is ignored. It records
+ * no JFR step events: its steps are many and short, and a step holds no scheduling worth a timeline.
+ *
+ * <p>Counters: {@code steps}; {@code escapes} (disc-steps in which a disc's centre had left a walled box
+ * before it was clamped back: it would have tunnelled through the wall); {@code deepestOverlapPpb}
+ * (the deepest overlap seen before resolution, in parts per billion of the contact distance: Ri + Rj for
+ * a pair, R for a wall; see {@link #deepestOverlap}).
+ */
+public final class SteppedEngine implements Engine {
+    /** Default step: the fastest disc moves this fraction of the smallest mobile radius. */
+    public static final double DEFAULT_STEP_OVER_RADIUS = 0.05;
+    /** Counter: the deepest overlap seen, in parts per billion of the contact distance. */
+    public static final String DEEPEST_OVERLAP_PPB = "deepestOverlapPpb";
+    /** Counter: disc-steps in which a disc's centre was found outside a walled box before clamping. */
+    public static final String ESCAPES = "escapes";
+
+    @Override
+    public String name() {
+        return "stepped";
+    }
+
+    @Override
+    public boolean exact() {
+        return false;
+    }
+
+    @Override
+    public String description() {
+        return "time-stepped like a game engine: fixed dt, overlapping pairs get the collision impulse and are pushed "
+                + "apart, walls reflect and clamp; relaxed, dt is its accuracy knob";
+    }
+
+    @Override
+    public Set<String> tunables() {
+        return Set.of("dt");
+    }
+
+    @Override
+    public RunResult run(Scene scene, RunOptions options) {
+        checkSupports(scene);
+        return new SteppedRun(scene, options, dtOf(scene, options)).run();
+    }
+
+    /** The {@code dt} option, or {@link #defaultDt}; bad input unless a finite number > 0. */
+    public static double dtOf(Scene scene, RunOptions options) {
+        if (!options.tunables().containsKey("dt")) {
+            return defaultDt(scene, options.until());
+        }
+        double dt = options.tunable("dt", Double.NaN);
+        if (!(dt > 0 && dt < Double.POSITIVE_INFINITY)) {
+            throw new BadInputException("engine option dt: must be a finite number > 0, got " + dt);
+        }
+        return dt;
+    }
+
+    /**
+     * The default step: {@link #DEFAULT_STEP_OVER_RADIUS} of the smallest mobile radius over the largest
+     * speed a disc is expected to reach, so no disc moves more than 5% of its radius per step and a
+     * head-on pair overlaps at most 10% of the smaller radius before it is resolved. That speed is the
+     * fastest initial disc's, raised by what gravity can add over a fall across the box (sqrt(2 g L),
+     * L the larger box side). A scene in which nothing moves or falls gets a single step.
+     */
+    public static double defaultDt(Scene scene, double until) {
+        Discs d = scene.newDiscs();
+        double smallest = Double.POSITIVE_INFINITY;
+        for (int i = 0; i < d.n; i++) {
+            if (d.invMass[i] > 0) {
+                smallest = Math.min(smallest, d.radius[i]);
+            }
+        }
+        Effects e = scene.effects();
+        double fall = 2 * Math.hypot(e.gravityX(), e.gravityY()) * Math.max(scene.box().width(), scene.box().height());
+        double maxSpeed = d.maxSpeed();
+        double speed = Math.sqrt(maxSpeed * maxSpeed + fall);
+        if (smallest == Double.POSITIVE_INFINITY || !(speed > 0)) {
+            return until;
+        }
+        return Math.min(until, DEFAULT_STEP_OVER_RADIUS * smallest / speed);
+    }
+
+    /**
+     * The deepest overlap a run of this engine (or any run reporting {@code deepestOverlapPpb}) saw, as a
+     * fraction of the contact distance; NaN if it does not report one.
+     */
+    public static double deepestOverlap(RunResult result) {
+        Long ppb = result.counters() == null ? null : result.counters().get(DEEPEST_OVERLAP_PPB);
+        return ppb == null ? Double.NaN : ppb * 1e-9;
+    }
+
+    /** The counter value for a deepest overlap given as a fraction of the contact distance (rounded up). */
+    public static long overlapPpb(double fraction) {
+        return (long) Math.ceil(fraction * 1e9);
+    }
+}
