@@ -10,7 +10,7 @@ import java.util.Locale;
  * so reporting costs it nothing measurable. Short runs never show a bar: it appears only after
  * {@link #DELAY_MILLIS}, and it is erased when the run ends.
  */
-final class ProgressBar implements ProgressListener, AutoCloseable {
+public final class ProgressBar implements ProgressListener, AutoCloseable {
     static final long DELAY_MILLIS = 2000;
     private static final long PERIOD_MILLIS = 200;
     private static final int WIDTH = 30;
@@ -38,8 +38,13 @@ final class ProgressBar implements ProgressListener, AutoCloseable {
      * A bar that shows when {@code err} is the process's stderr and a terminal; otherwise (tests, pipes,
      * files) one that only records the time and never draws.
      */
-    static ProgressBar forRun(PrintStream err, double until) {
+    public static ProgressBar forRun(PrintStream err, double until) {
         return new ProgressBar(err, until, err == System.err && Terminal.interactive());
+    }
+
+    /** Whether this bar draws (stderr is a terminal), so that callers print progress lines otherwise. */
+    public boolean visible() {
+        return painter != null;
     }
 
     @Override
