@@ -12,6 +12,7 @@ import org.knowm.xchart.BitmapEncoder;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.XYSeries;
+import org.knowm.xchart.style.Styler;
 import org.knowm.xchart.style.markers.SeriesMarkers;
 
 /**
@@ -23,8 +24,12 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
 final class ParetoPlot {
     static final double FLOOR = 1e-16;
     private static final int PANEL_WIDTH = 620;
-    private static final int PANEL_HEIGHT = 460;
+    private static final int PANEL_HEIGHT = 560;
     private static final int COLUMNS = 3;
+    /** Distinct colours for up to ten engines (the default palette repeats similar yellows). */
+    private static final Color[] PALETTE = {new Color(0x1f77b4), new Color(0xff7f0e), new Color(0x2ca02c),
+        new Color(0xd62728), new Color(0x9467bd), new Color(0x8c564b), new Color(0xe377c2), new Color(0x17becf),
+        new Color(0xbcbd22), new Color(0x7f7f7f)};
 
     private ParetoPlot() {
     }
@@ -56,8 +61,9 @@ final class ParetoPlot {
     private static XYChart panel(StudyScene scene, List<Row> rows) {
         XYChart chart = new XYChartBuilder().width(PANEL_WIDTH).height(PANEL_HEIGHT)
                 .title("N = " + scene.discs() + ", " + scene.label())
-                .xAxisTitle("wall time per run (s)").yAxisTitle("RMS deviation from serial at short horizon").build();
+                .xAxisTitle("wall time per run (s)").yAxisTitle("RMS deviation from serial at short horizon (floor 1e-16)").build();
         chart.getStyler().setDefaultSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Scatter);
+        chart.getStyler().setLegendPosition(Styler.LegendPosition.OutsideS).setSeriesColors(PALETTE);
         chart.getStyler().setXAxisLogarithmic(true).setYAxisLogarithmic(true).setMarkerSize(9).setLegendFont(chart.getStyler().getLegendFont().deriveFont(10f));
         Map<String, List<Row>> byEngine = new LinkedHashMap<>();
         rows.forEach(r -> byEngine.computeIfAbsent(r.setting().engine(), x -> new ArrayList<>()).add(r));
