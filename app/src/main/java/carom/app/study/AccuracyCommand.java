@@ -69,7 +69,8 @@ final class AccuracyCommand implements Callable<Integer> {
     @Option(names = "--reps", paramLabel = "R", description = "Timed runs per setting; default 3 (--quick: 1).")
     Integer reps;
 
-    @Option(names = "--warmups", paramLabel = "W", description = "Untimed warm-up runs per setting; default 1.")
+    @Option(names = "--warmups", paramLabel = "W", description = "Untimed warm-up runs per setting to the full horizon; default 1. The short-horizon run "
+                    + "always comes before the timed runs, untimed, and warms the JIT too.")
     int warmups = 1;
 
     @Option(names = "--seed", description = "Seed of the scenes; default 1.")
@@ -259,7 +260,8 @@ final class AccuracyCommand implements Callable<Integer> {
                 # carom study accuracy
 
                 - sizes %s; scenes %s; seed %d; engines %s; threads %s; dt factors %s (of the stepped default)
-                - horizon %s expected collisions per disc; trajectories compared at %s; %d warm-up and %d timed run(s) per setting, %s
+                - horizon %s expected collisions per disc; trajectories compared at %s; per setting %d warm-up run(s), then the
+                  untimed short-horizon run (which warms the JIT too), then %d timed run(s); %s
                 - machine at start: %s
                 - machine at end: %s
                 - Z: reduced pressure PA/(NkT) with its block-average error bar; Z_exact and σ: the serial engine's.

@@ -13,8 +13,8 @@ import java.util.Map;
 
 /**
  * Runs one engine and setting on one scene in this JVM: warm-up runs (untimed, for the JIT), the run to
- * the short horizon whose positions are compared with the reference's, then the timed runs; the errors
- * are measured on the first timed run.
+ * the short horizon whose positions are compared with the reference's (untimed, so it warms the JIT as
+ * well), then the timed runs; the errors are measured on the first timed run.
  *
  * @param dt the step for engines with a {@code dt} tunable (the same absolute step at both horizons), else NaN
  */
