@@ -3,6 +3,8 @@ package carom.app.study;
 import carom.app.AtomicOutput;
 import carom.app.ProgressBar;
 import carom.core.BadInputException;
+import carom.core.scene.Box;
+import carom.core.state.Discs;
 import carom.engines.stepped.SteppedEngine;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -116,10 +118,24 @@ final class AccuracyCommand implements Callable<Integer> {
                 double shortUntil = s.horizon(shortCollisions);
                 Measured reference = null;
                 for (Setting setting : settings) {
-                    Row row = runOne(s, setting, until, shortUntil, timedRuns, reference);
-                    if (row.ran() && setting.engine().equals("serial") && reference == null) {
-                        reference = row.measured();
-                        row = runOne(s, setting, until, shortUntil, timedRuns, reference, row.measured());
+                    double dt = setting.hasDt() ? setting.dtFactor() * SteppedEngine.defaultDt(s.scene(until), until) : Double.NaN;
+                    Row row;
+                    if (setting.engine().equals(Setting.PEER) && s.periodic()) {
+                        row = skipped(s, setting, dt, until, shortUntil, "dyn4j has no periodic boundary");
+                    } else {
+                        Trial trial = new Trial(s, setting, until, shortUntil, dt, warmups, timedRuns);
+                        try {
+                            Measured m = fork ? ChildJvm.run(trial) : trial.run();
+                            if (reference == null && setting.engine().equals("serial")) {
+                                reference = m;
+                            }
+                            row = judged(trial, m, reference);
+                        } catch (RuntimeException e) {
+                            // One failing setting (an engine that stalls, a worker out of memory) must not lose the others.
+                            String message = String.valueOf(e.getMessage()).lines().findFirst().orElse("");
+                            row = skipped(s, setting, dt, until, shortUntil,
+                                    "failed: " + e.getClass().getSimpleName() + ": " + message);
+                        }
                     }
                     rows.add(row);
                     bar.simulatedTime(rows.size());
@@ -142,40 +158,23 @@ final class AccuracyCommand implements Callable<Integer> {
         return 0;
     }
 
-    private Row runOne(StudyScene s, Setting setting, double until, double shortUntil, int timedRuns, Measured reference) {
-        double dt = setting.hasDt() ? setting.dtFactor() * SteppedEngine.defaultDt(s.scene(until), until) : Double.NaN;
-        if (setting.engine().equals(Setting.PEER) && s.periodic()) {
-            return new Row(s, setting, dt, until, shortUntil, "dyn4j has no periodic boundary", null, Double.NaN, Double.NaN, null);
-        }
-        Trial trial = new Trial(s, setting, until, shortUntil, dt, warmups, timedRuns);
-        Measured m;
-        try {
-            m = fork ? ChildJvm.run(trial) : trial.run();
-        } catch (RuntimeException e) {
-            // One failing setting (an engine that stalls, a worker out of memory) must not lose the others.
-            String message = String.valueOf(e.getMessage()).lines().findFirst().orElse("");
-            return new Row(s, setting, dt, until, shortUntil, "failed: " + e.getClass().getSimpleName() + ": " + message,
-                    null, Double.NaN, Double.NaN, null);
-        }
-        return runOne(s, setting, until, shortUntil, timedRuns, reference, m);
+    private static Row skipped(StudyScene s, Setting setting, double dt, double until, double shortUntil, String why) {
+        return new Row(s, setting, dt, until, shortUntil, why, null, Double.NaN, Double.NaN, null);
     }
 
-    /** The row for measurement {@code m}, judged against {@code reference} (serial's), if any. */
-    private static Row runOne(StudyScene s, Setting setting, double until, double shortUntil, int timedRuns,
-                              Measured reference, Measured m) {
-        double dt = setting.hasDt() ? setting.dtFactor() * SteppedEngine.defaultDt(s.scene(until), until) : Double.NaN;
+    /** The row for what {@code trial} measured, judged against {@code reference} (serial's), if there is one. */
+    private static Row judged(Trial t, Measured m, Measured reference) {
         if (reference == null) {
-            return new Row(s, setting, dt, until, shortUntil, null, m, Double.NaN, Double.NaN, null);
+            return new Row(t.studyScene(), t.setting(), t.dt(), t.until(), t.shortUntil(), null, m, Double.NaN, Double.NaN, null);
         }
-        var box = s.scene(shortUntil).box();
-        var state = positions(m);
-        var ref = positions(reference);
-        return new Row(s, setting, dt, until, shortUntil, null, m, reference.z(), reference.zError(),
-                StateErrors.deviation(state, ref, box));
+        Box box = t.studyScene().scene(t.shortUntil()).box();
+        return new Row(t.studyScene(), t.setting(), t.dt(), t.until(), t.shortUntil(), null, m, reference.z(),
+                reference.zError(), StateErrors.deviation(positions(m), positions(reference), box));
     }
 
-    private static carom.core.state.Discs positions(Measured m) {
-        carom.core.state.Discs d = new carom.core.state.Discs(m.shortX().length);
+    /** Discs holding only the short horizon's positions, for {@link StateErrors#deviation}. */
+    private static Discs positions(Measured m) {
+        Discs d = new Discs(m.shortX().length);
         System.arraycopy(m.shortX(), 0, d.x, 0, d.n);
         System.arraycopy(m.shortY(), 0, d.y, 0, d.n);
         return d;

@@ -31,7 +31,7 @@ final class StudyReport {
                 .findFirst().orElse("");
         w.write(String.format(Locale.ROOT, "%n### N = %d, %s%n%nHorizon t = %s; trajectories compared at t = %s%s.%n%n",
                 s.discs(), s.label(), g(first.until()), g(first.shortUntil()), shortCollisions));
-        w.write("| engine, setting | threads (carriers) | wall s (mean ± sd) | collisions | Z ± err | |Z − Z_exact| "
+        w.write("| engine, setting | threads (carriers) | wall s (mean ± sd) | collisions | Z ± err | \\|Z − Z_exact\\| "
                 + "| energy drift | deepest overlap | escapes | viol. / 10⁶ coll. | traj. dev. RMS | traj. dev. max |\n");
         w.write("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     }
