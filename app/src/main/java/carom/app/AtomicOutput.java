@@ -22,16 +22,16 @@ import java.util.concurrent.ThreadLocalRandom;
  * them into place, after every one of them has been written. Closing without committing deletes the
  * temporary files, so a failure never leaves a half-written or newly created file behind.
  */
-final class AtomicOutput implements AutoCloseable {
+public final class AtomicOutput implements AutoCloseable {
     /** Writes one file's content. */
     @FunctionalInterface
-    interface Content {
+    public interface Content {
         void writeTo(Writer w) throws IOException;
     }
 
     /** Writes one file's content by file name, for libraries that write files themselves (a JFR dump). */
     @FunctionalInterface
-    interface FileContent {
+    public interface FileContent {
         void writeTo(Path file) throws IOException;
     }
 
@@ -46,7 +46,7 @@ final class AtomicOutput implements AutoCloseable {
      * Bad input unless {@code target} can be created or replaced: its directory exists and is writable
      * and it is not itself a directory. Checked before a run so that a long run is not wasted.
      */
-    static void checkWritable(Path target, String what) {
+    public static void checkWritable(Path target, String what) {
         Path absolute = target.toAbsolutePath();
         Path dir = absolute.getParent();
         if (dir == null || !Files.isDirectory(dir)) {
@@ -61,7 +61,7 @@ final class AtomicOutput implements AutoCloseable {
     }
 
     /** Writes {@code content} to a temporary file beside {@code target}. */
-    void stage(Path target, Content content) {
+    public void stage(Path target, Content content) {
         Path temp = newTemp(target);
         try (Writer w = new BufferedWriter(new OutputStreamWriter(Files.newOutputStream(temp,
                 StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE), StandardCharsets.UTF_8), BUFFER)) {
@@ -72,7 +72,7 @@ final class AtomicOutput implements AutoCloseable {
     }
 
     /** Has {@code content} write a temporary file beside {@code target}. */
-    void stageFile(Path target, FileContent content) {
+    public void stageFile(Path target, FileContent content) {
         Path temp = newTemp(target);
         try {
             content.writeTo(temp);
@@ -93,7 +93,7 @@ final class AtomicOutput implements AutoCloseable {
     }
 
     /** Moves every staged file into place. */
-    void commit() {
+    public void commit() {
         try {
             for (Staged s : staged) {
                 move(s);

@@ -18,7 +18,8 @@ import picocli.CommandLine.Spec;
         versionProvider = VersionProvider.class,
         description = "Exact event-driven simulation of hard discs in 2D.",
         subcommands = {SimulateCommand.class, EnginesCommand.class, carom.app.render.RenderCommand.class,
-                carom.app.analyze.AnalyzeCommand.class, carom.app.experiment.ExperimentCommand.class})
+                carom.app.analyze.AnalyzeCommand.class, carom.app.experiment.ExperimentCommand.class,
+                carom.app.study.StudyCommand.class})
 public final class Main implements Runnable {
     /** Exit status for a bad scene, bad option or other bad input. */
     public static final int BAD_INPUT = 2;

@@ -45,7 +45,7 @@ public final class ProgressBar implements ProgressListener, AutoCloseable {
      * A bar that shows when {@code err} is the process's stderr and a terminal; otherwise (tests, pipes,
      * files) one that only records the time and never draws.
      */
-    static ProgressBar forRun(PrintStream err, double until) {
+    public static ProgressBar forRun(PrintStream err, double until) {
         return new ProgressBar(err, until, null, visibleOn(err));
     }
 
@@ -56,6 +56,11 @@ public final class ProgressBar implements ProgressListener, AutoCloseable {
 
     private static boolean visibleOn(PrintStream err) {
         return err == System.err && Terminal.interactive();
+    }
+
+    /** Whether this bar draws (stderr is a terminal), so that callers print progress lines otherwise. */
+    public boolean visible() {
+        return painter != null;
     }
 
     @Override

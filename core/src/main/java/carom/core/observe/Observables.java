@@ -1,5 +1,6 @@
 package carom.core.observe;
 
+import carom.core.physics.Flight;
 import carom.core.state.Discs;
 
 /** Whole-system observables every engine reports the same way. */
@@ -16,6 +17,18 @@ public final class Observables {
             }
         }
         return sum;
+    }
+
+    /**
+     * Kinetic plus potential energy of the mobile discs at their clocks, the potential in the scene's
+     * field as {@code flight} measures it (0 without gravity): what an elastic run conserves.
+     */
+    public static double totalEnergy(Discs d, Flight flight) {
+        double potential = 0;
+        for (int i = 0; i < d.n; i++) {
+            potential += flight.potentialEnergy(d, i, d.t[i]);
+        }
+        return kineticEnergy(d) + potential;
     }
 
     /** Total momentum of the mobile discs, {px, py}. */
