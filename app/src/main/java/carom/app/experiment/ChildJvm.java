@@ -1,12 +1,12 @@
 package carom.app.experiment;
 
+import carom.app.ChildJava;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStreamReader;
 import java.io.OutputStream;
 import java.io.UncheckedIOException;
-import java.lang.management.ManagementFactory;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -15,13 +15,9 @@ import java.util.List;
 import java.util.function.Consumer;
 
 /**
- * Runs a {@link ChildPlan} in a JVM of its own: the same java, class path and JVM options as this
- * one, but the experiment's heap, and for vthreads the carrier count.
- *
- * <p>Why a child JVM per engine and thread count: the virtual-thread scheduler reads its carrier
- * count once per JVM, so vthreads runs on different thread counts cannot share one; and a JVM of its
- * own keeps each engine's measurements free of the others' JIT profiles, heap and leftover threads
- * (Akka's, the fork/join pools'). The runs of one engine share their JVM, as the thesis's trials did,
+ * Runs a {@link ChildPlan} in a JVM of its own ({@link ChildJava}): the same java, class path and JVM
+ * options as this one, but the experiment's heap, and for vthreads the carrier count, so one child per
+ * engine and thread count. The runs of one engine share their JVM, as the thesis's trials did,
  * after a warm-up run; a run per JVM would measure mostly the JIT.
  */
 final class ChildJvm {
@@ -81,39 +77,11 @@ final class ChildJvm {
 
     /** The child's command line: this JVM's java and options, the experiment's heap and carriers. */
     List<String> command(String engine, int threads) {
-        List<String> cmd = new ArrayList<>();
-        cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
-        for (String option : ManagementFactory.getRuntimeMXBean().getInputArguments()) {
-            if (inherited(option)) {
-                cmd.add(option);
-            }
-        }
-        cmd.add("-Xmx" + heap);
-        cmd.add("-Djava.awt.headless=true");
+        List<String> options = new ArrayList<>(List.of("-Xmx" + heap, "-Djava.awt.headless=true"));
         if (engine.equals("vthreads")) {
-            cmd.add("-Djdk.virtualThreadScheduler.parallelism=" + threads);
+            options.add("-Djdk.virtualThreadScheduler.parallelism=" + threads);
         }
-        cmd.add("-cp");
-        cmd.add(System.getProperty("java.class.path"));
-        cmd.add(TrialProcess.class.getName());
-        return cmd;
-    }
-
-    /**
-     * Options of this JVM the child gets too (CAROM_JAVA_OPTS, the GC, --sun-misc-unsafe-memory-access),
-     * but not the heap and carrier settings the experiment sets itself, nor debuggers, agents and
-     * recordings, which would slow the child down or fight over a port.
-     */
-    static boolean inherited(String option) {
-        String[] notInherited = {"-Xmx", "-Xms", "-XX:MaxHeapSize", "-XX:InitialHeapSize", "-XX:MaxRAMPercentage",
-            "-XX:InitialRAMPercentage", "-XX:MinRAMPercentage", "-Djdk.virtualThreadScheduler.", "-agentlib:",
-            "-agentpath:", "-javaagent:", "-Xrunjdwp", "-Xdebug", "-XX:StartFlightRecording", "-XX:FlightRecorderOptions"};
-        for (String prefix : notInherited) {
-            if (option.startsWith(prefix)) {
-                return false;
-            }
-        }
-        return true;
+        return ChildJava.command(options, TrialProcess.class.getName(), List.of());
     }
 
     private static String lastErrorLine(Path stderr) throws IOException {

@@ -1,13 +1,12 @@
 package carom.app.study;
 
+import carom.app.ChildJava;
 import carom.app.Main;
 import java.io.IOException;
 import java.io.UncheckedIOException;
-import java.lang.management.ManagementFactory;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.stream.Stream;
@@ -54,20 +53,11 @@ final class ChildJvm {
     }
 
     private static List<String> command(Trial t, Path dir) {
-        List<String> cmd = new ArrayList<>();
-        cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
-        for (String arg : ManagementFactory.getRuntimeMXBean().getInputArguments()) {
-            // The carrier count is the child's own; a debugger agent would clash on its port.
-            if (!arg.startsWith("-D" + PARALLELISM + "=") && !arg.startsWith("-agentlib:jdwp")) {
-                cmd.add(arg);
-            }
-        }
-        cmd.add("-D" + PARALLELISM + "=" + t.setting().threads());
-        cmd.add("-cp");
-        cmd.add(System.getProperty("java.class.path"));
-        cmd.add(Main.class.getName());
+        // The worker gets this JVM's heap limit and the setting's own carrier count.
+        List<String> options = List.of("-Xmx" + Runtime.getRuntime().maxMemory() / (1024 * 1024) + "m",
+                "-D" + PARALLELISM + "=" + t.setting().threads());
         StudyScene s = t.studyScene();
-        cmd.addAll(List.of("study", "worker",
+        return ChildJava.command(options, Main.class.getName(), List.of("study", "worker",
                 "--scene", (s.periodic() ? "periodic:" : "walls:") + s.phi(),
                 "--discs", Integer.toString(s.discs()),
                 "--seed", Long.toString(s.seed()),
@@ -80,7 +70,6 @@ final class ChildJvm {
                 "--warmups", Integer.toString(t.warmups()),
                 "--reps", Integer.toString(t.reps()),
                 "--into", dir.toString()));
-        return cmd;
     }
 
     private static void deleteQuietly(Path dir) {

@@ -2,6 +2,7 @@ package carom.app.experiment;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import carom.app.ChildJava;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.IOException;
 import java.util.ArrayList;
@@ -76,11 +77,11 @@ class TrialProcessTest {
         assertThat(vthreads.stream().filter(o -> o.startsWith("-Xmx"))).containsExactly("-Xmx3g");
         assertThat(new ChildJvm("3g").command("akka", 3)).noneMatch(o -> o.startsWith("-Djdk.virtualThreadScheduler"));
 
-        assertThat(ChildJvm.inherited("-XX:+UseParallelGC")).isTrue();
-        assertThat(ChildJvm.inherited("--sun-misc-unsafe-memory-access=allow")).isTrue();
-        assertThat(ChildJvm.inherited("-Xmx16g")).isFalse();
-        assertThat(ChildJvm.inherited("-Djdk.virtualThreadScheduler.parallelism=8")).isFalse();
-        assertThat(ChildJvm.inherited("-agentlib:jdwp=transport=dt_socket,server=y,address=5005")).isFalse();
-        assertThat(ChildJvm.inherited("-javaagent:/x/agent.jar")).isFalse();
+        assertThat(ChildJava.inherited("-XX:+UseParallelGC")).isTrue();
+        assertThat(ChildJava.inherited("--sun-misc-unsafe-memory-access=allow")).isTrue();
+        assertThat(ChildJava.inherited("-Xmx16g")).isFalse();
+        assertThat(ChildJava.inherited("-Djdk.virtualThreadScheduler.parallelism=8")).isFalse();
+        assertThat(ChildJava.inherited("-agentlib:jdwp=transport=dt_socket,server=y,address=5005")).isFalse();
+        assertThat(ChildJava.inherited("-javaagent:/x/agent.jar")).isFalse();
     }
 }
