@@ -27,9 +27,11 @@ import static carom.engines.fast.DiscTable.VY;
 import static carom.engines.fast.DiscTable.X;
 import static carom.engines.fast.DiscTable.Y;
 
+import carom.core.engine.StallGuard;
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
 import carom.core.physics.PairLaw;
+import carom.core.physics.Restitution;
 import carom.core.state.Discs;
 
 /**
@@ -68,6 +70,9 @@ public final class CellPredictor {
     private final Flight flight;
     private final Boundary boundary;
     private final Boundary.Walls walls;
+    private final Restitution restitution;
+    /** Under gravity every contact with something immovable is checked for rest (StallGuard). */
+    private final boolean gravity;
     private final int[] around;
     private final int[][] ahead;
     /** Owning domain of each column, or null if every column is seen; this predictor's domain. */
@@ -119,6 +124,8 @@ public final class CellPredictor {
         this.flight = table.flight;
         this.boundary = table.boundary;
         this.walls = table.walls;
+        this.restitution = table.restitution;
+        this.gravity = table.acceleration > 0;
         this.around = table.around;
         this.ahead = table.ahead;
         this.colOwner = colOwner;
@@ -175,6 +182,56 @@ public final class CellPredictor {
             flight.advance(pair, 0, time);
             store(i, 0);
         }
+    }
+
+    /**
+     * Collides discs a and b at local {@code now} (absolute {@code abs}): both advanced, their
+     * velocities changed, restitution told, collision counters bumped (b's only if mobile); under
+     * gravity a contact with an immovable b goes to {@code guard}. Returns the collision's virial.
+     */
+    public double collidePair(int a, int b, double now, double abs, StallGuard guard) {
+        advance(a, now);
+        advance(b, now);
+        int at = a * stride;
+        int bt = b * stride;
+        double dx = boundary.separationX(rec[bt + X] - rec[at + X]);
+        double dy = boundary.separationY(rec[bt + Y] - rec[at + Y]);
+        double e = restitution.pair(a, b, abs);
+        boolean bMobile = invMass(b) > 0;
+        if (gravity && !bMobile) {
+            double dist = Math.sqrt(dx * dx + dy * dy);
+            guard.pegContact(abs, a, b, dx / dist, dy / dist, rec[at + VX], rec[at + VY], dist);
+        }
+        load(a, 0);
+        load(b, 1);
+        double w = PairLaw.collide(pair, 0, 1, dx, dy, e);
+        store(a, 0);
+        store(b, 1);
+        restitution.collided(a, abs);
+        ir[a * IS + COUNT]++;
+        if (bMobile) {
+            restitution.collided(b, abs);
+            ir[b * IS + COUNT]++;
+        }
+        return w;
+    }
+
+    /**
+     * Bounces disc i off wall {@code wall} at local {@code now} (absolute {@code abs}): advanced,
+     * reflected, restitution told, its collision counter bumped; under gravity the contact goes to
+     * {@code guard}.
+     */
+    public void collideWall(int i, int wall, double now, double abs, StallGuard guard) {
+        advance(i, now);
+        double e = restitution.wall(i, abs);
+        load(i, 0);
+        if (gravity) {
+            guard.wallContact(abs, i, wall, pair.vx[0], pair.vy[0]);
+        }
+        boundary.reflect(pair, 0, wall, e);
+        store(i, 0);
+        restitution.collided(i, abs);
+        ir[i * IS + COUNT]++;
     }
 
     /**

@@ -245,30 +245,8 @@ final class FastRun {
 
     private void collidePair(int a, int b, double now) {
         double abs = epoch + now;
-        advance(a, now);
-        advance(b, now);
-        int at = a * stride;
-        int bt = b * stride;
-        double dx = boundary.separationX(rec[bt + X] - rec[at + X]);
-        double dy = boundary.separationY(rec[bt + Y] - rec[at + Y]);
-        double e = restitution.pair(a, b, abs);
-        boolean bMobile = invMass(b) > 0;
-        if (gravity && !bMobile) {
-            double dist = Math.sqrt(dx * dx + dy * dy);
-            stallGuard.pegContact(abs, a, b, dx / dist, dy / dist, rec[at + VX], rec[at + VY], dist);
-        }
-        p.load(a, 0);
-        p.load(b, 1);
-        double w = PairLaw.collide(p.pair, 0, 1, dx, dy, e);
-        p.store(a, 0);
-        p.store(b, 1);
+        double w = p.collidePair(a, b, now, abs, stallGuard);
         pairCollisions++;
-        restitution.collided(a, abs);
-        ir[a * IS + COUNT]++;
-        if (bMobile) {
-            restitution.collided(b, abs);
-            ir[b * IS + COUNT]++;
-        }
         if (virial != null) {
             virial.add(abs, w);
         }
@@ -276,7 +254,7 @@ final class FastRun {
             audit.check(p.snapshot(), flight, now, abs);
         }
         queue.insert(a, predictFull(a, now));
-        if (bMobile) {
+        if (invMass(b) > 0) {
             queue.remove(b);
             queue.insert(b, predictFull(b, now));
         }
@@ -284,16 +262,7 @@ final class FastRun {
 
     private void collideWall(int i, int wall, double now) {
         double abs = epoch + now;
-        advance(i, now);
-        double e = restitution.wall(i, abs);
-        p.load(i, 0);
-        if (gravity) {
-            stallGuard.wallContact(abs, i, wall, p.pair.vx[0], p.pair.vy[0]);
-        }
-        boundary.reflect(p.pair, 0, wall, e);
-        p.store(i, 0);
-        restitution.collided(i, abs);
-        ir[i * IS + COUNT]++;
+        p.collideWall(i, wall, now, abs, stallGuard);
         wallCollisions++;
         if (audit != null) {
             audit.check(p.snapshot(), flight, now, abs);

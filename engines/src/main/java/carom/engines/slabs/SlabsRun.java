@@ -536,31 +536,9 @@ final class SlabsRun {
         serialStall.event(abs, a, b);
         da.queue.remove(a);
         db.queue.remove(b);
-        da.advance(a, now);
-        db.advance(b, now);
-        int at = a * stride;
-        int bt = b * stride;
-        double dx = boundary.separationX(rec[bt + X] - rec[at + X]);
-        double dy = boundary.separationY(rec[bt + Y] - rec[at + Y]);
-        double e = restitution.pair(a, b, abs);
-        boolean bMobile = invMass(b) > 0;
-        if (gravity && !bMobile) {
-            double dist = Math.sqrt(dx * dx + dy * dy);
-            serialStall.pegContact(abs, a, b, dx / dist, dy / dist, rec[at + VX], rec[at + VY], dist);
-        }
-        CellPredictor p = da.pred;
-        p.load(a, 0);
-        p.load(b, 1);
-        double w = PairLaw.collide(p.pair, 0, 1, dx, dy, e);
-        p.store(a, 0);
-        p.store(b, 1);
+        double w = da.pred.collidePair(a, b, now, abs, serialStall);
         crossPairCollisions++;
-        restitution.collided(a, abs);
-        ir[a * IS + COUNT]++;
-        if (bMobile) {
-            restitution.collided(b, abs);
-            ir[b * IS + COUNT]++;
-        }
+        boolean bMobile = invMass(b) > 0;
         if (serialVirial != null) {
             serialVirial.add(abs, w);
         }
@@ -1249,31 +1227,8 @@ final class SlabsRun {
             if (logging) {
                 log(b);
             }
-            advance(a, now);
-            advance(b, now);
-            int at = a * stride;
-            int bt = b * stride;
-            double dx = boundary.separationX(rec[bt + X] - rec[at + X]);
-            double dy = boundary.separationY(rec[bt + Y] - rec[at + Y]);
-            double e = restitution.pair(a, b, abs);
-            boolean bMobile = invMass(b) > 0;
-            if (gravity && !bMobile) {
-                double dist = Math.sqrt(dx * dx + dy * dy);
-                stallGuard.pegContact(abs, a, b, dx / dist, dy / dist, rec[at + VX], rec[at + VY], dist);
-            }
-            CellPredictor p = pred;
-            p.load(a, 0);
-            p.load(b, 1);
-            double w = PairLaw.collide(p.pair, 0, 1, dx, dy, e);
-            p.store(a, 0);
-            p.store(b, 1);
+            double w = pred.collidePair(a, b, now, abs, stallGuard);
             pairCollisions++;
-            restitution.collided(a, abs);
-            ir[a * IS + COUNT]++;
-            if (bMobile) {
-                restitution.collided(b, abs);
-                ir[b * IS + COUNT]++;
-            }
             if (virial != null) {
                 virial.add(abs, w);
                 if (logging) {
@@ -1284,7 +1239,7 @@ final class SlabsRun {
                 audit.check(snapshot(), flight, now, abs);
             }
             queue.insert(a, predictFull(a, now));
-            if (bMobile) {
+            if (invMass(b) > 0) {
                 queue.remove(b);
                 queue.insert(b, predictFull(b, now));
             }
@@ -1295,16 +1250,7 @@ final class SlabsRun {
 
         private void collideWall(int i, int wall, double now) {
             double abs = epoch + now;
-            advance(i, now);
-            double e = restitution.wall(i, abs);
-            pred.load(i, 0);
-            if (gravity) {
-                stallGuard.wallContact(abs, i, wall, pred.pair.vx[0], pred.pair.vy[0]);
-            }
-            boundary.reflect(pred.pair, 0, wall, e);
-            pred.store(i, 0);
-            restitution.collided(i, abs);
-            ir[i * IS + COUNT]++;
+            pred.collideWall(i, wall, now, abs, stallGuard);
             wallCollisions++;
             if (audit != null && !logging) {
                 audit.check(snapshot(), flight, now, abs);
