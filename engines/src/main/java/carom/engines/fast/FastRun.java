@@ -6,7 +6,6 @@ import static carom.engines.fast.DiscTable.CELL;
 import static carom.engines.fast.DiscTable.COUNT;
 import static carom.engines.fast.DiscTable.EV;
 import static carom.engines.fast.DiscTable.HIT;
-import static carom.engines.fast.DiscTable.INF;
 import static carom.engines.fast.DiscTable.IS;
 import static carom.engines.fast.DiscTable.KIND_SHIFT;
 import static carom.engines.fast.DiscTable.PARTNER;
@@ -15,10 +14,6 @@ import static carom.engines.fast.DiscTable.QNEXT;
 import static carom.engines.fast.DiscTable.RECHECK;
 import static carom.engines.fast.DiscTable.RESYNC_SPANS;
 import static carom.engines.fast.DiscTable.SPAN_MEANS;
-import static carom.engines.fast.DiscTable.VX;
-import static carom.engines.fast.DiscTable.VY;
-import static carom.engines.fast.DiscTable.X;
-import static carom.engines.fast.DiscTable.Y;
 
 import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
@@ -29,9 +24,7 @@ import carom.core.observe.Observables;
 import carom.core.observe.Pressure;
 import carom.core.observe.VirialAccumulator;
 import carom.core.observe.jfr.QueueRebuildEvent;
-import carom.core.physics.Boundary;
-import carom.core.physics.PairLaw;
-import carom.core.physics.Restitution;
+import carom.core.physics.Flight;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
 import java.util.HashMap;
@@ -46,8 +39,8 @@ import java.util.Map;
  * "Efficient event-driven simulations of hard spheres", Eur. Phys. J. E 45, 22; the classic Rapaport
  * scheme with one event per particle). Events sit in a calendar queue ({@link CalendarQueue}).
  * <ul>
- *   <li>Collision of i and j: both advance, collide ({@link PairLaw#collide}), bump their collision
- *       counters, and re-predict against their whole neighbourhood.</li>
+ *   <li>Collision of i and j: both advance, collide ({@link carom.core.physics.PairLaw#collide}), bump
+ *       their collision counters, and re-predict against their whole neighbourhood.</li>
  *   <li>Pair event whose partner's counter changed since prediction: stale; re-predict the disc.</li>
  *   <li>Cell crossing: move the disc to the new cell and predict it only against the row or column
  *       of cells that enters its neighbourhood, plus its remembered best candidate (its trajectory is
@@ -65,8 +58,8 @@ import java.util.Map;
  *       from at least one side since either disc last changed trajectory or cell); fixed discs are
  *       never scheduled; a mobile disc without any event (at rest, no gravity) is not queued.</li>
  *   <li>Local times: disc clocks and event times count from {@code epoch}; every
- *       {@link #RESYNC_SPANS} calendar spans all discs are advanced, clocks restart at 0 and the queue is
- *       rebuilt with a re-estimated slice width, so clocks stay small and keep their precision.</li>
+ *       {@link DiscTable#RESYNC_SPANS} calendar spans all discs are advanced, clocks restart at 0 and the
+ *       queue is rebuilt with a re-estimated slice width, so clocks stay small and keep their precision.</li>
  *   <li>Periodic positions stay within rounding of their logical cell: at a crossing through the box
  *       edge the position moves by exactly one box length, never by {@code wrapX}, whose rounding
  *       could put the disc on the wrong side of its cell.</li>
@@ -99,13 +92,9 @@ final class FastRun {
     private final double[] rec;
     private final int stride;
     private final int[] ir;
-    private final Boundary boundary;
     private final boolean periodic;
-    private final Restitution restitution;
-    /** Under gravity every contact with something immovable is checked for rest (StallGuard). */
-    private final boolean gravity;
     private final boolean fullOnCross;
-    private final carom.core.physics.Flight flight;
+    private final Flight flight;
     private final EnergyAudit audit;
     private final VirialAccumulator virial;
     private final ProgressListener progress;
@@ -137,10 +126,7 @@ final class FastRun {
         this.stride = table.stride;
         this.ir = table.ir;
         this.flight = table.flight;
-        this.boundary = table.boundary;
         this.periodic = table.periodic;
-        this.restitution = table.restitution;
-        this.gravity = table.acceleration > 0;
         this.fullOnCross = table.fullOnCross;
         this.audit = Boolean.parseBoolean(options.tunables().getOrDefault("auditEnergy", "false")) ? EnergyAudit.forScene(scene) : null;
         this.virial = periodic ? new VirialAccumulator(0, until, PRESSURE_BLOCKS) : null;

@@ -37,7 +37,6 @@ import carom.core.observe.Pressure;
 import carom.core.observe.VirialAccumulator;
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
-import carom.core.physics.PairLaw;
 import carom.core.physics.Restitution;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
@@ -114,7 +113,6 @@ final class SlabsRun {
     private final Boundary boundary;
     private final boolean periodic;
     private final Restitution restitution;
-    private final boolean gravity;
     private final EnergyAudit audit;
     private final ProgressListener progress;
     private final double energyStart;
@@ -207,7 +205,6 @@ final class SlabsRun {
         this.boundary = table.boundary;
         this.periodic = table.periodic;
         this.restitution = table.restitution;
-        this.gravity = table.acceleration > 0;
         this.audit = Boolean.parseBoolean(options.tunables().getOrDefault("auditEnergy", "false")) ? EnergyAudit.forScene(scene) : null;
         this.serialVirial = periodic ? new VirialAccumulator(0, until, PRESSURE_BLOCKS) : null;
         this.progress = options.progress();
