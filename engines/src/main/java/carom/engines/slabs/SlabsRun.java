@@ -1,6 +1,32 @@
 package carom.engines.slabs;
 
-import carom.core.BadInputException;
+import static carom.engines.fast.DiscTable.AXIS_BITS;
+import static carom.engines.fast.DiscTable.AXIS_MASK;
+import static carom.engines.fast.DiscTable.CELL;
+import static carom.engines.fast.DiscTable.CELL_MASK;
+import static carom.engines.fast.DiscTable.CNEXT;
+import static carom.engines.fast.DiscTable.COUNT;
+import static carom.engines.fast.DiscTable.CROSS_LEFT;
+import static carom.engines.fast.DiscTable.CROSS_RIGHT;
+import static carom.engines.fast.DiscTable.EV;
+import static carom.engines.fast.DiscTable.HIT;
+import static carom.engines.fast.DiscTable.INF;
+import static carom.engines.fast.DiscTable.IS;
+import static carom.engines.fast.DiscTable.KIND_SHIFT;
+import static carom.engines.fast.DiscTable.NIL;
+import static carom.engines.fast.DiscTable.NONE;
+import static carom.engines.fast.DiscTable.PARTNER;
+import static carom.engines.fast.DiscTable.PCOUNT;
+import static carom.engines.fast.DiscTable.QNEXT;
+import static carom.engines.fast.DiscTable.RECHECK;
+import static carom.engines.fast.DiscTable.RESYNC_SPANS;
+import static carom.engines.fast.DiscTable.SPAN_MEANS;
+import static carom.engines.fast.DiscTable.T;
+import static carom.engines.fast.DiscTable.VX;
+import static carom.engines.fast.DiscTable.VY;
+import static carom.engines.fast.DiscTable.X;
+import static carom.engines.fast.DiscTable.Y;
+
 import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
@@ -11,12 +37,12 @@ import carom.core.observe.Pressure;
 import carom.core.observe.VirialAccumulator;
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
-import carom.core.physics.PairLaw;
-import carom.core.physics.Physics;
 import carom.core.physics.Restitution;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
 import carom.engines.fast.CalendarQueue;
+import carom.engines.fast.CellPredictor;
+import carom.engines.fast.DiscTable;
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
 import java.util.Arrays;
@@ -28,8 +54,9 @@ import java.util.concurrent.locks.LockSupport;
  * One run of the slabs engine.
  *
  * <h2>Domains</h2>
- * The grid is {@code fast}'s (cells a hair wider than the largest diameter, discs Morton-ordered, one
- * record of doubles and one of ints per disc, shared by all threads). Its columns are cut into K slabs
+ * The grid is {@code fast}'s {@link DiscTable} (cells a hair wider than the largest diameter, discs
+ * Morton-ordered, one record of doubles and one of ints per disc, shared by all threads); each domain
+ * predicts through its own {@link CellPredictor}, filtered to its columns. Its columns are cut into K slabs
  * of at least {@link #MIN_SLAB_COLS} columns (fewer domains if the box is too narrow); a disc belongs to the domain owning its logical cell's
  * column. Each {@link Domain} keeps its own calendar queue over its discs and predicts only against
  * discs of its own columns, so during a window a thread reads and writes only its own discs and cells.
@@ -67,23 +94,8 @@ import java.util.concurrent.locks.LockSupport;
  */
 final class SlabsRun {
     private static final int PRESSURE_BLOCKS = 20;
-    private static final byte HIT = 0;
-    private static final byte CROSS_LEFT = 1;
-    private static final byte CROSS_RIGHT = 2;
-    private static final byte CROSS_DOWN = 3;
-    private static final byte CROSS_UP = 4;
-    private static final byte RECHECK = 5;
-    private static final int NONE = Integer.MIN_VALUE;
     /** Cross-heap partner code: the disc's next event is its migration into a foreign column. */
     private static final int MIGRATE = Integer.MIN_VALUE + 1;
-    private static final int NIL = -1;
-    private static final int AXIS_BITS = 14;
-    private static final int AXIS_MASK = (1 << AXIS_BITS) - 1;
-    private static final int CELL_MASK = (1 << 2 * AXIS_BITS) - 1;
-    private static final int KIND_SHIFT = 2 * AXIS_BITS;
-    private static final double SPAN_MEANS = 4;
-    private static final double RESYNC_SPANS = 4;
-    private static final double INF = Double.POSITIVE_INFINITY;
     /**
      * Narrowest slab. Nothing breaks below it (a column bordering two foreign slabs is handled), but
      * a slab of one column is all edge: every event would be logged and verified.
@@ -93,53 +105,23 @@ final class SlabsRun {
     private final Scene scene;
     private final int n;
     private final double until;
+    /** Records, grid and Morton order ({@code fast}'s); its arrays and flags copied below. */
+    private final DiscTable table;
     private final double[] rec;
     private final int stride;
-    private static final int X = 0;
-    private static final int Y = 1;
-    private static final int VX = 2;
-    private static final int VY = 3;
-    private static final int T = 4;
-    private static final int EV = 5;
-    private static final int R = 6;
-    private static final int IM = 7;
-    private final double sharedRadius;
-    private final double sharedInvMass;
-    private final boolean straight;
     private final Flight flight;
     private final Boundary boundary;
-    private final Boundary.Walls walls;
     private final boolean periodic;
     private final Restitution restitution;
-    private final boolean gravity;
     private final EnergyAudit audit;
     private final ProgressListener progress;
     private final double energyStart;
     private final double[] momentumStart;
-
     private final int cols;
     private final int rows;
-    private final double cellW;
-    private final double cellH;
-    private final double width;
-    private final double height;
     private final int[] cellHead;
     private final int[] ir;
-    private static final int IS = 6;
-    private static final int CELL = 0;
-    private static final int PARTNER = 1;
-    private static final int PCOUNT = 2;
-    private static final int COUNT = 3;
-    private static final int CNEXT = 4;
-    private static final int QNEXT = 5;
     private final boolean fullOnCross;
-    private final double recheckX;
-    private final double recheckY;
-    private final boolean straightImages;
-    private final int[] around;
-    private final int[][] ahead;
-    private static final double[] NO_SHIFT = new double[9];
-    private int[] sceneIds;
 
     // Domains.
     private final int domainCount;
@@ -214,61 +196,31 @@ final class SlabsRun {
     SlabsRun(Scene scene, RunOptions options) {
         this.scene = scene;
         this.until = options.until();
-        Discs src = scene.newDiscs();
-        this.n = src.n;
-        Physics physics = Physics.of(scene);
-        this.flight = physics.flight;
-        this.boundary = physics.boundary;
-        this.walls = boundary instanceof Boundary.Walls w ? w : null;
-        this.periodic = walls == null;
-        this.restitution = physics.restitution;
-        this.gravity = flight.maxAcceleration() > 0;
-        this.width = scene.box().width();
-        this.height = scene.box().height();
+        this.table = new DiscTable(scene, options.tunable("cellFactor", 1.0));
+        Discs src = table.initial;
+        this.n = table.n;
+        this.rec = table.rec;
+        this.stride = table.stride;
+        this.flight = table.flight;
+        this.boundary = table.boundary;
+        this.periodic = table.periodic;
+        this.restitution = table.restitution;
         this.audit = Boolean.parseBoolean(options.tunables().getOrDefault("auditEnergy", "false")) ? EnergyAudit.forScene(scene) : null;
         this.serialVirial = periodic ? new VirialAccumulator(0, until, PRESSURE_BLOCKS) : null;
         this.progress = options.progress();
-        this.serialStall = new StallGuard(scene, this::sceneId);
+        this.serialStall = new StallGuard(scene, table::sceneId);
         this.energyStart = Observables.kineticEnergy(src);
         this.momentumStart = Observables.momentum(src);
-
-        double cellFactor = options.tunable("cellFactor", 1.0);
-        if (!(cellFactor >= 1) || Double.isInfinite(cellFactor)) {
-            throw new BadInputException("engine option cellFactor: must be >= 1, got " + cellFactor);
-        }
-        double minCell = 2 * src.maxRadius() * cellFactor * (1 + 1e-9);
-        long c = cellsAlong(width, minCell);
-        long r = cellsAlong(height, minCell);
-        long cap = Math.max(64, 4L * n);
-        while (c * r > cap) {
-            double shrink = Math.sqrt((double) c * r / cap) * 1.0001;
-            c = Math.max(1, (long) (c / shrink));
-            r = Math.max(1, (long) (r / shrink));
-        }
-        this.cols = (int) Math.min(c, AXIS_MASK);
-        this.rows = (int) Math.min(r, AXIS_MASK);
-        this.cellW = width / cols;
-        this.cellH = height / rows;
-        double maxDiameter = 2 * src.maxRadius();
-        this.recheckX = periodic && cols < 4 ? 0.5 * (0.5 * width - maxDiameter) : 0;
-        this.recheckY = periodic && rows < 4 ? 0.5 * (0.5 * height - maxDiameter) : 0;
-        this.straight = flight instanceof Flight.Straight;
-        this.straightImages = straight && recheckX == 0 && recheckY == 0;
-        this.fullOnCross = (gravity && scene.hasFixedDiscs()) || recheckX > 0 || recheckY > 0;
-        this.cellHead = new int[cols * rows];
-        this.around = new int[] {-cols - 1, -cols, -cols + 1, -1, 0, 1, cols - 1, cols, cols + 1};
-        this.ahead = new int[5][];
-        ahead[CROSS_LEFT] = new int[] {-cols - 1, -1, cols - 1};
-        ahead[CROSS_RIGHT] = new int[] {-cols + 1, 1, cols + 1};
-        ahead[CROSS_DOWN] = new int[] {-cols - 1, -cols, -cols + 1};
-        ahead[CROSS_UP] = new int[] {cols - 1, cols, cols + 1};
-        this.ir = new int[Math.multiplyExact(n, IS)];
-        Arrays.fill(cellHead, NIL);
+        this.cols = table.cols;
+        this.rows = table.rows;
+        this.cellHead = table.cellHead;
+        this.ir = table.ir;
+        this.fullOnCross = table.fullOnCross;
 
         // Slabs: K domains of at least MIN_SLAB_COLS columns; tiny periodic axes (rechecks) use one.
         int k = Math.max(1, options.threads());
         k = Math.min(k, cols / MIN_SLAB_COLS);
-        if (recheckX > 0 || recheckY > 0 || k < 1) {
+        if (table.recheckX > 0 || table.recheckY > 0 || k < 1) {
             k = 1;
         }
         this.domainCount = k;
@@ -284,38 +236,6 @@ final class SlabsRun {
             edgeCol[col] = (left >= 0 && colOwner[left] != colOwner[col]) || (right >= 0 && colOwner[right] != colOwner[col]);
         }
 
-        boolean shared = true;
-        for (int i = 1; i < n && shared; i++) {
-            shared = src.radius[i] == src.radius[0] && src.invMass[i] == src.invMass[0];
-        }
-        this.stride = shared ? R : IM + 1;
-        this.sharedRadius = shared && n > 0 ? src.radius[0] : Double.NaN;
-        this.sharedInvMass = shared && n > 0 ? src.invMass[0] : Double.NaN;
-        this.rec = new double[Math.multiplyExact(n, stride)];
-        int[] order = mortonOrder(src);
-        for (int q = 0; q < n; q++) {
-            int o = order[q];
-            int at = q * stride;
-            rec[at + X] = src.x[o];
-            rec[at + Y] = src.y[o];
-            rec[at + VX] = src.vx[o];
-            rec[at + VY] = src.vy[o];
-            if (!shared) {
-                rec[at + R] = src.radius[o];
-                rec[at + IM] = src.invMass[o];
-            }
-        }
-        for (int q = n - 1; q >= 0; q--) {
-            int row = rowOf(rec[q * stride + Y]);
-            int col = colOf(rec[q * stride + X]);
-            int cell = row * cols + col;
-            ir[q * IS + CELL] = row << AXIS_BITS | col;
-            ir[q * IS + CNEXT] = cellHead[cell];
-            cellHead[cell] = q;
-        }
-        for (int i = 0; i < n; i++) {
-            ir[i * IS + PARTNER] = NONE;
-        }
         this.domains = new Domain[k];
         int buckets = Integer.highestOneBit(Math.max(64, n / (2 * k) - 1)) << 1;
         for (int d = 0; d < k; d++) {
@@ -334,86 +254,12 @@ final class SlabsRun {
         }
     }
 
-    private static long cellsAlong(double length, double minCell) {
-        double k = Math.floor(length / minCell);
-        return k >= 1 ? (long) Math.min(k, 1 << 30) : 1;
-    }
-
-    private int colOf(double x) {
-        int col = (int) (x / cellW);
-        return col < 0 ? 0 : (col >= cols ? cols - 1 : col);
-    }
-
-    private int rowOf(double y) {
-        int row = (int) (y / cellH);
-        return row < 0 ? 0 : (row >= rows ? rows - 1 : row);
-    }
-
-    /** Disc ids sorted by the Morton code of their cell (as in {@code fast}). */
-    private int[] mortonOrder(Discs src) {
-        int shiftC = Math.max(0, 32 - Integer.numberOfLeadingZeros(cols - 1) - 16);
-        int shiftR = Math.max(0, 32 - Integer.numberOfLeadingZeros(rows - 1) - 16);
-        int[] key = new int[n];
-        int[] ids = new int[n];
-        for (int i = 0; i < n; i++) {
-            key[i] = spread(colOf(src.x[i]) >>> shiftC) | (spread(rowOf(src.y[i]) >>> shiftR) << 1);
-            ids[i] = i;
-        }
-        int[] ids2 = new int[n];
-        int[] key2 = new int[n];
-        int[] counts = new int[1 << 16];
-        for (int pass = 0; pass < 2; pass++) {
-            int shift = 16 * pass;
-            Arrays.fill(counts, 0);
-            for (int i = 0; i < n; i++) {
-                counts[(key[i] >>> shift) & 0xFFFF]++;
-            }
-            int sum = 0;
-            for (int b = 0; b < counts.length; b++) {
-                int cnt = counts[b];
-                counts[b] = sum;
-                sum += cnt;
-            }
-            for (int i = 0; i < n; i++) {
-                int at = counts[(key[i] >>> shift) & 0xFFFF]++;
-                ids2[at] = ids[i];
-                key2[at] = key[i];
-            }
-            int[] t = ids;
-            ids = ids2;
-            ids2 = t;
-            t = key;
-            key = key2;
-            key2 = t;
-        }
-        return ids;
-    }
-
-    private static int spread(int v) {
-        v &= 0xFFFF;
-        v = (v | (v << 8)) & 0x00FF00FF;
-        v = (v | (v << 4)) & 0x0F0F0F0F;
-        v = (v | (v << 2)) & 0x33333333;
-        return (v | (v << 1)) & 0x55555555;
-    }
-
-    private int sceneId(int k) {
-        if (sceneIds == null) {
-            sceneIds = mortonOrder(scene.newDiscs());
-        }
-        return sceneIds[k];
-    }
-
-    private double radius(int i) {
-        return stride > R ? rec[i * stride + R] : sharedRadius;
-    }
-
     private double invMass(int i) {
-        return stride > IM ? rec[i * stride + IM] : sharedInvMass;
+        return table.invMass(i);
     }
 
     private int colOfDisc(int i) {
-        return ir[i * IS + CELL] & AXIS_MASK;
+        return table.colOfDisc(i);
     }
 
     private Domain ownerOf(int i) {
@@ -488,7 +334,7 @@ final class SlabsRun {
             events += d.events;
             crossings += d.crossings;
             stale += d.staleEvents;
-            predictions += d.predictions;
+            predictions += d.pred.predictions;
         }
         Pressure pressure = VirialAccumulator.pressureOf(virial, out, energyStart, energyEnd, scene.box().area());
         Map<String, Long> counters = new HashMap<>();
@@ -687,30 +533,9 @@ final class SlabsRun {
         serialStall.event(abs, a, b);
         da.queue.remove(a);
         db.queue.remove(b);
-        da.advance(a, now);
-        db.advance(b, now);
-        int at = a * stride;
-        int bt = b * stride;
-        double dx = boundary.separationX(rec[bt + X] - rec[at + X]);
-        double dy = boundary.separationY(rec[bt + Y] - rec[at + Y]);
-        double e = restitution.pair(a, b, abs);
-        boolean bMobile = invMass(b) > 0;
-        if (gravity && !bMobile) {
-            double dist = Math.sqrt(dx * dx + dy * dy);
-            serialStall.pegContact(abs, a, b, dx / dist, dy / dist, rec[at + VX], rec[at + VY], dist);
-        }
-        da.load(a, 0);
-        da.load(b, 1);
-        double w = PairLaw.collide(da.pair, 0, 1, dx, dy, e);
-        da.store(a, 0);
-        da.store(b, 1);
+        double w = da.pred.collidePair(a, b, now, abs, serialStall);
         crossPairCollisions++;
-        restitution.collided(a, abs);
-        ir[a * IS + COUNT]++;
-        if (bMobile) {
-            restitution.collided(b, abs);
-            ir[b * IS + COUNT]++;
-        }
+        boolean bMobile = invMass(b) > 0;
         if (serialVirial != null) {
             serialVirial.add(abs, w);
         }
@@ -732,67 +557,12 @@ final class SlabsRun {
         serialStall.event(epoch + now, i, StallGuard.CELL_SIDE);
         from.queue.remove(i);
         from.advance(i, now);
-        moveCell(i, k);
+        from.pred.moveCell(i, k);
         // Predictions of i's old domain against i are stale from now on.
         ir[i * IS + COUNT]++;
         Domain to = ownerOf(i);
         to.queue.insert(i, to.predictFull(i, now));
         crossPredict(i, now);
-    }
-
-    /**
-     * Moves disc i to the neighbouring cell through side k (periodic edges move the position by exactly
-     * one box length) and relinks the cell lists; returns the new packed cell.
-     */
-    private int moveCell(int i, byte k) {
-        int packed = ir[i * IS + CELL];
-        int col = packed & AXIS_MASK;
-        int row = (packed >>> AXIS_BITS) & AXIS_MASK;
-        int old = row * cols + col;
-        switch (k) {
-            case CROSS_LEFT -> {
-                if (--col < 0) {
-                    col = cols - 1;
-                    rec[i * stride + X] += width;
-                }
-            }
-            case CROSS_RIGHT -> {
-                if (++col == cols) {
-                    col = 0;
-                    rec[i * stride + X] -= width;
-                }
-            }
-            case CROSS_DOWN -> {
-                if (--row < 0) {
-                    row = rows - 1;
-                    rec[i * stride + Y] += height;
-                }
-            }
-            default -> {
-                if (++row == rows) {
-                    row = 0;
-                    rec[i * stride + Y] -= height;
-                }
-            }
-        }
-        unlink(i, old);
-        int cell = row * cols + col;
-        ir[i * IS + CELL] = row << AXIS_BITS | col;
-        ir[i * IS + CNEXT] = cellHead[cell];
-        cellHead[cell] = i;
-        return row << AXIS_BITS | col;
-    }
-
-    private void unlink(int i, int cell) {
-        int h = cellHead[cell];
-        if (h == i) {
-            cellHead[cell] = ir[i * IS + CNEXT];
-        } else {
-            while (ir[h * IS + CNEXT] != i) {
-                h = ir[h * IS + CNEXT];
-            }
-            ir[h * IS + CNEXT] = ir[i * IS + CNEXT];
-        }
     }
 
     // ------------------------------------------------------------------------------------------------
@@ -826,8 +596,8 @@ final class SlabsRun {
         // Contacts are searched up to the disc's next cell side, as the domain searches (quartics).
         double horizon = INF;
         if (fullOnCross) {
-            dom.load(i, 0);
-            horizon = now + dom.crossing(i, now);
+            dom.pred.load(i, 0);
+            horizon = now + dom.pred.crossing(i, now);
         }
         load(xpair, i, 0);
         for (int dc = -1; dc <= 1; dc += 2) {
@@ -869,15 +639,9 @@ final class SlabsRun {
         xUpdate(i);
     }
 
+    /** Copies disc i into slot {@code slot} of {@code d} (any thread: no scratch of the predictor). */
     private void load(Discs d, int i, int slot) {
-        int at = i * stride;
-        d.x[slot] = rec[at + X];
-        d.y[slot] = rec[at + Y];
-        d.vx[slot] = rec[at + VX];
-        d.vy[slot] = rec[at + VY];
-        d.t[slot] = rec[at + T];
-        d.radius[slot] = radius(i);
-        d.invMass[slot] = invMass(i);
+        domains[0].pred.load(d, i, slot);
     }
 
     private void xUpdate(int i) {
@@ -1053,7 +817,7 @@ final class SlabsRun {
         d.vx[slot] = dom.enRec[at + VX];
         d.vy[slot] = dom.enRec[at + VY];
         d.t[slot] = dom.enRec[at + T];
-        d.radius[slot] = radius(i);
+        d.radius[slot] = table.radius(i);
         d.invMass[slot] = invMass(i);
     }
 
@@ -1077,15 +841,7 @@ final class SlabsRun {
     private void resync(double now) {
         if (now > 0) {
             resyncs++;
-            Domain d0 = domains[0];
-            for (int i = 0; i < n; i++) {
-                d0.advance(i, now);
-                int at = i * stride;
-                rec[at + T] = 0;
-                if (rec[at + EV] != INF) {
-                    rec[at + EV] = Math.max(0, rec[at + EV] - now);
-                }
-            }
+            domains[0].pred.rebase(now);
             for (int k = 0; k < xSize; k++) {
                 int i = xHeap[k];
                 xTime[i] = Math.max(0, xTime[i] - now);
@@ -1107,32 +863,8 @@ final class SlabsRun {
                     members[count++] = i;
                 }
             }
-            double sum = 0;
-            long k = 0;
-            for (int q = 0; q < count; q++) {
-                double t = rec[members[q] * stride + EV];
-                if (t != INF) {
-                    sum += t - now;
-                    k++;
-                }
-            }
-            double mean = k > 0 ? sum / k : 1;
-            if (k > 0) {
-                double cut = 10 * mean;
-                sum = 0;
-                k = 0;
-                for (int q = 0; q < count; q++) {
-                    double t = rec[members[q] * stride + EV];
-                    if (t - now <= cut) {
-                        sum += t - now;
-                        k++;
-                    }
-                }
-                mean = k > 0 ? sum / k : mean;
-            }
-            if (!(mean > 0) || Double.isInfinite(mean)) {
-                mean = untilLocal > 0 && Double.isFinite(untilLocal) ? untilLocal : 1;
-            }
+            double mean = table.meanDelay(members, count, now,
+                    untilLocal > 0 && Double.isFinite(untilLocal) ? untilLocal : 1);
             double span = SPAN_MEANS * mean;
             d.queue.rebuild(span / d.queue.buckets(), now, members, count);
             spanMax = Math.max(spanMax, span);
@@ -1141,35 +873,11 @@ final class SlabsRun {
     }
 
     private Discs finalState() {
-        Discs out = scene.newDiscs();
-        int[] order = mortonOrder(out);
-        Domain d0 = domains[0];
-        for (int k = 0; k < n; k++) {
-            d0.advance(k, untilLocal);
-            int o = order[k];
-            int at = k * stride;
-            out.x[o] = boundary.wrapX(rec[at + X]);
-            out.y[o] = boundary.wrapY(rec[at + Y]);
-            out.vx[o] = rec[at + VX];
-            out.vy[o] = rec[at + VY];
-            out.t[o] = until;
-        }
-        return out;
+        return domains[0].pred.finalState(table, untilLocal, until);
     }
 
     private Discs snapshot() {
-        Discs all = new Discs(n);
-        for (int i = 0; i < n; i++) {
-            int at = i * stride;
-            all.x[i] = rec[at + X];
-            all.y[i] = rec[at + Y];
-            all.vx[i] = rec[at + VX];
-            all.vy[i] = rec[at + VY];
-            all.t[i] = rec[at + T];
-            all.radius[i] = radius(i);
-            all.invMass[i] = invMass(i);
-        }
-        return all;
+        return domains[0].pred.snapshot();
     }
 
     // ------------------------------------------------------------------------------------------------
@@ -1182,22 +890,15 @@ final class SlabsRun {
     final class Domain {
         final int id;
         final CalendarQueue queue;
-        final Discs pair = new Discs(2);
-        private final int[] visitCell = new int[9];
-        private final int[] heads = new int[9];
-        private final double[] visitShiftX = new double[9];
-        private final double[] visitShiftY = new double[9];
-        private double found;
-        private int foundP;
-        private byte crossKind;
-        final StallGuard stallGuard = new StallGuard(scene, SlabsRun.this::sceneId);
+        /** This domain's predictions: its own scratch, only its own columns. */
+        final CellPredictor pred;
+        final StallGuard stallGuard = new StallGuard(scene, table::sceneId);
         final VirialAccumulator virial = periodic ? new VirialAccumulator(0, until, PRESSURE_BLOCKS) : null;
         long events;
         long pairCollisions;
         long wallCollisions;
         long crossings;
         long staleEvents;
-        long predictions;
         /** CPU time spent in windows (this domain's thread), and in the last one. */
         long windowCpuNanos;
         long lastWindowCpu;
@@ -1232,6 +933,7 @@ final class SlabsRun {
             this.id = id;
             this.queue = queue;
             this.logging = domainCount > 1;
+            this.pred = logging ? new CellPredictor(table, colOwner, id, edgeCol) : new CellPredictor(table);
             this.rs = stride + 1;
             this.enRec = new double[128 * rs];
         }
@@ -1475,10 +1177,8 @@ final class SlabsRun {
                 int savedCell = enInts[4 * e + CELL];
                 if ((savedCell & CELL_MASK) != (ir[it + CELL] & CELL_MASK)) {
                     int cur = ir[it + CELL] & CELL_MASK;
-                    unlink(i, (cur >>> AXIS_BITS) * cols + (cur & AXIS_MASK));
-                    int back = ((savedCell & CELL_MASK) >>> AXIS_BITS) * cols + (savedCell & AXIS_MASK);
-                    ir[it + CNEXT] = cellHead[back];
-                    cellHead[back] = i;
+                    pred.unlink(i, (cur >>> AXIS_BITS) * cols + (cur & AXIS_MASK));
+                    pred.link(i, ((savedCell & CELL_MASK) >>> AXIS_BITS) * cols + (savedCell & AXIS_MASK));
                 }
                 ir[it + CELL] = savedCell;
                 ir[it + PARTNER] = enInts[4 * e + PARTNER];
@@ -1511,38 +1211,12 @@ final class SlabsRun {
             logEntries = first;
         }
 
-        void load(int i, int slot) {
-            int at = i * stride;
-            pair.x[slot] = rec[at + X];
-            pair.y[slot] = rec[at + Y];
-            pair.vx[slot] = rec[at + VX];
-            pair.vy[slot] = rec[at + VY];
-            pair.t[slot] = rec[at + T];
-            pair.radius[slot] = radius(i);
-            pair.invMass[slot] = invMass(i);
-        }
-
-        void store(int i, int slot) {
-            int at = i * stride;
-            rec[at + X] = pair.x[slot];
-            rec[at + Y] = pair.y[slot];
-            rec[at + VX] = pair.vx[slot];
-            rec[at + VY] = pair.vy[slot];
-            rec[at + T] = pair.t[slot];
-        }
-
         void advance(int i, double time) {
-            if (straight) {
-                int at = i * stride;
-                double dt = time - rec[at + T];
-                rec[at + X] += rec[at + VX] * dt;
-                rec[at + Y] += rec[at + VY] * dt;
-                rec[at + T] = time;
-            } else {
-                load(i, 0);
-                flight.advance(pair, 0, time);
-                store(i, 0);
-            }
+            pred.advance(i, time);
+        }
+
+        double predictFull(int i, double now) {
+            return pred.predictFull(i, now);
         }
 
         private void collidePair(int a, int b, double now) {
@@ -1550,30 +1224,8 @@ final class SlabsRun {
             if (logging) {
                 log(b);
             }
-            advance(a, now);
-            advance(b, now);
-            int at = a * stride;
-            int bt = b * stride;
-            double dx = boundary.separationX(rec[bt + X] - rec[at + X]);
-            double dy = boundary.separationY(rec[bt + Y] - rec[at + Y]);
-            double e = restitution.pair(a, b, abs);
-            boolean bMobile = invMass(b) > 0;
-            if (gravity && !bMobile) {
-                double dist = Math.sqrt(dx * dx + dy * dy);
-                stallGuard.pegContact(abs, a, b, dx / dist, dy / dist, rec[at + VX], rec[at + VY], dist);
-            }
-            load(a, 0);
-            load(b, 1);
-            double w = PairLaw.collide(pair, 0, 1, dx, dy, e);
-            store(a, 0);
-            store(b, 1);
+            double w = pred.collidePair(a, b, now, abs, stallGuard);
             pairCollisions++;
-            restitution.collided(a, abs);
-            ir[a * IS + COUNT]++;
-            if (bMobile) {
-                restitution.collided(b, abs);
-                ir[b * IS + COUNT]++;
-            }
             if (virial != null) {
                 virial.add(abs, w);
                 if (logging) {
@@ -1584,7 +1236,7 @@ final class SlabsRun {
                 audit.check(snapshot(), flight, now, abs);
             }
             queue.insert(a, predictFull(a, now));
-            if (bMobile) {
+            if (invMass(b) > 0) {
                 queue.remove(b);
                 queue.insert(b, predictFull(b, now));
             }
@@ -1595,16 +1247,7 @@ final class SlabsRun {
 
         private void collideWall(int i, int wall, double now) {
             double abs = epoch + now;
-            advance(i, now);
-            double e = restitution.wall(i, abs);
-            load(i, 0);
-            if (gravity) {
-                stallGuard.wallContact(abs, i, wall, pair.vx[0], pair.vy[0]);
-            }
-            boundary.reflect(pair, 0, wall, e);
-            store(i, 0);
-            restitution.collided(i, abs);
-            ir[i * IS + COUNT]++;
+            pred.collideWall(i, wall, now, abs, stallGuard);
             wallCollisions++;
             if (audit != null && !logging) {
                 audit.check(snapshot(), flight, now, abs);
@@ -1615,256 +1258,10 @@ final class SlabsRun {
         private void crossCell(int i, double now, byte k) {
             crossings++;
             advance(i, now);
-            int packed = moveCell(i, k);
+            int packed = pred.moveCell(i, k);
             int col = packed & AXIS_MASK;
             int row = packed >>> AXIS_BITS;
-            queue.insert(i, fullOnCross ? predictFull(i, now) : predictAfterCrossing(i, now, k, col, row));
-        }
-
-        double crossing(int i, double now) {
-            int packed = ir[i * IS + CELL];
-            int col = packed & AXIS_MASK;
-            int row = (packed >>> AXIS_BITS) & AXIS_MASK;
-            double loX = col > 0 ? col * cellW : (periodic ? 0 : -INF);
-            double hiX = col < cols - 1 ? (col + 1) * cellW : (periodic ? width : INF);
-            double loY = row > 0 ? row * cellH : (periodic ? 0 : -INF);
-            double hiY = row < rows - 1 ? (row + 1) * cellH : (periodic ? height : INF);
-            if (straightImages) {
-                int at = i * stride;
-                double vx = rec[at + VX];
-                double vy = rec[at + VY];
-                double dt = now - rec[at + T];
-                double x = rec[at + X] + vx * dt;
-                double y = rec[at + Y] + vy * dt;
-                double tx = vx > 0 ? Math.max(0, (hiX - x) / vx) : (vx < 0 ? Math.max(0, (loX - x) / vx) : INF);
-                double ty = vy > 0 ? Math.max(0, (hiY - y) / vy) : (vy < 0 ? Math.max(0, (loY - y) / vy) : INF);
-                if (tx <= ty) {
-                    crossKind = vx > 0 ? CROSS_RIGHT : CROSS_LEFT;
-                    return tx;
-                }
-                crossKind = vy > 0 ? CROSS_UP : CROSS_DOWN;
-                return ty;
-            }
-            double tx = flight.timeToLeaveX(pair, 0, now, loX, hiX);
-            double ty = flight.timeToLeaveY(pair, 0, now, loY, hiY);
-            if (recheckX > 0 || recheckY > 0) {
-                double tr = INF;
-                if (recheckX > 0) {
-                    double x = flight.x(pair, 0, now);
-                    tr = flight.timeToLeaveX(pair, 0, now, x - recheckX, x + recheckX);
-                }
-                if (recheckY > 0) {
-                    double y = flight.y(pair, 0, now);
-                    tr = Math.min(tr, flight.timeToLeaveY(pair, 0, now, y - recheckY, y + recheckY));
-                }
-                if (tr < tx && tr < ty) {
-                    crossKind = RECHECK;
-                    return tr;
-                }
-            }
-            if (tx <= ty) {
-                if (tx == INF) {
-                    return INF;
-                }
-                double v = flight.vx(pair, 0, now + tx);
-                boolean right = v > 0 || (v == 0 && flight.x(pair, 0, now + tx) > 0.5 * (loX + hiX));
-                crossKind = right ? CROSS_RIGHT : CROSS_LEFT;
-                return tx;
-            }
-            double v = flight.vy(pair, 0, now + ty);
-            boolean up = v > 0 || (v == 0 && flight.y(pair, 0, now + ty) > 0.5 * (loY + hiY));
-            crossKind = up ? CROSS_UP : CROSS_DOWN;
-            return ty;
-        }
-
-        /** {@code fast}'s full prediction, against the discs of this domain's columns only. */
-        double predictFull(int i, double now) {
-            if (!straightImages) {
-                load(i, 0);
-            }
-            double best = INF;
-            int bestP = NONE;
-            if (walls != null) {
-                for (int w = 0; w < 4; w++) {
-                    double t = wallTime(i, w, now);
-                    if (t < best) {
-                        best = t;
-                        bestP = -1 - w;
-                    }
-                }
-            }
-            double cross = crossing(i, now);
-            byte ck = crossKind;
-            found = best;
-            foundP = bestP;
-            int packed = ir[i * IS + CELL];
-            int col = packed & AXIS_MASK;
-            int row = (packed >>> AXIS_BITS) & AXIS_MASK;
-            if (col > 0 && col < cols - 1 && row > 0 && row < rows - 1 && !edgeCol[col]) {
-                scan(i, now, now + cross, row * cols + col, around, NO_SHIFT, NO_SHIFT, 9);
-            } else {
-                int m = 0;
-                for (int dr = -1; dr <= 1; dr++) {
-                    for (int dc = -1; dc <= 1; dc++) {
-                        m = visit(col + dc, row + dr, m);
-                    }
-                }
-                scan(i, now, now + cross, 0, visitCell, visitShiftX, visitShiftY, m);
-            }
-            predictions++;
-            return schedule(i, now, found, foundP, cross, ck);
-        }
-
-        private double predictAfterCrossing(int i, double now, byte k, int col, int row) {
-            if (!straightImages) {
-                load(i, 0);
-            }
-            int bestP = ir[i * IS + PARTNER];
-            double cross = crossing(i, now);
-            byte ck = crossKind;
-            double horizon = now + cross;
-            double best = INF;
-            if (bestP >= 0) {
-                if (ir[bestP * IS + COUNT] != ir[i * IS + PCOUNT]) {
-                    return predictFull(i, now);
-                }
-                best = contactTime(i, bestP, now, horizon);
-            } else if (bestP != NONE) {
-                best = wallTime(i, -1 - bestP, now);
-            }
-            found = best;
-            foundP = best == INF ? NONE : bestP;
-            if (col > 0 && col < cols - 1 && row > 0 && row < rows - 1 && !edgeCol[col]) {
-                scan(i, now, horizon, row * cols + col, ahead[k], NO_SHIFT, NO_SHIFT, 3);
-            } else {
-                int dc = k == CROSS_RIGHT ? 1 : (k == CROSS_LEFT ? -1 : 0);
-                int dr = k == CROSS_UP ? 1 : (k == CROSS_DOWN ? -1 : 0);
-                int m = 0;
-                for (int s = -1; s <= 1; s++) {
-                    m = visit(col + dc + (dc == 0 ? s : 0), row + dr + (dr == 0 ? s : 0), m);
-                }
-                scan(i, now, horizon, 0, visitCell, visitShiftX, visitShiftY, m);
-            }
-            predictions++;
-            return schedule(i, now, found, foundP, cross, ck);
-        }
-
-        private double contactTime(int i, int j, double now, double horizon) {
-            if (!straightImages) {
-                load(j, 1);
-                return flight.timeToContact(pair, 0, 1, now, horizon, boundary);
-            }
-            int at = i * stride;
-            int jt = j * stride;
-            double xi = rec[at + X] + rec[at + VX] * (now - rec[at + T]);
-            double yi = rec[at + Y] + rec[at + VY] * (now - rec[at + T]);
-            double dx = boundary.separationX(rec[jt + X] + rec[jt + VX] * (now - rec[jt + T]) - xi);
-            double dy = boundary.separationY(rec[jt + Y] + rec[jt + VY] * (now - rec[jt + T]) - yi);
-            return PairLaw.timeToContact(dx, dy, rec[jt + VX] - rec[at + VX], rec[jt + VY] - rec[at + VY],
-                    radius(i) + radius(j));
-        }
-
-        private double wallTime(int i, int wall, double now) {
-            if (!straightImages) {
-                return flight.timeToWall(pair, 0, wall, now, walls);
-            }
-            int at = i * stride;
-            double dt = now - rec[at + T];
-            return walls.timeToWall(wall, rec[at + X] + rec[at + VX] * dt, rec[at + Y] + rec[at + VY] * dt,
-                    rec[at + VX], rec[at + VY], radius(i));
-        }
-
-        /** As {@code fast}'s visit, but a column of another domain is not visited. */
-        private int visit(int c, int r, int m) {
-            double shiftX = 0;
-            double shiftY = 0;
-            if (c < 0 || c >= cols) {
-                if (!periodic) {
-                    return m;
-                }
-                shiftX = c < 0 ? -width : width;
-                c = c < 0 ? c + cols : c - cols;
-            }
-            if (colOwner[c] != id) {
-                return m;
-            }
-            if (r < 0 || r >= rows) {
-                if (!periodic) {
-                    return m;
-                }
-                shiftY = r < 0 ? -height : height;
-                r = r < 0 ? r + rows : r - rows;
-            }
-            visitCell[m] = r * cols + c;
-            visitShiftX[m] = shiftX;
-            visitShiftY[m] = shiftY;
-            return m + 1;
-        }
-
-        private void scan(int i, double now, double horizon, int base, int[] cells, double[] shiftX, double[] shiftY,
-                          int m) {
-            double best = found;
-            int bestP = foundP;
-            int[] first = heads;
-            for (int k = 0; k < m; k++) {
-                first[k] = cellHead[base + cells[k]];
-            }
-            if (!straightImages) {
-                for (int k = 0; k < m; k++) {
-                    for (int j = first[k]; j != NIL; j = ir[j * IS + CNEXT]) {
-                        if (j != i) {
-                            load(j, 1);
-                            double t = flight.timeToContact(pair, 0, 1, now, horizon, boundary);
-                            if (t < best) {
-                                best = t;
-                                bestP = j;
-                            }
-                        }
-                    }
-                }
-            } else {
-                double[] r = rec;
-                int st = stride;
-                boolean shared = st == R;
-                int at = i * st;
-                double vxi = r[at + VX];
-                double vyi = r[at + VY];
-                double xi = r[at + X] + vxi * (now - r[at + T]);
-                double yi = r[at + Y] + vyi * (now - r[at + T]);
-                double ri = radius(i);
-                double sigmaShared = ri + sharedRadius;
-                for (int k = 0; k < m; k++) {
-                    double ox = xi - shiftX[k];
-                    double oy = yi - shiftY[k];
-                    for (int j = first[k]; j != NIL; j = ir[j * IS + CNEXT]) {
-                        if (j != i) {
-                            int jt = j * st;
-                            double dt = now - r[jt + T];
-                            double vxj = r[jt + VX];
-                            double vyj = r[jt + VY];
-                            double t = PairLaw.timeToContact(r[jt + X] + vxj * dt - ox, r[jt + Y] + vyj * dt - oy,
-                                    vxj - vxi, vyj - vyi, shared ? sigmaShared : ri + r[jt + R]);
-                            if (t < best) {
-                                best = t;
-                                bestP = j;
-                            }
-                        }
-                    }
-                }
-            }
-            found = best;
-            foundP = bestP;
-        }
-
-        private double schedule(int i, double now, double best, int bestP, double cross, byte ck) {
-            ir[i * IS + PARTNER] = bestP;
-            ir[i * IS + PCOUNT] = bestP >= 0 ? ir[bestP * IS + COUNT] : 0;
-            if (cross < best) {
-                ir[i * IS + CELL] = (ir[i * IS + CELL] & CELL_MASK) | ck << KIND_SHIFT;
-                return now + cross;
-            }
-            ir[i * IS + CELL] &= CELL_MASK;
-            return best == INF ? INF : now + best;
+            queue.insert(i, fullOnCross ? predictFull(i, now) : pred.predictAfterCrossing(i, now, k, col, row));
         }
     }
 }

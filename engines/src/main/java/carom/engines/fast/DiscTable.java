@@ -1,0 +1,331 @@
+package carom.engines.fast;
+
+import carom.core.BadInputException;
+import carom.core.physics.Boundary;
+import carom.core.physics.Flight;
+import carom.core.physics.Physics;
+import carom.core.physics.Restitution;
+import carom.core.scene.Scene;
+import carom.core.state.Discs;
+import java.util.Arrays;
+
+/**
+ * The discs of a fast-style run laid out for event-driven prediction: the cell grid, the Morton
+ * numbering, one record of doubles and one of ints per disc, and the cell lists. Shared by the
+ * {@code fast} engine and by every domain of the {@code slabs} engine; each thread predicts on it
+ * through its own {@link CellPredictor}. See {@link FastRun} for the algorithm and the invariants.
+ *
+ * <p>Record layout. Doubles ({@link #stride} per disc): X, Y, VX, VY, T (clock), EV (scheduled
+ * event time, the queue's key), then R, IM if per disc. Ints ({@link #IS} per disc): CELL, the logical
+ * cell and the kind of the scheduled event, {@code kind << 28 | row << 14 | col} (no division on hot
+ * paths; axes have at most {@link #AXIS_MASK} cells); PARTNER, the best candidate, and PCOUNT, its
+ * counter at prediction; COUNT, the disc's velocity changes (a prediction against j is valid while
+ * j's COUNT is unchanged); CNEXT, the next disc in the cell; QNEXT, the queue's link.
+ */
+public final class DiscTable {
+    /** Scheduled event kinds: the best candidate (pair or wall), or a crossing through a cell side. */
+    public static final byte HIT = 0;
+    public static final byte CROSS_LEFT = 1;
+    public static final byte CROSS_RIGHT = 2;
+    public static final byte CROSS_DOWN = 3;
+    public static final byte CROSS_UP = 4;
+    /** Re-predict in full (small periodic axes, where the nearest image can switch within a cell). */
+    public static final byte RECHECK = 5;
+    /** Candidate codes: j >= 0 a disc, -1 - w wall w, NONE nothing. */
+    public static final int NONE = Integer.MIN_VALUE;
+    public static final int NIL = -1;
+    public static final int AXIS_BITS = 14;
+    public static final int AXIS_MASK = (1 << AXIS_BITS) - 1;
+    public static final int CELL_MASK = (1 << 2 * AXIS_BITS) - 1;
+    public static final int KIND_SHIFT = 2 * AXIS_BITS;
+    /** Calendar span = SPAN_MEANS mean event delays; clocks re-anchored every RESYNC_SPANS spans. */
+    public static final double SPAN_MEANS = 4;
+    public static final double RESYNC_SPANS = 4;
+    public static final double INF = Double.POSITIVE_INFINITY;
+    public static final int X = 0;
+    public static final int Y = 1;
+    public static final int VX = 2;
+    public static final int VY = 3;
+    public static final int T = 4;
+    public static final int EV = 5;
+    public static final int R = 6;
+    public static final int IM = 7;
+    public static final int IS = 6;
+    public static final int CELL = 0;
+    public static final int PARTNER = 1;
+    public static final int PCOUNT = 2;
+    public static final int COUNT = 3;
+    public static final int CNEXT = 4;
+    public static final int QNEXT = 5;
+
+    public final Scene scene;
+    public final int n;
+    /** The scene's initial discs (in scene order). */
+    public final Discs initial;
+    public final Flight flight;
+    public final Boundary boundary;
+    /** The walls, or null in a periodic box. */
+    public final Boundary.Walls walls;
+    public final boolean periodic;
+    public final Restitution restitution;
+    public final double acceleration;
+    public final double[] rec;
+    public final int stride;
+    /** Radius and inverse mass of every disc when all share them (then not in the records). */
+    public final double sharedRadius;
+    public final double sharedInvMass;
+    /** Straight flight: advance and predictions are inlined on the records. */
+    public final boolean straight;
+    public final int[] ir;
+    // Grid: cell = row * cols + col; cellHead[cell] -> chain through each disc's CNEXT.
+    public final int cols;
+    public final int rows;
+    public final double cellW;
+    public final double cellH;
+    public final double width;
+    public final double height;
+    public final int[] cellHead;
+    /** Re-predict the whole neighbourhood after a crossing (gravity with fixed discs; small grids). */
+    public final boolean fullOnCross;
+    /**
+     * Periodic axes with fewer than 4 cells: two discs in neighbouring cells may be half a box apart,
+     * so the nearest image of a pair can switch with no crossing; such a disc is re-predicted in full
+     * whenever it has moved {@code recheckX} (or {@code recheckY}) since its last prediction, 0 if not
+     * needed. Why that suffices: contact needs |dx| <= sigma < L/2, so after a switch at |dx| = L/2 the
+     * pair must close by L/2 - sigma = 2 * recheck, so one of the two moves recheck first and then
+     * predicts with the right image (every column is in every neighbourhood on such an axis).
+     */
+    public final double recheckX;
+    public final double recheckY;
+    /**
+     * Straight flight with every neighbour seen through its cell's image (no rechecks): the cell scan
+     * predicts inline instead of through {@link Flight#timeToContact}.
+     */
+    public final boolean straightImages;
+    /** Row-major offsets of an interior cell's 3x3 neighbourhood, and of the line ahead per crossing kind. */
+    final int[] around;
+    final int[][] ahead;
+    /** Events counted by the last {@link #meanDelay} (before trimming). */
+    private long lastQueued;
+    /** Scene id of each internal disc, built only for an error message ({@link #sceneId}). */
+    private int[] sceneIds;
+
+    /**
+     * Lays out the scene's discs: cells at least {@code cellFactor} times the largest diameter (a
+     * hair more), at most about 4 per disc; discs renumbered along the Morton curve of their cells;
+     * every PARTNER {@link #NONE}, no event scheduled.
+     */
+    public DiscTable(Scene scene, double cellFactor) {
+        this.scene = scene;
+        Discs src = scene.newDiscs();
+        this.initial = src;
+        this.n = src.n;
+        Physics physics = Physics.of(scene);
+        this.flight = physics.flight;
+        this.boundary = physics.boundary;
+        this.walls = boundary instanceof Boundary.Walls w ? w : null;
+        this.periodic = walls == null;
+        this.restitution = physics.restitution;
+        this.acceleration = flight.maxAcceleration();
+        if (!(cellFactor >= 1) || Double.isInfinite(cellFactor)) {
+            throw new BadInputException("engine option cellFactor: must be >= 1, got " + cellFactor);
+        }
+        this.width = scene.box().width();
+        this.height = scene.box().height();
+        // A hair wider than the diameter, so that rounding at a cell side can never hide a contact.
+        double minCell = 2 * src.maxRadius() * cellFactor * (1 + 1e-9);
+        long c = cellsAlong(width, minCell);
+        long r = cellsAlong(height, minCell);
+        long cap = Math.max(64, 4L * n);
+        while (c * r > cap) {
+            double shrink = Math.sqrt((double) c * r / cap) * 1.0001;
+            c = Math.max(1, (long) (c / shrink));
+            r = Math.max(1, (long) (r / shrink));
+        }
+        // Coarser cells stay valid (only wider than needed): cap each axis so (row, col) packs in an int.
+        this.cols = (int) Math.min(c, AXIS_MASK);
+        this.rows = (int) Math.min(r, AXIS_MASK);
+        this.cellW = width / cols;
+        this.cellH = height / rows;
+        double maxDiameter = 2 * src.maxRadius();
+        this.recheckX = periodic && cols < 4 ? 0.5 * (0.5 * width - maxDiameter) : 0;
+        this.recheckY = periodic && rows < 4 ? 0.5 * (0.5 * height - maxDiameter) : 0;
+        this.straight = flight instanceof Flight.Straight;
+        this.straightImages = straight && recheckX == 0 && recheckY == 0;
+        this.fullOnCross = (acceleration > 0 && scene.hasFixedDiscs()) || recheckX > 0 || recheckY > 0;
+        this.cellHead = new int[cols * rows];
+        this.around = new int[] {-cols - 1, -cols, -cols + 1, -1, 0, 1, cols - 1, cols, cols + 1};
+        this.ahead = new int[5][];
+        ahead[CROSS_LEFT] = new int[] {-cols - 1, -1, cols - 1};
+        ahead[CROSS_RIGHT] = new int[] {-cols + 1, 1, cols + 1};
+        ahead[CROSS_DOWN] = new int[] {-cols - 1, -cols, -cols + 1};
+        ahead[CROSS_UP] = new int[] {cols - 1, cols, cols + 1};
+        this.ir = new int[Math.multiplyExact(n, IS)];
+        Arrays.fill(cellHead, NIL);
+
+        boolean shared = true;
+        for (int i = 1; i < n && shared; i++) {
+            shared = src.radius[i] == src.radius[0] && src.invMass[i] == src.invMass[0];
+        }
+        this.stride = shared ? R : IM + 1;
+        this.sharedRadius = shared && n > 0 ? src.radius[0] : Double.NaN;
+        this.sharedInvMass = shared && n > 0 ? src.invMass[0] : Double.NaN;
+        this.rec = new double[Math.multiplyExact(n, stride)];
+        int[] order = mortonOrder(src);
+        for (int k = 0; k < n; k++) {
+            int o = order[k];
+            int at = k * stride;
+            rec[at + X] = src.x[o];
+            rec[at + Y] = src.y[o];
+            rec[at + VX] = src.vx[o];
+            rec[at + VY] = src.vy[o];
+            if (!shared) {
+                rec[at + R] = src.radius[o];
+                rec[at + IM] = src.invMass[o];
+            }
+        }
+        for (int k = n - 1; k >= 0; k--) {
+            int row = rowOf(rec[k * stride + Y]);
+            int col = colOf(rec[k * stride + X]);
+            int cell = row * cols + col;
+            ir[k * IS + CELL] = row << AXIS_BITS | col;
+            ir[k * IS + CNEXT] = cellHead[cell];
+            cellHead[cell] = k;
+        }
+        for (int i = 0; i < n; i++) {
+            ir[i * IS + PARTNER] = NONE;
+        }
+    }
+
+    private static long cellsAlong(double length, double minCell) {
+        double k = Math.floor(length / minCell);
+        return k >= 1 ? (long) Math.min(k, 1 << 30) : 1;
+    }
+
+    private int colOf(double x) {
+        int col = (int) (x / cellW);
+        return col < 0 ? 0 : (col >= cols ? cols - 1 : col);
+    }
+
+    private int rowOf(double y) {
+        int row = (int) (y / cellH);
+        return row < 0 ? 0 : (row >= rows ? rows - 1 : row);
+    }
+
+    public double radius(int i) {
+        return stride > R ? rec[i * stride + R] : sharedRadius;
+    }
+
+    public double invMass(int i) {
+        return stride > IM ? rec[i * stride + IM] : sharedInvMass;
+    }
+
+    /** The column of disc i's logical cell. */
+    public int colOfDisc(int i) {
+        return ir[i * IS + CELL] & AXIS_MASK;
+    }
+
+    /** Heap held by the per-disc and per-cell arrays, in bytes. */
+    public long bytes() {
+        return 8L * rec.length + 4L * ir.length + 4L * cellHead.length;
+    }
+
+    /** Disc ids sorted by the Morton code of their cell (LSD radix sort, two 16-bit passes). */
+    public int[] mortonOrder(Discs src) {
+        int shiftC = Math.max(0, 32 - Integer.numberOfLeadingZeros(cols - 1) - 16);
+        int shiftR = Math.max(0, 32 - Integer.numberOfLeadingZeros(rows - 1) - 16);
+        int[] key = new int[n];
+        int[] ids = new int[n];
+        for (int i = 0; i < n; i++) {
+            key[i] = spread(colOf(src.x[i]) >>> shiftC) | (spread(rowOf(src.y[i]) >>> shiftR) << 1);
+            ids[i] = i;
+        }
+        int[] ids2 = new int[n];
+        int[] key2 = new int[n];
+        int[] counts = new int[1 << 16];
+        for (int pass = 0; pass < 2; pass++) {
+            int shift = 16 * pass;
+            Arrays.fill(counts, 0);
+            for (int i = 0; i < n; i++) {
+                counts[(key[i] >>> shift) & 0xFFFF]++;
+            }
+            int sum = 0;
+            for (int b = 0; b < counts.length; b++) {
+                int cnt = counts[b];
+                counts[b] = sum;
+                sum += cnt;
+            }
+            for (int i = 0; i < n; i++) {
+                int at = counts[(key[i] >>> shift) & 0xFFFF]++;
+                ids2[at] = ids[i];
+                key2[at] = key[i];
+            }
+            int[] t = ids;
+            ids = ids2;
+            ids2 = t;
+            t = key;
+            key = key2;
+            key2 = t;
+        }
+        return ids;
+    }
+
+    private static int spread(int v) {
+        v &= 0xFFFF;
+        v = (v | (v << 8)) & 0x00FF00FF;
+        v = (v | (v << 4)) & 0x0F0F0F0F;
+        v = (v | (v << 2)) & 0x33333333;
+        return (v | (v << 1)) & 0x55555555;
+    }
+
+    /** The scene's id of internal disc k: the Morton order again, from the scene's initial state. */
+    public int sceneId(int k) {
+        if (sceneIds == null) {
+            sceneIds = mortonOrder(scene.newDiscs());
+        }
+        return sceneIds[k];
+    }
+
+    /**
+     * Mean delay from {@code now} of the scheduled events of discs {@code members[0..count)} (every
+     * disc if {@code members} is null), trimmed of those beyond 10 means; {@code fallback} if there is
+     * none or it is not a positive finite number (then {@code fallback} should be). Serial callers
+     * only: it sets {@link #lastQueued}.
+     */
+    public double meanDelay(int[] members, int count, double now, double fallback) {
+        int m = members == null ? n : count;
+        double sum = 0;
+        long k = 0;
+        for (int q = 0; q < m; q++) {
+            double t = rec[(members == null ? q : members[q]) * stride + EV];
+            if (t != INF) {
+                sum += t - now;
+                k++;
+            }
+        }
+        lastQueued = k;
+        double mean = k > 0 ? sum / k : 1;
+        if (k > 0) {
+            double cut = 10 * mean;
+            sum = 0;
+            k = 0;
+            for (int q = 0; q < m; q++) {
+                double t = rec[(members == null ? q : members[q]) * stride + EV];
+                if (t - now <= cut) {
+                    sum += t - now;
+                    k++;
+                }
+            }
+            mean = k > 0 ? sum / k : mean;
+        }
+        if (!(mean > 0) || Double.isInfinite(mean)) {
+            mean = fallback;
+        }
+        return mean;
+    }
+
+    /** Events counted by the last {@link #meanDelay}. */
+    public long lastQueued() {
+        return lastQueued;
+    }
+}
