@@ -1,7 +1,6 @@
 package carom.app.study;
 
-import carom.core.grid.CellGrid;
-import carom.core.grid.CellLists;
+import carom.core.grid.NeighbourPairs;
 import carom.core.physics.Boundary;
 import carom.core.scene.Box;
 import carom.core.state.Discs;
@@ -25,33 +24,12 @@ final class StateErrors {
      * the box counts as a full wall overlap of 1 or more.
      */
     static double deepestOverlap(Discs d, Box box) {
-        double deepest = box.periodic() ? 0 : deepestWallOverlap(d, box);
-        if (d.n < 2) {
-            return deepest;
-        }
-        Boundary boundary = Boundary.of(box);
-        // Cells at least one largest diameter wide: overlapping discs sit in the same or neighbouring cells.
-        CellGrid grid = CellGrid.covering(box.width(), box.height(), 2 * d.maxRadius(), box.periodic(), 2L * d.n + 16);
-        CellLists lists = new CellLists();
-        lists.rebuild(grid, d.x, d.y, d.n);
-        for (int i = 0; i < d.n; i++) {
-            int cell = lists.cellOf[i];
-            for (int k = grid.neighbourStart[cell]; k < grid.neighbourStart[cell + 1]; k++) {
-                int other = grid.neighbours[k];
-                for (int m = lists.start[other]; m < lists.start[other + 1]; m++) {
-                    int j = lists.items[m];
-                    if (j <= i) {
-                        continue;
-                    }
-                    double dx = boundary.separationX(d.x[j] - d.x[i]);
-                    double dy = boundary.separationY(d.y[j] - d.y[i]);
-                    double sigma = d.radius[i] + d.radius[j];
-                    double overlap = (sigma - Math.sqrt(dx * dx + dy * dy)) / sigma;
-                    deepest = Math.max(deepest, overlap);
-                }
-            }
-        }
-        return deepest;
+        double[] deepest = {box.periodic() ? 0 : deepestWallOverlap(d, box)};
+        NeighbourPairs.forEach(d, box, (i, j, dx, dy) -> {
+            double sigma = d.radius[i] + d.radius[j];
+            deepest[0] = Math.max(deepest[0], (sigma - Math.sqrt(dx * dx + dy * dy)) / sigma);
+        });
+        return deepest[0];
     }
 
     private static double deepestWallOverlap(Discs d, Box box) {

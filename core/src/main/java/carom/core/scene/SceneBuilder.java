@@ -1,9 +1,7 @@
 package carom.core.scene;
 
 import carom.core.BadInputException;
-import carom.core.grid.CellGrid;
-import carom.core.grid.CellLists;
-import carom.core.physics.Boundary;
+import carom.core.grid.NeighbourPairs;
 import carom.core.state.Discs;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -233,40 +231,20 @@ public final class SceneBuilder {
     }
 
     private void checkNoOverlaps(Discs d, int[] blockStarts) {
-        if (d.n < 2) {
-            return;
-        }
-        Boundary boundary = Boundary.of(box);
-        double largestDiameter = 2 * d.maxRadius();
-        CellGrid grid = CellGrid.covering(box.width(), box.height(), largestDiameter, box.periodic(), 2L * d.n + 16);
-        CellLists lists = new CellLists();
-        lists.rebuild(grid, d.x, d.y, d.n);
         double coordinateUlp = 4 * Math.ulp(Math.max(box.width(), box.height()));
-        for (int i = 0; i < d.n; i++) {
-            int cell = lists.cellOf[i];
-            for (int k = grid.neighbourStart[cell]; k < grid.neighbourStart[cell + 1]; k++) {
-                int other = grid.neighbours[k];
-                for (int m = lists.start[other]; m < lists.start[other + 1]; m++) {
-                    int j = lists.items[m];
-                    if (j <= i) {
-                        continue;
-                    }
-                    double dx = boundary.separationX(d.x[j] - d.x[i]);
-                    double dy = boundary.separationY(d.y[j] - d.y[i]);
-                    double sigma = d.radius[i] + d.radius[j];
-                    double dist = Math.sqrt(dx * dx + dy * dy);
-                    double tolerance = CONTACT_TOLERANCE * sigma + coordinateUlp;
-                    if (sigma - dist > tolerance) {
-                        throw new BadInputException(String.format(
-                                "discs %d and %d overlap (%s and %s): centres %s apart, radii add up to %s",
-                                i, j, describe(blockStarts, i), describe(blockStarts, j), dist, sigma));
-                    }
-                    if (dist - sigma <= tolerance && effects.hasGravity() && (d.invMass[i] == 0) != (d.invMass[j] == 0)) {
-                        checkNotRestingOnPeg(d, blockStarts, i, j, dx / dist, dy / dist);
-                    }
-                }
+        NeighbourPairs.forEach(d, box, (i, j, dx, dy) -> {
+            double sigma = d.radius[i] + d.radius[j];
+            double dist = Math.sqrt(dx * dx + dy * dy);
+            double tolerance = CONTACT_TOLERANCE * sigma + coordinateUlp;
+            if (sigma - dist > tolerance) {
+                throw new BadInputException(String.format(
+                        "discs %d and %d overlap (%s and %s): centres %s apart, radii add up to %s",
+                        i, j, describe(blockStarts, i), describe(blockStarts, j), dist, sigma));
             }
-        }
+            if (dist - sigma <= tolerance && effects.hasGravity() && (d.invMass[i] == 0) != (d.invMass[j] == 0)) {
+                checkNotRestingOnPeg(d, blockStarts, i, j, dx / dist, dy / dist);
+            }
+        });
     }
 
     /**
