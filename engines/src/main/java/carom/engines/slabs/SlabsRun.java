@@ -435,7 +435,7 @@ final class SlabsRun {
             if (violated) {
                 rollbacks++;
                 for (Domain d : domains) {
-                    d.undo(tStar);
+                    d.undo(tStar, contact ? segmentCreator(d) : -1);
                 }
             } else {
                 commits++;
@@ -720,6 +720,16 @@ final class SlabsRun {
     private double violationT;
     private int violationX;
     private int violationY;
+    /**
+     * The violating segments: each disc's domain and log entry ({@link #RECORD} for its current record,
+     * {@link #UNTOUCHED} for a disc without an event in the window).
+     */
+    private Domain violationDomX;
+    private Domain violationDomY;
+    private int violationEntryX;
+    private int violationEntryY;
+    private static final int RECORD = -1;
+    private static final int UNTOUCHED = -2;
     /** Scratch: one disc's segments (state from the record or a log entry, valid from..to). */
     private final Discs segA = new Discs(2);
 
@@ -788,19 +798,20 @@ final class SlabsRun {
                 for (int y = cellHead[r * cols + c]; y != NIL; y = ir[y * IS + CNEXT]) {
                     // In an edge column now and not dirty: no event in this window.
                     if (dirtyStamp[y] != window) {
-                        loadSegment(segA, 1, b, y, -1);
-                        contact(x, y, from, to);
+                        loadSegment(segA, 1, b, y, RECORD);
+                        contact(a, x, entry, b, y, UNTOUCHED, from, to);
                     }
                 }
             }
             // Changed discs of b: wherever they were, on every segment.
             for (int q = 0; q < b.dirtyCount; q++) {
                 int y = b.dirty[q];
-                loadSegment(segA, 1, b, y, -1);
-                contact(x, y, Math.max(from, Math.max(start, rec[y * stride + T])), to);
+                loadSegment(segA, 1, b, y, RECORD);
+                contact(a, x, entry, b, y, RECORD, Math.max(from, Math.max(start, rec[y * stride + T])), to);
                 for (int e = lastEntry[y]; e >= 0; e = b.enPrev[e]) {
                     loadSegment(segA, 1, b, y, e);
-                    contact(x, y, Math.max(from, Math.max(start, b.enRec[e * b.rs + T])), Math.min(to, b.evTime[b.enEvent[e]]));
+                    contact(a, x, entry, b, y, e, Math.max(from, Math.max(start, b.enRec[e * b.rs + T])),
+                            Math.min(to, b.evTime[b.enEvent[e]]));
                 }
             }
         }
@@ -821,8 +832,11 @@ final class SlabsRun {
         d.invMass[slot] = invMass(i);
     }
 
-    /** Contact of the two loaded segments within [from, to], lowering {@link #violationT}. */
-    private void contact(int x, int y, double from, double to) {
+    /**
+     * Contact of the two loaded segments (x's, entry ex of domain a; y's, entry ey of domain b) within
+     * [from, to], lowering {@link #violationT}.
+     */
+    private void contact(Domain a, int x, int ex, Domain b, int y, int ey, double from, double to) {
         if (!(from <= to)) {
             return;
         }
@@ -831,7 +845,28 @@ final class SlabsRun {
             violationT = t;
             violationX = x;
             violationY = y;
+            violationDomX = a;
+            violationDomY = b;
+            violationEntryX = ex;
+            violationEntryY = ey;
         }
+    }
+
+    /**
+     * The index, in domain d's log, of the event that started the violating disc's segment, or -1 if
+     * d holds neither violating disc or the segment began before the window. That event must survive the
+     * rollback even when it happened at t* itself (a chain of simultaneous contacts crossing the slab
+     * edge, as in Newton's cradle): undoing it would remove the very segment that violates, and the
+     * window would be redone and rolled back forever.
+     */
+    private int segmentCreator(Domain d) {
+        if (d == violationDomX) {
+            return d.creatorOf(violationX, violationEntryX);
+        }
+        if (d == violationDomY) {
+            return d.creatorOf(violationY, violationEntryY);
+        }
+        return -1;
     }
 
     // ------------------------------------------------------------------------------------------------
@@ -1157,12 +1192,32 @@ final class SlabsRun {
             }
         }
 
-        /** Undoes every logged event at or after local {@code tStar}: records, cells, queue, counters. */
-        void undo(double tStar) {
+        /**
+         * The log index of the event that gave disc i the segment saved in log entry {@code entry} (its
+         * current record if {@link #RECORD}): the event of i's previous entry; -1 if none in this window.
+         */
+        int creatorOf(int i, int entry) {
+            if (entry == UNTOUCHED) {
+                return -1;
+            }
+            for (int e = (entry == RECORD ? logEntries : entry) - 1; e >= 0; e--) {
+                if (enDisc[e] == i) {
+                    return enEvent[e];
+                }
+            }
+            return -1;
+        }
+
+        /**
+         * Undoes every logged event at or after local {@code tStar}, except those up to log index
+         * {@code keep} (events at tStar itself that must stand): records, cells, queue, counters.
+         */
+        void undo(double tStar, int keep) {
             int k = logEvents;
             while (k > 0 && evTime[k - 1] >= tStar) {
                 k--;
             }
+            k = Math.max(k, keep + 1);
             if (k == logEvents) {
                 return;
             }

@@ -130,6 +130,25 @@ public abstract class ExactEngineAnalyticContract {
         assertThat(r.pairCollisions()).isEqualTo(5);
     }
 
+    @ParameterizedTest(name = "chain from x = {0}")
+    @ValueSource(doubles = {4, 4.5, 6, 6.75, 7.5, 8.25, 9, 9.5, 10.25, 11, 12})
+    void newtonsCradleWorksWhereverTheChainLies(double first) {
+        // The same cradle slid along the box, so that an engine's internal borders (slab edges, stripes)
+        // fall between every pair of the chain: contact at t = 2, the last disc at first + 4 + 2 at t = 4.
+        SceneBuilder b = box20x10().disc(0, first - 3, 5, 1, 0);
+        for (int k = 0; k < 5; k++) {
+            b.disc(0, first + k, 5, 0, 0);
+        }
+        RunResult r = run(b.until(4).build());
+        Discs d = r.finalState();
+        assertDisc(d, 0, first - 1, 5, 0, 0);
+        for (int k = 1; k <= 4; k++) {
+            assertDisc(d, k, first + k - 1, 5, 0, 0);
+        }
+        assertDisc(d, 5, first + 6, 5, 1, 0);
+        assertThat(r.pairCollisions()).isEqualTo(5);
+    }
+
     @ParameterizedTest(name = "impact parameter sigma * (1 {0} 1e-9)")
     @ValueSource(ints = {-1, +1})
     void grazingContactCollidesOnlyInsideTheContactDistance(int side) {

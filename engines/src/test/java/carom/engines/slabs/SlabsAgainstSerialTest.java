@@ -7,7 +7,10 @@ import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.engine.SimulationStuckException;
 import carom.core.scene.Effects;
+import carom.core.scene.BoundaryKind;
 import carom.core.scene.Scene;
+import carom.core.scene.SceneBuilder;
+import carom.core.scene.Species;
 import carom.core.state.Discs;
 import carom.engines.reference.ChainScenes;
 import carom.engines.reference.Invariants;
@@ -131,6 +134,27 @@ class SlabsAgainstSerialTest {
         RunResult r = slabs(scene, domains);
         assertThat(r.counters().get("domains")).isEqualTo(domains);
         assertThat(r.counters().get("crossDomainEvents")).as("chain contacts across boundaries").isPositive();
+        assertSame(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())));
+    }
+
+    @ParameterizedTest(name = "{0} domains")
+    @CsvSource({"2", "3", "5", "8"})
+    void aTouchingCradleThroughEverySlabPassesItsMomentumAtOneInstant(int domains) {
+        // 30 touching discs at x = 4..33 in a box 40 wide, struck from the left at t = 1: the momentum
+        // crosses every slab edge at that one instant, by contacts between discs that were at rest. The last
+        // disc leaves at speed 1 and is at 33 + 2 at t = 3; every other disc has moved back by nothing.
+        SceneBuilder b = SceneBuilder.create("long-cradle").box(40, 4, BoundaryKind.WALLS)
+                .species(Species.mobile("ball", 0.5, 1)).disc(0, 2, 2, 1, 0);
+        for (int k = 0; k < 30; k++) {
+            b.disc(0, 4 + k, 2, 0, 0);
+        }
+        Scene scene = b.until(3).build();
+        RunResult r = slabs(scene, domains);
+        assertThat(r.counters().get("domains")).isEqualTo(domains);
+        assertThat(r.counters().get("crossDomainEvents")).as("contacts across slab edges").isPositive();
+        assertThat(r.pairCollisions()).isEqualTo(30);
+        assertThat(r.finalState().x[30]).isCloseTo(35, within(1e-12));
+        assertThat(r.finalState().vx[30]).isCloseTo(1, within(1e-12));
         assertSame(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())));
     }
 
