@@ -16,8 +16,9 @@ import java.util.Locale;
  * The JMH scenario stays the one to quote (forks, warm-up, error bars); this is for a look.
  *
  * <pre>
- * java -cp jmh/target/benchmarks.jar carom.jmh.GasBench fast 10000,100000 0.3,0.5,0.68 [collisionsPerDisc 10] [repeats 5] [tunables]
+ * java -cp jmh/target/benchmarks.jar carom.jmh.GasBench fast 10000,100000 0.3,0.5,0.68 [collisionsPerDisc 10] [repeats 5] [tunables] [threads 1]
  * </pre>
+ * Tunables as {@code key=value;key=value} ("" for none); threads reach the parallel engines only.
  * Each line: the mean and standard deviation of collisions per second over the repeats (the first run
  * of each scene is warm-up and not counted), timed around the whole {@code Engine.run}.
  */
@@ -27,31 +28,33 @@ public final class GasBench {
 
     public static void main(String[] args) {
         if (args.length < 3) {
-            System.err.println("usage: GasBench ENGINE N[,N...] PHI[,PHI...] [COLLISIONS_PER_DISC] [REPEATS] [TUNABLES]");
+            System.err.println("usage: GasBench ENGINE N[,N...] PHI[,PHI...] [COLLISIONS_PER_DISC] [REPEATS] [TUNABLES] [THREADS]");
             System.exit(2);
         }
         Engine engine = EngineCatalog.byName(args[0]);
         double perDisc = args.length > 3 ? Double.parseDouble(args[3]) : 10;
         int repeats = args.length > 4 ? Integer.parseInt(args[4]) : 5;
         String tunables = args.length > 5 ? args[5] : "";
+        int threads = args.length > 6 ? Integer.parseInt(args[6]) : 1;
         System.out.printf("# JVM %s %s (%s), max heap %d MiB; machine %s %s, %d cores, %s%n",
                 System.getProperty("java.vm.name"), System.getProperty("java.runtime.version"),
                 System.getProperty("java.vm.vendor"), Runtime.getRuntime().maxMemory() >> 20,
                 System.getProperty("os.name"), System.getProperty("os.arch"),
                 Runtime.getRuntime().availableProcessors(), cpuModel());
-        System.out.printf("# engine %s, about %s collisions per disc per run, %d timed runs after one warm-up%s%n",
-                engine.name(), perDisc, repeats, tunables.isBlank() ? "" : ", tunables " + tunables);
+        System.out.printf("# engine %s, %d threads, about %s collisions per disc per run, %d timed runs after one warm-up%s%n",
+                engine.name(), threads, perDisc, repeats, tunables.isBlank() ? "" : ", tunables " + tunables);
         System.out.println("engine,N,phi,collisionsPerSecond,stddev,eventsPerCollision,bytesPerDisc,collisionsPerRun");
         for (String nText : args[1].split(",")) {
             for (String phiText : args[2].split(",")) {
-                bench(engine, Integer.parseInt(nText), Double.parseDouble(phiText), perDisc, repeats, tunables);
+                bench(engine, Integer.parseInt(nText), Double.parseDouble(phiText), perDisc, repeats, tunables, threads);
             }
         }
     }
 
-    private static void bench(Engine engine, int n, double phi, double perDisc, int repeats, String tunables) {
+    private static void bench(Engine engine, int n, double phi, double perDisc, int repeats, String tunables,
+                              int threads) {
         Equilibrated gas = Equilibrated.gas(n, phi, perDisc);
-        RunOptions options = Tunables.apply(engine, RunOptions.until(gas.scene().until()), tunables);
+        RunOptions options = Tunables.apply(engine, RunOptions.until(gas.scene().until()).withThreads(threads), tunables);
         double sum = 0;
         double sumSquares = 0;
         RunResult last = null;
@@ -70,6 +73,7 @@ public final class GasBench {
         String perDiscBytes = bytes == null ? "n/a" : String.format(Locale.ROOT, "%.1f", (double) bytes / n);
         System.out.printf(Locale.ROOT, "%s,%d,%s,%.0f,%.0f,%.3f,%s,%d%n", engine.name(), n, phi, mean, sd,
                 (double) last.events() / last.collisions(), perDiscBytes, last.collisions());
+        System.out.println("# counters of the last run: " + new java.util.TreeMap<>(last.counters()));
     }
 
     private static String cpuModel() {

@@ -18,7 +18,8 @@ import java.util.Set;
  *
  * <p>Tunables: {@code cellFactor}, {@code auditEnergy} (as {@code fast}; with several domains the
  * energy is audited at every barrier); {@code sequential} (measurement mode: all domains' windows run
- * one after another on the calling thread, for single-core costs). Counters: see {@link SlabsRun}.
+ * one after another on the calling thread, for single-core costs); {@code spins} (busy-wait iterations at
+ * the barrier before a thread parks). Counters: see {@link SlabsRun}.
  */
 public final class SlabsEngine implements Engine {
     @Override
@@ -38,7 +39,7 @@ public final class SlabsEngine implements Engine {
 
     @Override
     public Set<String> tunables() {
-        return Set.of("cellFactor", "auditEnergy", "sequential");
+        return Set.of("cellFactor", "auditEnergy", "sequential", "spins");
     }
 
     @Override

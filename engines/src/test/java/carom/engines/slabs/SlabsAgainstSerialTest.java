@@ -160,16 +160,20 @@ class SlabsAgainstSerialTest {
 
     @Test
     void threadsChangeNothing() {
-        // Each window is a deterministic function of its start state: threaded and sequential
+        // Each window is a deterministic function of its start state: threaded, parking and sequential
         // (measurement mode) runs give the same bits and the same windows.
         Scene scene = RandomScenes.dense(1600, 0.6, true, 9, 0.3);
         RunOptions options = RunOptions.until(scene.until()).withThreads(3);
         RunResult threaded = new SlabsEngine().run(scene, options);
         RunResult sequential = new SlabsEngine().run(scene, options.withTunable("sequential", "true"));
-        assertThat(sequential.finalState().x).isEqualTo(threaded.finalState().x);
-        assertThat(sequential.finalState().vy).isEqualTo(threaded.finalState().vy);
-        for (String counter : new String[] {"windows", "rollbacks", "undoneEvents", "crossDomainEvents", "events"}) {
-            assertThat(sequential.counters().get(counter)).as(counter).isEqualTo(threaded.counters().get(counter));
+        // Threads that park at once at every barrier (no spinning) hand off through park/unpark only.
+        RunResult parking = new SlabsEngine().run(scene, options.withTunable("spins", "0"));
+        for (RunResult other : new RunResult[] {sequential, parking}) {
+            assertThat(other.finalState().x).isEqualTo(threaded.finalState().x);
+            assertThat(other.finalState().vy).isEqualTo(threaded.finalState().vy);
+            for (String counter : new String[] {"windows", "rollbacks", "undoneEvents", "crossDomainEvents", "events"}) {
+                assertThat(other.counters().get(counter)).as(counter).isEqualTo(threaded.counters().get(counter));
+            }
         }
     }
 
