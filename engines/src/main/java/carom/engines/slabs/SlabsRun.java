@@ -188,15 +188,18 @@ final class SlabsRun {
     private volatile boolean shutdown;
     private volatile Throwable failure;
     /**
-     * Spins before a waiting thread parks (tunable {@code spins}). With a core per domain, the default
-     * spans a serial phase and a window's imbalance (tens of microseconds) without a park and unpark,
-     * which cost as much again: at N = 1e6 on 2 cores, 2^16 spins against 2^11 took the speed-up over
-     * {@code fast} from 1.3x to 1.5x. With more domains than processors a thread parks soon, so that the
-     * thread it waits for gets the core.
+     * Spins before a waiting thread parks (tunable {@code spins}). Long spins pay on large scenes with a
+     * core per domain: they span a serial phase and a window's imbalance (tens of microseconds) without
+     * a park and unpark, which cost as much again; at N = 1e6 on 2 cores, 2^16 spins against 2^11 took
+     * the speed-up over {@code fast} from 1.3x to 1.5x. On small scenes they cost: a spinning thread
+     * holds a core that the JIT compiler needs while a short run is still warming up (N = 1e4, 2 cores:
+     * 0.3 s per run against 0.06 s), so those, and machines with more domains than processors, park soon.
      */
     private final int spins;
-    private static final int SPINS_DEDICATED = 1 << 16;
-    private static final int SPINS_SHARED = 1 << 11;
+    private static final int SPINS_LONG = 1 << 16;
+    private static final int SPINS_SHORT = 1 << 11;
+    /** Discs from which a scene counts as large for {@link #spins}. */
+    static final int LONG_SPIN_DISCS = 500_000;
     private final Thread coordinator = Thread.currentThread();
     /** The coordinator is parked (or about to) waiting for domains; workers unpark it. */
     private volatile boolean coordinatorParked;
@@ -233,7 +236,8 @@ final class SlabsRun {
         }
         this.domainCount = k;
         this.sequential = Boolean.parseBoolean(options.tunables().getOrDefault("sequential", "false"));
-        int defaultSpins = options.threads() <= Runtime.getRuntime().availableProcessors() ? SPINS_DEDICATED : SPINS_SHARED;
+        boolean dedicated = options.threads() <= Runtime.getRuntime().availableProcessors();
+        int defaultSpins = dedicated && n >= LONG_SPIN_DISCS ? SPINS_LONG : SPINS_SHORT;
         this.spins = (int) Math.min(1 << 30, Math.max(0, options.tunable("spins", defaultSpins)));
         this.colOwner = new int[cols];
         this.edgeCol = new boolean[cols];
