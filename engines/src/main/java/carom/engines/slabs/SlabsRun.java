@@ -90,7 +90,8 @@ import java.util.concurrent.locks.LockSupport;
  * {@code windowCpuNanos} (CPU time of the serial phases, and of all domains in windows),
  * {@code criticalCpuNanos} (the sum over windows of the slowest domain's CPU time: with
  * {@code serialCpuNanos}, what the run would take on dedicated cores, barrier latency aside; on a
- * loaded machine wall time mostly measures the scheduler), and {@code fast}'s counters.
+ * loaded machine wall time mostly measures the scheduler), {@code slabK.events} and
+ * {@code slabK.windowCpuNanos} per slab K (with several), and {@code fast}'s counters.
  */
 final class SlabsRun {
     private static final int PRESSURE_BLOCKS = 20;
@@ -372,6 +373,11 @@ final class SlabsRun {
         long windowCpu = 0;
         for (Domain d : domains) {
             windowCpu += d.windowCpuNanos;
+            if (domainCount > 1) {
+                // Per slab, to tell a systematic imbalance (one slab always heavier) from noise.
+                counters.put("slab" + d.id + ".events", d.events);
+                counters.put("slab" + d.id + ".windowCpuNanos", d.windowCpuNanos);
+            }
         }
         counters.put("windowCpuNanos", windowCpu);
         return new RunResult("slabs", true, out, until, pair, wall, events,
