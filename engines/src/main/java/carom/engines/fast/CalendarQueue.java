@@ -122,23 +122,13 @@ public final class CalendarQueue {
      * {@code time} is finite (times must be >= now).
      */
     public void rebuild(double newWidth, double now) {
-        width = newWidth;
-        invWidth = 1 / newWidth;
-        Arrays.fill(head, NIL);
-        heapSize = 0;
-        inBuckets = 0;
-        idle = 0;
-        cur = sliceOf(now);
-        for (int i = 0; i < n; i++) {
-            if (time(i) != INF) {
-                place(i);
-            }
-        }
+        rebuild(newWidth, now, null, n);
     }
 
     /**
-     * As {@link #rebuild(double, double)}, over the discs {@code members[0..count)} only: for queues
-     * that share their key array with other queues (one per domain of a parallel engine).
+     * As {@link #rebuild(double, double)}, over the discs {@code members[0..count)} only (every disc if
+     * {@code members} is null): for queues that share their key array with other queues (one per
+     * domain of a parallel engine).
      */
     public void rebuild(double newWidth, double now, int[] members, int count) {
         width = newWidth;
@@ -149,7 +139,7 @@ public final class CalendarQueue {
         idle = 0;
         cur = sliceOf(now);
         for (int k = 0; k < count; k++) {
-            int i = members[k];
+            int i = members == null ? k : members[k];
             if (time(i) != INF) {
                 place(i);
             }

@@ -621,23 +621,14 @@ final class SlabsRun {
         }
         load(xpair, i, 0);
         for (int dc = -1; dc <= 1; dc += 2) {
-            int c = col + dc;
-            if (c < 0 || c >= cols) {
-                if (!periodic) {
-                    continue;
-                }
-                c = c < 0 ? c + cols : c - cols;
-            }
-            if (colOwner[c] == own) {
+            int c = foreignColumn(col, dc, own);
+            if (c < 0) {
                 continue;
             }
             for (int dr = -1; dr <= 1; dr++) {
-                int r = row + dr;
-                if (r < 0 || r >= rows) {
-                    if (!periodic) {
-                        continue;
-                    }
-                    r = r < 0 ? r + rows : r - rows;
+                int r = wrappedRow(row + dr);
+                if (r < 0) {
+                    continue;
                 }
                 for (int j = cellHead[r * cols + c]; j != NIL; j = ir[j * IS + CNEXT]) {
                     load(xpair, j, 1);
@@ -657,6 +648,33 @@ final class SlabsRun {
         xPartner[i] = bestP;
         xPCount[i] = bestP >= 0 ? ir[bestP * IS + COUNT] : 0;
         xUpdate(i);
+    }
+
+    /**
+     * Column {@code col + dc}, wrapped in a periodic box, if it exists and another slab than {@code own}
+     * owns it; else -1. The cross-slab neighbourhood of a disc in an edge column is the three cells of
+     * each such column beside its own.
+     */
+    private int foreignColumn(int col, int dc, int own) {
+        int c = col + dc;
+        if (c < 0 || c >= cols) {
+            if (!periodic) {
+                return -1;
+            }
+            c = c < 0 ? c + cols : c - cols;
+        }
+        return colOwner[c] == own ? -1 : c;
+    }
+
+    /** Row r, wrapped in a periodic box; -1 outside a walled one. */
+    private int wrappedRow(int r) {
+        if (r < 0 || r >= rows) {
+            if (!periodic) {
+                return -1;
+            }
+            r = r < 0 ? r + rows : r - rows;
+        }
+        return r;
     }
 
     /** Copies disc i into slot {@code slot} of {@code d} (any thread: no scratch of the predictor). */
@@ -796,24 +814,15 @@ final class SlabsRun {
         int row = cell >>> AXIS_BITS;
         loadSegment(segA, 0, a, x, entry);
         for (int dc = -1; dc <= 1; dc += 2) {
-            int c = col + dc;
-            if (c < 0 || c >= cols) {
-                if (!periodic) {
-                    continue;
-                }
-                c = c < 0 ? c + cols : c - cols;
-            }
-            if (colOwner[c] == a.id) {
+            int c = foreignColumn(col, dc, a.id);
+            if (c < 0) {
                 continue;
             }
             Domain b = domains[colOwner[c]];
             for (int dr = -1; dr <= 1; dr++) {
-                int r = row + dr;
-                if (r < 0 || r >= rows) {
-                    if (!periodic) {
-                        continue;
-                    }
-                    r = r < 0 ? r + rows : r - rows;
+                int r = wrappedRow(row + dr);
+                if (r < 0) {
+                    continue;
                 }
                 for (int y = cellHead[r * cols + c]; y != NIL; y = ir[y * IS + CNEXT]) {
                     // In an edge column now and not dirty: no event in this window.

@@ -32,16 +32,11 @@ class FastAgainstSerialTest {
     private static final double SAME = 1e-8;
 
     private static void assertSame(String name, RunResult fast, RunResult serial) {
-        assertThat(fast.pairCollisions()).as("%s: pair collisions", name).isEqualTo(serial.pairCollisions());
-        assertThat(fast.wallCollisions()).as("%s: wall collisions", name).isEqualTo(serial.wallCollisions());
+        Invariants.assertSameRun(name, fast, serial, SAME);
         Discs f = fast.finalState();
         Discs s = serial.finalState();
         for (int i = 0; i < s.n; i++) {
             assertThat(f.t[i]).as("%s: clock of %d", name, i).isEqualTo(s.t[i]);
-            assertThat(f.x[i]).as("%s: x of %d", name, i).isCloseTo(s.x[i], within(SAME));
-            assertThat(f.y[i]).as("%s: y of %d", name, i).isCloseTo(s.y[i], within(SAME));
-            assertThat(f.vx[i]).as("%s: vx of %d", name, i).isCloseTo(s.vx[i], within(SAME));
-            assertThat(f.vy[i]).as("%s: vy of %d", name, i).isCloseTo(s.vy[i], within(SAME));
         }
     }
 

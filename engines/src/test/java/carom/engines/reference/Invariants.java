@@ -36,13 +36,26 @@ public final class Invariants {
 
     /** Every disc's position and velocity agree within {@code tolerance}. */
     public static void assertSameState(Discs actual, Discs expected, double tolerance) {
-        assertThat(actual.n).isEqualTo(expected.n);
+        assertSameState("", actual, expected, tolerance);
+    }
+
+    /** As {@link #assertSameState(Discs, Discs, double)}, each failure message prefixed with {@code name}. */
+    public static void assertSameState(String name, Discs actual, Discs expected, double tolerance) {
+        String prefix = name.isEmpty() ? "" : name + ": ";
+        assertThat(actual.n).as("%sdisc count", prefix).isEqualTo(expected.n);
         for (int i = 0; i < expected.n; i++) {
-            assertThat(actual.x[i]).as("x of %d", i).isCloseTo(expected.x[i], within(tolerance));
-            assertThat(actual.y[i]).as("y of %d", i).isCloseTo(expected.y[i], within(tolerance));
-            assertThat(actual.vx[i]).as("vx of %d", i).isCloseTo(expected.vx[i], within(tolerance));
-            assertThat(actual.vy[i]).as("vy of %d", i).isCloseTo(expected.vy[i], within(tolerance));
+            assertThat(actual.x[i]).as("%sx of %d", prefix, i).isCloseTo(expected.x[i], within(tolerance));
+            assertThat(actual.y[i]).as("%sy of %d", prefix, i).isCloseTo(expected.y[i], within(tolerance));
+            assertThat(actual.vx[i]).as("%svx of %d", prefix, i).isCloseTo(expected.vx[i], within(tolerance));
+            assertThat(actual.vy[i]).as("%svy of %d", prefix, i).isCloseTo(expected.vy[i], within(tolerance));
         }
+    }
+
+    /** Two runs of one scene agree: the same pair and wall collision counts, and final states within {@code tolerance}. */
+    public static void assertSameRun(String name, RunResult actual, RunResult expected, double tolerance) {
+        assertThat(actual.pairCollisions()).as("%s: pair collisions", name).isEqualTo(expected.pairCollisions());
+        assertThat(actual.wallCollisions()).as("%s: wall collisions", name).isEqualTo(expected.wallCollisions());
+        assertSameState(name, actual.finalState(), expected.finalState(), tolerance);
     }
 
     /** Checks every invariant of an elastic run; returns the result for chaining. */

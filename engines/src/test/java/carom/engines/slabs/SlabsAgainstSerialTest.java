@@ -11,7 +11,6 @@ import carom.core.scene.BoundaryKind;
 import carom.core.scene.Scene;
 import carom.core.scene.SceneBuilder;
 import carom.core.scene.Species;
-import carom.core.state.Discs;
 import carom.engines.reference.ChainScenes;
 import carom.engines.reference.Invariants;
 import carom.engines.reference.RandomScenes;
@@ -40,16 +39,7 @@ class SlabsAgainstSerialTest {
     }
 
     private static void assertSame(String name, RunResult actual, RunResult serial) {
-        assertThat(actual.pairCollisions()).as("%s: pair collisions", name).isEqualTo(serial.pairCollisions());
-        assertThat(actual.wallCollisions()).as("%s: wall collisions", name).isEqualTo(serial.wallCollisions());
-        Discs a = actual.finalState();
-        Discs s = serial.finalState();
-        for (int i = 0; i < s.n; i++) {
-            assertThat(a.x[i]).as("%s: x of %d", name, i).isCloseTo(s.x[i], within(SAME));
-            assertThat(a.y[i]).as("%s: y of %d", name, i).isCloseTo(s.y[i], within(SAME));
-            assertThat(a.vx[i]).as("%s: vx of %d", name, i).isCloseTo(s.vx[i], within(SAME));
-            assertThat(a.vy[i]).as("%s: vy of %d", name, i).isCloseTo(s.vy[i], within(SAME));
-        }
+        Invariants.assertSameRun(name, actual, serial, SAME);
     }
 
     @ParameterizedTest(name = "N {0}, phi {1}, periodic {2}, {5} domains")
