@@ -121,6 +121,14 @@ class SimulateErrorsTest {
     }
 
     @Test
+    void slabsBarrierSpinsMustBeAWholeNumber() {
+        Path scene = Scenes.write(dir, "head-on.json", Scenes.headOn());
+        assertRejected(simulate(scene, "--engine", "slabs", "--threads", "2", "--option", "spins=-5"),
+                "error: " + scene + ": engine option spins: must be a whole number from 0 to 2^30, got -5",
+                "head-on.json");
+    }
+
+    @Test
     void outputInANonexistentDirectory() {
         Path scene = Scenes.write(dir, "head-on.json", Scenes.headOn());
         Path csv = dir.resolve("no/such/dir/final.csv");

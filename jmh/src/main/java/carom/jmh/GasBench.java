@@ -1,5 +1,6 @@
 package carom.jmh;
 
+import carom.core.BadInputException;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
@@ -31,11 +32,26 @@ public final class GasBench {
             System.err.println("usage: GasBench ENGINE N[,N...] PHI[,PHI...] [COLLISIONS_PER_DISC] [REPEATS] [TUNABLES] [THREADS]");
             System.exit(2);
         }
+        try {
+            run(args);
+        } catch (BadInputException e) {
+            System.err.println("error: " + e.getMessage());
+            System.exit(2);
+        } catch (NumberFormatException e) {
+            System.err.println("error: a number argument is not a number (" + e.getMessage() + ")");
+            System.exit(2);
+        }
+    }
+
+    private static void run(String[] args) {
         Engine engine = EngineCatalog.byName(args[0]);
         double perDisc = args.length > 3 ? Double.parseDouble(args[3]) : 10;
         int repeats = args.length > 4 ? Integer.parseInt(args[4]) : 5;
         String tunables = args.length > 5 ? args[5] : "";
         int threads = args.length > 6 ? Integer.parseInt(args[6]) : 1;
+        if (threads < 1 || repeats < 1 || !(perDisc > 0)) {
+            throw new BadInputException("threads and repeats must be at least 1 and collisions per disc above 0");
+        }
         System.out.printf("# JVM %s %s (%s), max heap %d MiB; machine %s %s, %d cores, %s%n",
                 System.getProperty("java.vm.name"), System.getProperty("java.runtime.version"),
                 System.getProperty("java.vm.vendor"), Runtime.getRuntime().maxMemory() >> 20,

@@ -64,7 +64,39 @@ class BenchmarksJarIT {
         assertThat(jmh.output).contains("jdk.virtualThreadScheduler.parallelism is 2 in this JVM but the trial asks for threads = 1");
     }
 
+    /** GasBench passes its thread count on: the last run's counters show the slabs it got. */
+    @Test
+    void gasBenchRunsAParallelEngineOnTheThreadsAskedFor() throws Exception {
+        Jmh bench = gasBench("slabs", "400", "0.3", "0.5", "1", "", "2");
+        assertThat(bench.exit).as(bench.output).isZero();
+        assertThat(bench.output).contains("# engine slabs, 2 threads").contains("\nslabs,400,0.3,").contains("domains=2");
+    }
+
+    @Test
+    void gasBenchRejectsBadArgumentsWithAnErrorLine() throws Exception {
+        for (String[] args : new String[][] {{"fast", "400", "0.3", "1", "1", "", "two"}, {"nosuch", "400", "0.3"},
+                {"fast", "400", "0.3", "1", "0"}}) {
+            Jmh bench = gasBench(args);
+            assertThat(bench.exit).as(bench.output).isEqualTo(2);
+            assertThat(bench.output).contains("\nerror: ").doesNotContain("Exception").doesNotContain("\tat ");
+        }
+    }
+
     private record Jmh(int exit, String output) {
+    }
+
+    private static Jmh gasBench(String... args) throws IOException, InterruptedException {
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-cp", JAR.toString(), "carom.jmh.GasBench"));
+        command.addAll(List.of(args));
+        Files.createDirectories(OUT);
+        Path log = OUT.resolve("gasbench-" + System.nanoTime() + ".log");
+        Process p = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(log.toFile()).start();
+        if (!p.waitFor(120, TimeUnit.SECONDS)) {
+            p.destroyForcibly().waitFor();
+            throw new AssertionError("GasBench did not finish in 120 s: " + command + "\n" + Files.readString(log));
+        }
+        return new Jmh(p.exitValue(), String.join(" ", command) + "\n" + Files.readString(log));
     }
 
     /** Starts the jar with this JVM's java; JMH's forks inherit the Unsafe flag from its command line. */

@@ -27,6 +27,7 @@ import static carom.engines.fast.DiscTable.VY;
 import static carom.engines.fast.DiscTable.X;
 import static carom.engines.fast.DiscTable.Y;
 
+import carom.core.BadInputException;
 import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
@@ -90,7 +91,8 @@ import java.util.concurrent.locks.LockSupport;
  * {@code windowCpuNanos} (CPU time of the serial phases, and of all domains in windows),
  * {@code criticalCpuNanos} (the sum over windows of the slowest domain's CPU time: with
  * {@code serialCpuNanos}, what the run would take on dedicated cores, barrier latency aside; on a
- * loaded machine wall time mostly measures the scheduler), {@code slabK.events} and
+ * loaded machine wall time mostly measures the scheduler), {@code barrierSpins} (the spins in force),
+ * {@code slabK.events} and
  * {@code slabK.windowCpuNanos} per slab K (with several), and {@code fast}'s counters.
  */
 final class SlabsRun {
@@ -197,10 +199,25 @@ final class SlabsRun {
      * 0.3 s per run against 0.06 s), so those, and machines with more domains than processors, park soon.
      */
     private final int spins;
-    private static final int SPINS_LONG = 1 << 16;
-    private static final int SPINS_SHORT = 1 << 11;
+    static final int SPINS_LONG = 1 << 16;
+    static final int SPINS_SHORT = 1 << 11;
     /** Discs from which a scene counts as large for {@link #spins}. */
     static final int LONG_SPIN_DISCS = 500_000;
+    /**
+     * The barrier spins for a run of n discs: the {@code spins} tunable (a whole number from 0 to 2^30)
+     * if given, else long spins for a large scene with a processor per thread, short ones otherwise.
+     */
+    static int spinsOf(RunOptions options, int n, int processors) {
+        boolean dedicated = options.threads() <= processors;
+        int byDefault = dedicated && n >= LONG_SPIN_DISCS ? SPINS_LONG : SPINS_SHORT;
+        double given = options.tunable("spins", byDefault);
+        if (!(given >= 0 && given <= 1 << 30) || given != Math.rint(given)) {
+            throw new BadInputException("engine option spins: must be a whole number from 0 to 2^30, got "
+                    + options.tunables().get("spins"));
+        }
+        return (int) given;
+    }
+
     private final Thread coordinator = Thread.currentThread();
     /** The coordinator is parked (or about to) waiting for domains; workers unpark it. */
     private volatile boolean coordinatorParked;
@@ -237,9 +254,7 @@ final class SlabsRun {
         }
         this.domainCount = k;
         this.sequential = Boolean.parseBoolean(options.tunables().getOrDefault("sequential", "false"));
-        boolean dedicated = options.threads() <= Runtime.getRuntime().availableProcessors();
-        int defaultSpins = dedicated && n >= LONG_SPIN_DISCS ? SPINS_LONG : SPINS_SHORT;
-        this.spins = (int) Math.min(1 << 30, Math.max(0, options.tunable("spins", defaultSpins)));
+        this.spins = spinsOf(options, n, Runtime.getRuntime().availableProcessors());
         this.colOwner = new int[cols];
         this.edgeCol = new boolean[cols];
         for (int col = 0; col < cols; col++) {
@@ -380,6 +395,7 @@ final class SlabsRun {
             }
         }
         counters.put("windowCpuNanos", windowCpu);
+        counters.put("barrierSpins", (long) spins);
         return new RunResult("slabs", true, out, until, pair, wall, events,
                 energyStart, energyEnd, momentumStart, Observables.momentum(out), pressure, 0, seconds,
                 Map.copyOf(counters));
