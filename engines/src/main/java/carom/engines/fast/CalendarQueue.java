@@ -108,6 +108,11 @@ public final class CalendarQueue {
         return width;
     }
 
+    /** Discs queued. */
+    public int size() {
+        return heapSize + inBuckets;
+    }
+
     public long bytes() {
         return 4L * head.length + 4L * heap.length;
     }

@@ -235,12 +235,12 @@ public final class CellPredictor {
     }
 
     /**
-     * Advances every disc to local {@code now}, then shifts clocks and event times so that {@code now}
-     * becomes 0 (serial: every disc).
+     * Advances discs {@code members[0..count)} (every disc if {@code members} is null) to local
+     * {@code now}, then shifts their clocks and event times so that {@code now} becomes 0.
      */
-    public void rebase(double now) {
-        int n = rec.length / stride;
-        for (int i = 0; i < n; i++) {
+    public void rebase(double now, int[] members, int count) {
+        for (int q = 0; q < count; q++) {
+            int i = members == null ? q : members[q];
             advance(i, now);
             int at = i * stride;
             rec[at + T] = 0;
@@ -256,8 +256,16 @@ public final class CellPredictor {
      */
     public Discs finalState(DiscTable table, double local, double until) {
         Discs out = table.scene.newDiscs();
-        int[] order = table.mortonOrder(out);
-        for (int k = 0; k < table.n; k++) {
+        finalRange(out, table.mortonOrder(out), 0, table.n, local, until);
+        return out;
+    }
+
+    /**
+     * {@link #finalState} for internal discs {@code from..to-1} only, into {@code out} at
+     * {@code order[k]} (the Morton order of {@code out}): threads may fill disjoint ranges at once.
+     */
+    public void finalRange(Discs out, int[] order, int from, int to, double local, double until) {
+        for (int k = from; k < to; k++) {
             advance(k, local);
             int o = order[k];
             int at = k * stride;
@@ -267,7 +275,6 @@ public final class CellPredictor {
             out.vy[o] = rec[at + VY];
             out.t[o] = until;
         }
-        return out;
     }
 
     /** Every disc as {@link Discs} (the energy audit's test mode only: O(N) per call). */

@@ -105,8 +105,6 @@ public final class DiscTable {
     /** Row-major offsets of an interior cell's 3x3 neighbourhood, and of the line ahead per crossing kind. */
     final int[] around;
     final int[][] ahead;
-    /** Events counted by the last {@link #meanDelay} (before trimming). */
-    private long lastQueued;
     /** Scene id of each internal disc, built only for an error message ({@link #sceneId}). */
     private int[] sceneIds;
 
@@ -289,8 +287,8 @@ public final class DiscTable {
     /**
      * Mean delay from {@code now} of the scheduled events of discs {@code members[0..count)} (every
      * disc if {@code members} is null), trimmed of those beyond 10 means; {@code fallback} if there is
-     * none or it is not a positive finite number (then {@code fallback} should be). Serial callers
-     * only: it sets {@link #lastQueued}.
+     * none or it is not a positive finite number (then {@code fallback} should be). Reads only: the
+     * domains of a parallel run call it at once, each on its own members.
      */
     public double meanDelay(int[] members, int count, double now, double fallback) {
         int m = members == null ? n : count;
@@ -303,7 +301,6 @@ public final class DiscTable {
                 k++;
             }
         }
-        lastQueued = k;
         double mean = k > 0 ? sum / k : 1;
         if (k > 0) {
             double cut = 10 * mean;
@@ -322,10 +319,5 @@ public final class DiscTable {
             mean = fallback;
         }
         return mean;
-    }
-
-    /** Events counted by the last {@link #meanDelay}. */
-    public long lastQueued() {
-        return lastQueued;
     }
 }

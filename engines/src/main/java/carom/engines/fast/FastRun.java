@@ -272,7 +272,7 @@ final class FastRun {
     private void resync(double now) {
         if (now > 0) {
             resyncs++;
-            p.rebase(now);
+            p.rebase(now, null, n);
             epoch += now;
             untilLocal = until - epoch;
         }
@@ -286,7 +286,7 @@ final class FastRun {
         double span = SPAN_MEANS * mean;
         queue.rebuild(span / queue.buckets(), now);
         resyncAt = now + RESYNC_SPANS * span;
-        rebuild.finish("fast", n, table.lastQueued());
+        rebuild.finish("fast", n, queue.size());
     }
 
     /** Every disc at {@code until}, in original id order, periodic positions wrapped into the box. */

@@ -186,8 +186,20 @@ final class SlabsRun {
     private volatile int generation;
     private volatile double windowEnd;
     private volatile boolean windowInclusive;
-    /** The published task is the first predictions, not a window. */
-    private volatile boolean initialTask;
+    /**
+     * The published task: a window, or one of the per-domain phases around the windows (first
+     * predictions, re-anchoring clocks and rebuilding calendars, the final state), which scale with N
+     * and would otherwise be serial. {@link #taskTime} is the re-anchoring's local time.
+     */
+    private volatile int task = TASK_WINDOW;
+    private volatile double taskTime;
+    private static final int TASK_WINDOW = 0;
+    private static final int TASK_PREDICT = 1;
+    private static final int TASK_REPLAN = 2;
+    private static final int TASK_FINAL = 3;
+    /** The final state being filled ({@link #TASK_FINAL}, each domain a range) and its Morton order. */
+    private Discs finalOut;
+    private int[] finalOrder;
     private volatile boolean shutdown;
     private volatile Throwable failure;
     /**
@@ -303,26 +315,14 @@ final class SlabsRun {
         long started = System.nanoTime();
         untilLocal = until;
         Thread[] workers = new Thread[sequential ? 0 : domainCount - 1];
+        double seconds;
+        Discs out;
         try {
             for (int d = 1; d <= workers.length; d++) {
                 Domain dom = domains[d];
                 workers[d - 1] = Thread.ofPlatform().daemon().name("slabs-domain-" + d).start(dom::work);
             }
-            // First predictions, each domain its own discs in its own thread.
-            initialTask = true;
-            publish();
-            domains[0].predictOwnSafely();
-            for (int d = 1; d < domainCount; d++) {
-                if (sequential) {
-                    domains[d].predictOwnSafely();
-                } else {
-                    domains[d].awaitDone(generation);
-                }
-            }
-            initialTask = false;
-            if (failure != null) {
-                throwFailure();
-            }
+            everyDomain(TASK_PREDICT);
             replan(0);
             if (domainCount > 1) {
                 for (int i = 0; i < n; i++) {
@@ -332,6 +332,8 @@ final class SlabsRun {
                 }
             }
             loop();
+            seconds = (System.nanoTime() - started) * 1e-9;
+            out = finalState();
         } finally {
             shutdown = true;
             publish();
@@ -345,8 +347,6 @@ final class SlabsRun {
                 }
             }
         }
-        double seconds = (System.nanoTime() - started) * 1e-9;
-        Discs out = finalState();
         double energyEnd = Observables.kineticEnergy(out);
         VirialAccumulator virial = serialVirial;
         long pair = crossPairCollisions;
@@ -505,6 +505,27 @@ final class SlabsRun {
                 progressMark = windows;
                 progress.simulatedTime(epoch + now);
             }
+        }
+    }
+
+    /**
+     * Runs {@code t} on every domain, each in its own thread (the coordinator takes domain 0), and
+     * waits for all; the next task published is a window again.
+     */
+    private void everyDomain(int t) {
+        task = t;
+        publish();
+        domains[0].runTaskSafely(t);
+        for (int d = 1; d < domainCount; d++) {
+            if (sequential) {
+                domains[d].runTaskSafely(t);
+            } else {
+                domains[d].awaitDone(generation);
+            }
+        }
+        task = TASK_WINDOW;
+        if (failure != null) {
+            throwFailure();
         }
     }
 
@@ -917,11 +938,13 @@ final class SlabsRun {
     // ------------------------------------------------------------------------------------------------
     // Clocks.
 
-    /** Re-anchors time at local {@code now} (serial): every disc advanced, clocks and event times shifted. */
+    /**
+     * Re-anchors time at local {@code now}: every disc advanced, clocks and event times shifted (each
+     * domain its own discs, in parallel), calendars rebuilt.
+     */
     private void resync(double now) {
         if (now > 0) {
             resyncs++;
-            domains[0].pred.rebase(now);
             for (int k = 0; k < xSize; k++) {
                 int i = xHeap[k];
                 xTime[i] = Math.max(0, xTime[i] - now);
@@ -929,31 +952,30 @@ final class SlabsRun {
             epoch += now;
             untilLocal = until - epoch;
         }
-        replan(0);
+        replan(Math.max(now, 0));
     }
 
-    /** Sizes each domain's calendar from the mean event delay (trimmed of outliers) and rebuilds it. */
-    private void replan(double now) {
-        int[] members = new int[n];
+    /**
+     * Every domain moves its clocks so that local {@code shift} becomes 0 (none if 0), then sizes its
+     * calendar from its mean event delay (trimmed of outliers) and rebuilds it; the next resync is
+     * {@link DiscTable#RESYNC_SPANS} of the longest span away.
+     */
+    private void replan(double shift) {
+        taskTime = shift;
+        everyDomain(TASK_REPLAN);
         double spanMax = 0;
         for (Domain d : domains) {
-            int count = 0;
-            for (int i = 0; i < n; i++) {
-                if (colOwner[colOfDisc(i)] == d.id) {
-                    members[count++] = i;
-                }
-            }
-            double mean = table.meanDelay(members, count, now,
-                    untilLocal > 0 && Double.isFinite(untilLocal) ? untilLocal : 1);
-            double span = SPAN_MEANS * mean;
-            d.queue.rebuild(span / d.queue.buckets(), now, members, count);
-            spanMax = Math.max(spanMax, span);
+            spanMax = Math.max(spanMax, d.span);
         }
-        resyncAt = now + RESYNC_SPANS * spanMax;
+        resyncAt = RESYNC_SPANS * spanMax;
     }
 
+    /** Every disc at {@code until}, in original id order (each domain a range of internal ids). */
     private Discs finalState() {
-        return domains[0].pred.finalState(table, untilLocal, until);
+        finalOut = scene.newDiscs();
+        finalOrder = table.mortonOrder(finalOut);
+        everyDomain(TASK_FINAL);
+        return finalOut;
     }
 
     private Discs snapshot() {
@@ -979,6 +1001,9 @@ final class SlabsRun {
         long wallCollisions;
         long crossings;
         long staleEvents;
+        /** This domain's discs at the last {@link #replan} (scratch), and its calendar's span then. */
+        private int[] members = new int[0];
+        double span;
         /** CPU time spent in windows (this domain's thread), and in the last one. */
         long windowCpuNanos;
         long lastWindowCpu;
@@ -1042,10 +1067,11 @@ final class SlabsRun {
                 if (shutdown) {
                     return;
                 }
-                if (initialTask) {
-                    predictOwnSafely();
-                } else {
+                int t = task;
+                if (t == TASK_WINDOW) {
                     runWindowSafely(windowEnd, windowInclusive);
+                } else {
+                    runTaskSafely(t);
                 }
                 done = g;
                 if (coordinatorParked) {
@@ -1066,17 +1092,53 @@ final class SlabsRun {
             windowCpuNanos += lastWindowCpu;
         }
 
-        /** Schedules every mobile disc of this domain's columns (before the first window). */
-        void predictOwnSafely() {
+        /** Runs one of the phases around the windows ({@link #everyDomain}) on this domain. */
+        void runTaskSafely(int t) {
             try {
-                for (int i = 0; i < n; i++) {
-                    if (colOwner[colOfDisc(i)] == id && invMass(i) > 0) {
-                        rec[i * stride + EV] = predictFull(i, 0);
-                    }
+                switch (t) {
+                    case TASK_PREDICT -> predictOwn();
+                    case TASK_REPLAN -> replanOwn(taskTime);
+                    case TASK_FINAL -> pred.finalRange(finalOut, finalOrder, (int) ((long) n * id / domainCount),
+                            (int) ((long) n * (id + 1) / domainCount), untilLocal, until);
+                    default -> throw new IllegalStateException("unknown task " + t);
                 }
-            } catch (Throwable t) {
-                failure = t;
+            } catch (Throwable e) {
+                failure = e;
             }
+        }
+
+        /** Schedules every mobile disc of this domain's columns (before the first window). */
+        private void predictOwn() {
+            for (int i = 0; i < n; i++) {
+                if (colOwner[colOfDisc(i)] == id && invMass(i) > 0) {
+                    rec[i * stride + EV] = predictFull(i, 0);
+                }
+            }
+        }
+
+        /** {@link #replan} for this domain's discs (in id order, as the calendar's ties depend on it). */
+        private void replanOwn(double shift) {
+            int count = 0;
+            for (int i = 0; i < n; i++) {
+                if (colOwner[colOfDisc(i)] == id) {
+                    count++;
+                }
+            }
+            if (members.length < count) {
+                members = new int[count];
+            }
+            int m = 0;
+            for (int i = 0; i < n; i++) {
+                if (colOwner[colOfDisc(i)] == id) {
+                    members[m++] = i;
+                }
+            }
+            if (shift > 0) {
+                pred.rebase(shift, members, count);
+            }
+            double mean = table.meanDelay(members, count, 0, untilLocal > 0 && Double.isFinite(untilLocal) ? untilLocal : 1);
+            span = SPAN_MEANS * mean;
+            queue.rebuild(span / queue.buckets(), 0, members, count);
         }
 
         void awaitDone(int g) {
