@@ -14,7 +14,8 @@ import java.util.TreeMap;
 /**
  * SUMMARY.json: SPEC's keys ({@code engine, exact, particles, until, collisions, kineticEnergy,
  * momentum, wallSeconds}) plus what a benchmark needs to compare runs: the scene, threads, events,
- * throughput, energy drift, causality violations, the pressure of periodic scenes, the engine's
+ * throughput, energy drift, causality violations, the pressure (from the collision virial; see
+ * {@link carom.core.observe.VirialAccumulator} for what it means in a walled box), the engine's
  * counters and the machine it ran on.
  */
 final class SummaryJson {

@@ -75,8 +75,9 @@ class SimulateCommandTest {
         assertThat(s.at("/machine/cores").asInt()).isEqualTo(Runtime.getRuntime().availableProcessors());
         assertThat(s.at("/machine/java").asText()).isEqualTo(System.getProperty("java.version"));
         assertThat(s.at("/machine/os").asText()).isNotBlank();
-        // Walls: no pressure.
-        assertThat(s.has("pressure")).isFalse();
+        // Walls too have a pressure: the one collision's virial J |r| = 2 * 1 over 2 t K = 2 * 10 * 1.
+        assertThat(s.at("/pressure/Z").asDouble()).isCloseTo(1.1, within(1e-12));
+        assertThat(s.at("/pressure/blocks").asInt()).isPositive();
 
         assertThat(filesIn(dir)).containsExactlyInAnyOrder("head-on.json", "final.csv", "summary.json");
     }
@@ -97,7 +98,7 @@ class SimulateCommandTest {
                 .containsPattern("(?m)^wall collisions +2$")
                 .containsPattern("(?m)^energy initial +1\\.0$")
                 .containsPattern("(?m)^causality violations +0$")
-                .doesNotContain("pressure");
+                .containsPattern("(?m)^pressure Z +1\\.10000 ");
         // Every value starts in the same column, after at least two spaces.
         List<String> keyed = r.out().lines().filter(l -> !l.equals("counters")).toList();
         int column = keyed.get(0).indexOf("head-on");

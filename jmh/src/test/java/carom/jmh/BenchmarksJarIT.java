@@ -67,15 +67,16 @@ class BenchmarksJarIT {
     /** GasBench passes its thread count on: the last run's counters show the slabs it got. */
     @Test
     void gasBenchRunsAParallelEngineOnTheThreadsAskedFor() throws Exception {
-        Jmh bench = gasBench("slabs", "400", "0.3", "0.5", "1", "", "2");
+        Jmh bench = gasBench("slabs", "400", "0.3", "0.5", "1", "", "2", "3");
         assertThat(bench.exit).as(bench.output).isZero();
-        assertThat(bench.output).contains("# engine slabs, 2 threads").contains("\nslabs,400,0.3,").contains("domains=2");
+        assertThat(bench.output).contains("# engine slabs, 2 threads").contains("1 timed runs after 3 warm-up runs")
+                .contains("\nslabs,400,0.3,").contains("domains=2");
     }
 
     @Test
     void gasBenchRejectsBadArgumentsWithAnErrorLine() throws Exception {
         for (String[] args : new String[][] {{"fast", "400", "0.3", "1", "1", "", "two"}, {"nosuch", "400", "0.3"},
-                {"fast", "400", "0.3", "1", "0"}}) {
+                {"fast", "400", "0.3", "1", "0"}, {"fast", "400", "0.3", "1", "1", "", "1", "-1"}}) {
             Jmh bench = gasBench(args);
             assertThat(bench.exit).as(bench.output).isEqualTo(2);
             assertThat(bench.output).contains("\nerror: ").doesNotContain("Exception").doesNotContain("\tat ");

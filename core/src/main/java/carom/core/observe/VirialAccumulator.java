@@ -1,9 +1,19 @@
 package carom.core.observe;
 
+import carom.core.scene.BoundaryKind;
+import carom.core.scene.Scene;
+import carom.core.state.Discs;
+
 /**
  * Collects the collision virial sum(J |r|) in equal time blocks and turns it into a pressure with an
  * error bar. For hard discs in two dimensions, PA = N kT + sum(J |r|) / (2 t): the impulse J of each
  * collision times the centre distance at contact, summed over the run, over twice the duration.
+ *
+ * <p>In a periodic box A is the box's area. In a walled box the same sum gives the pressure on the
+ * walls (virial theorem: the walls' virial is -2PA') with A' the area the centres can reach,
+ * (W - 2R)(H - 2R) when the mobile discs share one radius R; with mixed radii the box's area stands
+ * in. Z = PA/(NkT) is the same expression either way. Neither holds under gravity or with fixed discs
+ * (their forces add virial terms the pair sum lacks); Z is then the pair-virial value only.
  *
  * <p>Blocks are by simulated time so that block means are independent enough to give an honest error
  * bar (standard error of the block means). Single writer; no allocation per collision.
@@ -59,12 +69,37 @@ public final class VirialAccumulator {
     }
 
     /**
-     * A run's pressure from its virial (null if it collected none, as in a walled box): over the final
-     * state's mobile discs, at the mean of the start and end kinetic energies.
+     * A run's pressure from its virial (null if it collected none): over the final state's mobile
+     * discs, at the mean of the start and end kinetic energies, on {@link #pressureArea}.
      */
-    public static Pressure pressureOf(VirialAccumulator virial, carom.core.state.Discs finalState,
-                                      double energyStart, double energyEnd, double area) {
+    public static Pressure pressureOf(VirialAccumulator virial, Scene scene, Discs finalState,
+                                      double energyStart, double energyEnd) {
         return virial == null ? null
-                : virial.pressure(Observables.mobileCount(finalState), 0.5 * (energyStart + energyEnd), area);
+                : virial.pressure(Observables.mobileCount(finalState), 0.5 * (energyStart + energyEnd),
+                        pressureArea(scene, finalState));
+    }
+
+    /**
+     * The area A of PA = N kT + ...: the box's in a periodic box; in a walled box the area the centres
+     * of the mobile discs can reach when they share one radius, else the box's (see the class comment).
+     */
+    public static double pressureArea(Scene scene, Discs discs) {
+        double area = scene.box().area();
+        if (scene.box().boundary() != BoundaryKind.WALLS) {
+            return area;
+        }
+        double r = Double.NaN;
+        for (int i = 0; i < discs.n; i++) {
+            if (discs.invMass[i] > 0) {
+                if (Double.isNaN(r)) {
+                    r = discs.radius[i];
+                } else if (discs.radius[i] != r) {
+                    return area;
+                }
+            }
+        }
+        double w = scene.box().width() - 2 * r;
+        double h = scene.box().height() - 2 * r;
+        return Double.isNaN(r) || !(w > 0 && h > 0) ? area : w * h;
     }
 }

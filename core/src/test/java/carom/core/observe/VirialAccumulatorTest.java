@@ -3,6 +3,10 @@ package carom.core.observe;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
+import carom.core.scene.BoundaryKind;
+import carom.core.scene.Scene;
+import carom.core.scene.SceneBuilder;
+import carom.core.scene.Species;
 import carom.core.state.Discs;
 import org.junit.jupiter.api.Test;
 
@@ -62,5 +66,30 @@ class VirialAccumulatorTest {
         assertThat(Observables.kineticEnergy(d)).isCloseTo(0.5 * 2 * 5 + 0.5 * 9, within(1e-15));
         assertThat(Observables.momentum(d)).containsExactly(2 + 3, -4);
         assertThat(Observables.mobileCount(d)).isEqualTo(2);
+    }
+
+    @Test
+    void aWalledBoxCountsTheAreaTheCentresReachWhenTheDiscsShareOneRadius() {
+        Scene walls = scene(BoundaryKind.WALLS, 0.5, 0.5);
+        assertThat(VirialAccumulator.pressureArea(walls, walls.newDiscs())).isEqualTo(9.0 * 4.0);
+        Scene periodic = scene(BoundaryKind.PERIODIC, 0.5, 0.5);
+        assertThat(VirialAccumulator.pressureArea(periodic, periodic.newDiscs())).isEqualTo(10.0 * 5.0);
+        // Mixed radii have no single reachable area: the box's stands in.
+        Scene mixed = scene(BoundaryKind.WALLS, 0.5, 0.25);
+        assertThat(VirialAccumulator.pressureArea(mixed, mixed.newDiscs())).isEqualTo(10.0 * 5.0);
+    }
+
+    @Test
+    void aFixedDiscsRadiusDoesNotChangeTheArea() {
+        Scene pegged = SceneBuilder.create("pegged").box(10, 5, BoundaryKind.WALLS)
+                .species(Species.mobile("ball", 0.5, 1)).species(Species.fixed("peg", 1.5))
+                .disc(0, 2, 2, 1, 0).disc(1, 6, 2, 0, 0).until(1).build();
+        assertThat(VirialAccumulator.pressureArea(pegged, pegged.newDiscs())).isEqualTo(9.0 * 4.0);
+    }
+
+    private static Scene scene(BoundaryKind boundary, double r0, double r1) {
+        return SceneBuilder.create("two").box(10, 5, boundary)
+                .species(Species.mobile("a", r0, 1)).species(Species.mobile("b", r1, 1))
+                .disc(0, 2, 2, 1, 0).disc(1, 6, 2, -1, 0).until(1).build();
     }
 }

@@ -616,9 +616,7 @@ public final class BlockActor {
         double bvy = local.vy[b];
         double virial = contacts.pair(local, restitution, a, b, now, epoch + now, discId[a], discId[b]);
         worker.pairCollisions++;
-        if (worker.virial != null) {
-            worker.virial.add(epoch + now, virial);
-        }
+        worker.virial.add(epoch + now, virial);
         if (local.invMass[a] > 0) {
             changed(a, now, avx, avy);
         }

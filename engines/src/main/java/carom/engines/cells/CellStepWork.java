@@ -215,9 +215,7 @@ public final class CellStepWork {
     private void collidePair(double now, int a, int b, int band, Worker w) {
         double virial = w.contacts.pair(d, restitution, a, b, now, epoch + now, a, b);
         w.pairCollisions++;
-        if (w.virial != null) {
-            w.virial.add(epoch + now, virial);
-        }
+        w.virial.add(epoch + now, virial);
         if (d.invMass[a] > 0) {
             afterVelocityChange(a, now, band, w);
         }

@@ -88,7 +88,7 @@ public final class StepFrame {
     }
 
     public Worker newWorker() {
-        return new Worker(scene, until, boundary.periodic(), flight, boundary);
+        return new Worker(scene, until, flight, boundary);
     }
 
     /** Absolute time of the current step's start; event times inside a step are relative to it. */
@@ -148,7 +148,7 @@ public final class StepFrame {
         long overruns = 0;
         long preempted = 0;
         long predictions = 0;
-        VirialAccumulator virial = boundary.periodic() ? new VirialAccumulator(0, until, PRESSURE_BLOCKS) : null;
+        VirialAccumulator virial = new VirialAccumulator(0, until, PRESSURE_BLOCKS);
         for (Worker w : workers) {
             pairs += w.pairCollisions;
             wallHits += w.wallCollisions;
@@ -157,12 +157,10 @@ public final class StepFrame {
             overruns += w.overruns;
             preempted += w.preempted;
             predictions += w.predictions;
-            if (virial != null) {
-                virial.addAll(w.virial);
-            }
+            virial.addAll(w.virial);
         }
         double energyEnd = Observables.kineticEnergy(d);
-        Pressure pressure = VirialAccumulator.pressureOf(virial, d, energyStart, energyEnd, scene.box().area());
+        Pressure pressure = VirialAccumulator.pressureOf(virial, scene, d, energyStart, energyEnd);
         Map<String, Long> counters = new HashMap<>(extraCounters);
         counters.put("staleEvents", stale);
         counters.put("overruns", overruns);

@@ -20,7 +20,7 @@ public final class Worker {
     public long preempted;
     public long overruns;
     public long predictions;
-    /** Collision virial for the pressure (periodic boxes), else null. */
+    /** Collision virial for the pressure. */
     public final VirialAccumulator virial;
     public final StallGuard stallGuard;
     /** The shared collision physics, reporting to this worker's stall guard. */
@@ -29,8 +29,8 @@ public final class Worker {
     int[] deferred = new int[48];
     int deferredCount;
 
-    Worker(Scene scene, double until, boolean periodic, Flight flight, Boundary boundary) {
-        this.virial = periodic ? new VirialAccumulator(0, until, StepFrame.PRESSURE_BLOCKS) : null;
+    Worker(Scene scene, double until, Flight flight, Boundary boundary) {
+        this.virial = new VirialAccumulator(0, until, StepFrame.PRESSURE_BLOCKS);
         this.stallGuard = new StallGuard(scene);
         this.contacts = new Contacts(flight, boundary, stallGuard);
     }

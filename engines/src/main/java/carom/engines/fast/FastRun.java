@@ -129,7 +129,7 @@ final class FastRun {
         this.periodic = table.periodic;
         this.fullOnCross = table.fullOnCross;
         this.audit = Boolean.parseBoolean(options.tunables().getOrDefault("auditEnergy", "false")) ? EnergyAudit.forScene(scene) : null;
-        this.virial = periodic ? new VirialAccumulator(0, until, PRESSURE_BLOCKS) : null;
+        this.virial = new VirialAccumulator(0, until, PRESSURE_BLOCKS);
         this.progress = options.progress();
         this.stallGuard = new StallGuard(scene, table::sceneId);
         this.energyStart = Observables.kineticEnergy(src);
@@ -151,7 +151,7 @@ final class FastRun {
         double seconds = (System.nanoTime() - started) * 1e-9;
         Discs out = finalState();
         double energyEnd = Observables.kineticEnergy(out);
-        Pressure pressure = VirialAccumulator.pressureOf(virial, out, energyStart, energyEnd, scene.box().area());
+        Pressure pressure = VirialAccumulator.pressureOf(virial, scene, out, energyStart, energyEnd);
         Map<String, Long> counters = new HashMap<>();
         counters.put("events", events);
         counters.put("cellCrossings", crossings);
@@ -233,9 +233,7 @@ final class FastRun {
         double abs = epoch + now;
         double w = p.collidePair(a, b, now, abs, stallGuard);
         pairCollisions++;
-        if (virial != null) {
-            virial.add(abs, w);
-        }
+        virial.add(abs, w);
         if (audit != null) {
             audit.check(p.snapshot(), flight, now, abs);
         }

@@ -97,7 +97,7 @@ final class SerialRun {
         this.startX = new double[n];
         this.startY = new double[n];
         this.progress = options.progress();
-        this.virial = boundary.periodic() ? new VirialAccumulator(0, until, PRESSURE_BLOCKS) : null;
+        this.virial = new VirialAccumulator(0, until, PRESSURE_BLOCKS);
         this.stallGuard = new StallGuard(scene);
         this.contacts = new Contacts(flight, boundary, stallGuard);
     }
@@ -118,7 +118,7 @@ final class SerialRun {
         }
         double seconds = (System.nanoTime() - started) * 1e-9;
         double energyEnd = Observables.kineticEnergy(d);
-        Pressure pressure = VirialAccumulator.pressureOf(virial, d, energyStart, energyEnd, scene.box().area());
+        Pressure pressure = VirialAccumulator.pressureOf(virial, scene, d, energyStart, energyEnd);
         return new RunResult("serial", true, d, until, pairCollisions, wallCollisions, pairCollisions + wallCollisions,
                 energyStart, energyEnd, momentumStart, Observables.momentum(d), pressure, 0, seconds,
                 Map.of("steps", steps, "predictions", predictions, "earlyStepEnds", earlyStepEnds));
@@ -198,9 +198,7 @@ final class SerialRun {
         if (bMobile) {
             restitution.collided(b, epoch + now);
         }
-        if (virial != null) {
-            virial.add(epoch + now, w);
-        }
+        virial.add(epoch + now, w);
         // A fixed partner's trajectory did not change: its other potentials stay valid.
         if (aMobile) {
             queue.removeAllOf(a);

@@ -247,7 +247,7 @@ final class SlabsRun {
         this.periodic = table.periodic;
         this.restitution = table.restitution;
         this.audit = Boolean.parseBoolean(options.tunables().getOrDefault("auditEnergy", "false")) ? EnergyAudit.forScene(scene) : null;
-        this.serialVirial = periodic ? new VirialAccumulator(0, until, PRESSURE_BLOCKS) : null;
+        this.serialVirial = new VirialAccumulator(0, until, PRESSURE_BLOCKS);
         this.progress = options.progress();
         this.serialStall = new StallGuard(scene, table::sceneId);
         this.energyStart = Observables.kineticEnergy(src);
@@ -356,9 +356,7 @@ final class SlabsRun {
         long stale = 0;
         long predictions = 0;
         for (Domain d : domains) {
-            if (virial != null) {
-                virial.addAll(d.virial);
-            }
+            virial.addAll(d.virial);
             pair += d.pairCollisions;
             wall += d.wallCollisions;
             events += d.events;
@@ -366,7 +364,7 @@ final class SlabsRun {
             stale += d.staleEvents;
             predictions += d.pred.predictions;
         }
-        Pressure pressure = VirialAccumulator.pressureOf(virial, out, energyStart, energyEnd, scene.box().area());
+        Pressure pressure = VirialAccumulator.pressureOf(virial, scene, out, energyStart, energyEnd);
         Map<String, Long> counters = new HashMap<>();
         counters.put("domains", (long) domainCount);
         counters.put("events", events);
@@ -593,9 +591,7 @@ final class SlabsRun {
         double w = da.pred.collidePair(a, b, now, abs, serialStall);
         crossPairCollisions++;
         boolean bMobile = invMass(b) > 0;
-        if (serialVirial != null) {
-            serialVirial.add(abs, w);
-        }
+        serialVirial.add(abs, w);
         da.queue.insert(a, da.predictFull(a, now));
         if (bMobile) {
             db.queue.insert(b, db.predictFull(b, now));
@@ -995,7 +991,7 @@ final class SlabsRun {
         /** This domain's predictions: its own scratch, only its own columns. */
         final CellPredictor pred;
         final StallGuard stallGuard = new StallGuard(scene, table::sceneId);
-        final VirialAccumulator virial = periodic ? new VirialAccumulator(0, until, PRESSURE_BLOCKS) : null;
+        final VirialAccumulator virial = new VirialAccumulator(0, until, PRESSURE_BLOCKS);
         long events;
         long pairCollisions;
         long wallCollisions;
@@ -1360,7 +1356,7 @@ final class SlabsRun {
                 }
             }
             for (int q = k; q < logEvents; q++) {
-                if (evVirial[q] != 0 && virial != null) {
+                if (evVirial[q] != 0) {
                     virial.add(epoch + evTime[q], -evVirial[q]);
                 }
             }
@@ -1388,11 +1384,9 @@ final class SlabsRun {
             }
             double w = pred.collidePair(a, b, now, abs, stallGuard);
             pairCollisions++;
-            if (virial != null) {
-                virial.add(abs, w);
-                if (logging) {
-                    evVirial[logEvents - 1] = w;
-                }
+            virial.add(abs, w);
+            if (logging) {
+                evVirial[logEvents - 1] = w;
             }
             if (audit != null && !logging) {
                 audit.check(snapshot(), flight, now, abs);

@@ -39,7 +39,7 @@ import java.util.Map;
  * potential energy the clamps and pushes add. The collision time for restitution (TC model) is the
  * step's end. There is no stall to guard against: the run is ceil(until / dt) steps of O(N) work.
  *
- * <p>Pressure (periodic boxes): the impulse virial J |r| of each collision as {@link PairLaw#collide}
+ * <p>Pressure: the impulse virial J |r| of each collision as {@link PairLaw#collide}
  * returns it, at the overlapped separation. The pushes also do virial work (mu * depth * the pair's
  * separating normal speed) that this leaves out: measured on N 1024, phi 0.5, it would add 0.4% to Z at
  * dt 0.01 and less at smaller dt, against a 3.3% deficit of Z there (with 2.6% fewer collisions than the
@@ -84,7 +84,7 @@ final class SteppedRun {
         // Cells at least the largest diameter wide: two overlapping discs are less than that apart.
         this.grid = CellGrid.covering(scene.box().width(), scene.box().height(), 2 * d.maxRadius(),
                 boundary.periodic(), 4L * n + 16);
-        this.virial = boundary.periodic() ? new VirialAccumulator(0, until, PRESSURE_BLOCKS) : null;
+        this.virial = new VirialAccumulator(0, until, PRESSURE_BLOCKS);
         this.progress = options.progress();
     }
 
@@ -107,7 +107,7 @@ final class SteppedRun {
         }
         double seconds = (System.nanoTime() - started) * 1e-9;
         double energyEnd = Observables.kineticEnergy(d);
-        Pressure pressure = VirialAccumulator.pressureOf(virial, d, energyStart, energyEnd, scene.box().area());
+        Pressure pressure = VirialAccumulator.pressureOf(virial, scene, d, energyStart, energyEnd);
         return new RunResult("stepped", false, d, until, pairCollisions, wallCollisions, pairCollisions + wallCollisions,
                 energyStart, energyEnd, momentumStart, Observables.momentum(d), pressure, 0, seconds,
                 Map.of("steps", steps, SteppedEngine.ESCAPES, escapes,
@@ -194,9 +194,7 @@ final class SteppedRun {
             if (invJ > 0) {
                 restitution.collided(j, time);
             }
-            if (virial != null) {
-                virial.add(time, coincident ? 0 : w); // J |r| with |r| = 0
-            }
+            virial.add(time, coincident ? 0 : w); // J |r| with |r| = 0
         }
         // Along the unit normal (dx, dy) / dist, i moves back by depth * invI / invSum and j on by
         // depth * invJ / invSum: the pair touches again, its centre of mass stays where it was.

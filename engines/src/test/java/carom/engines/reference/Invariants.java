@@ -56,6 +56,10 @@ public final class Invariants {
         assertThat(actual.pairCollisions()).as("%s: pair collisions", name).isEqualTo(expected.pairCollisions());
         assertThat(actual.wallCollisions()).as("%s: wall collisions", name).isEqualTo(expected.wallCollisions());
         assertSameState(name, actual.finalState(), expected.finalState(), tolerance);
+        // The same collisions give the same virial (summed in another order: rounding only), walls or not.
+        assertThat(actual.pressure()).as("%s: pressure", name).isNotNull();
+        assertThat(actual.pressure().compressibility()).as("%s: Z", name)
+                .isCloseTo(expected.pressure().compressibility(), within(tolerance * expected.pressure().compressibility()));
     }
 
     /** Checks every invariant of an elastic run; returns the result for chaining. */
