@@ -88,14 +88,21 @@ final class ParetoPlot {
         return Math.max(FLOOR, r.deviationRms());
     }
 
-    /** The rows no other row beats in both time and error, fastest first. */
+    /**
+     * Errors closer than this (relative) are one error: the exact engines all land on the serial
+     * trajectory and differ only in the last digits of its rounding, so a slower one must not join the
+     * front for being 1e-16 "more accurate".
+     */
+    static final double SAME_ERROR = 1e-3;
+
+    /** The rows no other row beats in both time and error (beyond {@link #SAME_ERROR}), fastest first. */
     static List<Row> front(List<Row> rows) {
         List<Row> sorted = new ArrayList<>(rows);
         sorted.sort(Comparator.comparingDouble((Row r) -> r.measured().meanSeconds()).thenComparingDouble(ParetoPlot::error));
         List<Row> front = new ArrayList<>();
         double best = Double.POSITIVE_INFINITY;
         for (Row r : sorted) {
-            if (error(r) < best) {
+            if (error(r) < best * (1 - SAME_ERROR)) {
                 front.add(r);
                 best = error(r);
             }
