@@ -69,14 +69,13 @@ public final class VirialAccumulator {
     }
 
     /**
-     * A run's pressure from its virial (null if it collected none): over the final state's mobile
-     * discs, at the mean of the start and end kinetic energies, on {@link #pressureArea}.
+     * A run's pressure from its virial: over the final state's mobile discs, at the mean of the start
+     * and end kinetic energies, on {@link #pressureArea} (null as {@link #pressure} says).
      */
     public static Pressure pressureOf(VirialAccumulator virial, Scene scene, Discs finalState,
                                       double energyStart, double energyEnd) {
-        return virial == null ? null
-                : virial.pressure(Observables.mobileCount(finalState), 0.5 * (energyStart + energyEnd),
-                        pressureArea(scene, finalState));
+        return virial.pressure(Observables.mobileCount(finalState), 0.5 * (energyStart + energyEnd),
+                pressureArea(scene, finalState));
     }
 
     /**

@@ -429,15 +429,7 @@ final class SlabsRun {
             }
             windowEnd = end;
             windowInclusive = last;
-            publish();
-            domains[0].runWindowSafely(end, last);
-            for (int d = 1; d < domainCount; d++) {
-                if (sequential) {
-                    domains[d].runWindowSafely(end, last);
-                } else {
-                    domains[d].awaitDone(generation);
-                }
-            }
+            everyDomain(TASK_WINDOW);
             long t1 = System.nanoTime();
             long c1 = CPU.getCurrentThreadCpuTime();
             windowNanos += t1 - t0;
@@ -446,9 +438,6 @@ final class SlabsRun {
                 slowest = Math.max(slowest, d.lastWindowCpu);
             }
             criticalCpuNanos += slowest;
-            if (failure != null) {
-                throwFailure();
-            }
             // Verify: the earliest contact with a changed edge disc, or the earliest stop.
             double reached = end;
             Domain stopper = null;
@@ -507,8 +496,8 @@ final class SlabsRun {
     }
 
     /**
-     * Runs {@code t} on every domain, each in its own thread (the coordinator takes domain 0), and
-     * waits for all; the next task published is a window again.
+     * Runs {@code t} (a window, or a phase around the windows) on every domain, each in its own thread
+     * (the coordinator takes domain 0), and waits for all; rethrows a domain's failure.
      */
     private void everyDomain(int t) {
         task = t;
@@ -521,7 +510,6 @@ final class SlabsRun {
                 domains[d].awaitDone(generation);
             }
         }
-        task = TASK_WINDOW;
         if (failure != null) {
             throwFailure();
         }
@@ -948,7 +936,7 @@ final class SlabsRun {
             epoch += now;
             untilLocal = until - epoch;
         }
-        replan(Math.max(now, 0));
+        replan(now);
     }
 
     /**
@@ -1063,12 +1051,7 @@ final class SlabsRun {
                 if (shutdown) {
                     return;
                 }
-                int t = task;
-                if (t == TASK_WINDOW) {
-                    runWindowSafely(windowEnd, windowInclusive);
-                } else {
-                    runTaskSafely(t);
-                }
+                runTaskSafely(task);
                 done = g;
                 if (coordinatorParked) {
                     LockSupport.unpark(coordinator);
@@ -1088,8 +1071,12 @@ final class SlabsRun {
             windowCpuNanos += lastWindowCpu;
         }
 
-        /** Runs one of the phases around the windows ({@link #everyDomain}) on this domain. */
+        /** Runs the published task ({@link #everyDomain}) on this domain. */
         void runTaskSafely(int t) {
+            if (t == TASK_WINDOW) {
+                runWindowSafely(windowEnd, windowInclusive);
+                return;
+            }
             try {
                 switch (t) {
                     case TASK_PREDICT -> predictOwn();
