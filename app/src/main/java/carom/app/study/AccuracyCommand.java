@@ -265,7 +265,8 @@ final class AccuracyCommand implements Callable<Integer> {
                 - machine at end: %s
                 - Z: reduced pressure PA/(NkT) from the collision virial, with its block-average error bar; Z_exact and σ:
                   the serial engine's. In the walled box A is the area the centres can reach (the virial theorem's
-                  wall pressure); under gravity Z is the pair virial's value only. dyn4j reports no pressure.
+                  wall pressure); under gravity Z is the pair virial's value only. dyn4j's Z is its solver's pair impulses
+                  times the separations (its position correction moves discs without momentum and is not seen).
                   Energy drift: relative change of kinetic plus potential energy. Deepest overlap: fraction of the contact
                   distance (Ri + Rj, or R at a wall), the deeper of the final state's and what the engine saw during the run.
                   Escapes: discs outside the walled box (as the engine counted them during the run where it does).

@@ -19,7 +19,7 @@ import java.util.Properties;
  * @param seconds           wall seconds of each timed run
  * @param collisions        collisions of the first timed run
  * @param energyDrift       relative change of kinetic plus potential energy
- * @param z                 reduced pressure, NaN without one (an engine that reports none: the dyn4j peer)
+ * @param z                 reduced pressure, NaN without one (an engine that reports none)
  * @param zError            its block-average error bar
  * @param violationsPerMillion causality violations per 10^6 collisions
  * @param finalOverlap      deepest overlap in the final state, fraction of the contact distance

@@ -19,6 +19,9 @@ import carom.core.state.Discs;
  * bar (standard error of the block means). Single writer; no allocation per collision.
  */
 public final class VirialAccumulator {
+    /** Blocks of a whole run: enough block means for an error bar, each long enough to be independent. */
+    public static final int RUN_BLOCKS = 20;
+
     private final double start;
     private final double blockLength;
     private final double[] sums;
@@ -27,6 +30,11 @@ public final class VirialAccumulator {
         this.start = start;
         this.blockLength = (end - start) / blocks;
         this.sums = new double[blocks];
+    }
+
+    /** The accumulator every engine uses: the run [0, until] in {@link #RUN_BLOCKS} blocks. */
+    public static VirialAccumulator forRun(double until) {
+        return new VirialAccumulator(0, until, RUN_BLOCKS);
     }
 
     public void add(double time, double virial) {

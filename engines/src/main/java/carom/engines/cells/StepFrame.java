@@ -28,7 +28,6 @@ import java.util.Map;
  * decide who may touch which disc.
  */
 public final class StepFrame {
-    static final int PRESSURE_BLOCKS = 20;
     /** Step length assumes discs reach at most this multiple of the step's initial top speed. */
     public static final double SPEED_MARGIN = 2;
 
@@ -148,7 +147,7 @@ public final class StepFrame {
         long overruns = 0;
         long preempted = 0;
         long predictions = 0;
-        VirialAccumulator virial = new VirialAccumulator(0, until, PRESSURE_BLOCKS);
+        VirialAccumulator virial = VirialAccumulator.forRun(until);
         for (Worker w : workers) {
             pairs += w.pairCollisions;
             wallHits += w.wallCollisions;

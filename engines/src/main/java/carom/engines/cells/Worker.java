@@ -30,7 +30,7 @@ public final class Worker {
     int deferredCount;
 
     Worker(Scene scene, double until, Flight flight, Boundary boundary) {
-        this.virial = new VirialAccumulator(0, until, StepFrame.PRESSURE_BLOCKS);
+        this.virial = VirialAccumulator.forRun(until);
         this.stallGuard = new StallGuard(scene);
         this.contacts = new Contacts(flight, boundary, stallGuard);
     }

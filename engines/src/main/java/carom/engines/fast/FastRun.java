@@ -80,7 +80,6 @@ import java.util.Map;
  * {@code slabs}). This class is the event loop, collisions, observables and clocks.
  */
 final class FastRun {
-    private static final int PRESSURE_BLOCKS = 20;
 
     private final Scene scene;
     private final int n;
@@ -129,7 +128,7 @@ final class FastRun {
         this.periodic = table.periodic;
         this.fullOnCross = table.fullOnCross;
         this.audit = Boolean.parseBoolean(options.tunables().getOrDefault("auditEnergy", "false")) ? EnergyAudit.forScene(scene) : null;
-        this.virial = new VirialAccumulator(0, until, PRESSURE_BLOCKS);
+        this.virial = VirialAccumulator.forRun(until);
         this.progress = options.progress();
         this.stallGuard = new StallGuard(scene, table::sceneId);
         this.energyStart = Observables.kineticEnergy(src);

@@ -44,7 +44,6 @@ import java.util.Map;
  * </ul>
  */
 final class SerialRun {
-    private static final int PRESSURE_BLOCKS = 20;
 
     private final Scene scene;
     private final Discs d;
@@ -97,7 +96,7 @@ final class SerialRun {
         this.startX = new double[n];
         this.startY = new double[n];
         this.progress = options.progress();
-        this.virial = new VirialAccumulator(0, until, PRESSURE_BLOCKS);
+        this.virial = VirialAccumulator.forRun(until);
         this.stallGuard = new StallGuard(scene);
         this.contacts = new Contacts(flight, boundary, stallGuard);
     }

@@ -96,7 +96,6 @@ import java.util.concurrent.locks.LockSupport;
  * {@code slabK.windowCpuNanos} per slab K (with several), and {@code fast}'s counters.
  */
 final class SlabsRun {
-    private static final int PRESSURE_BLOCKS = 20;
     /** Cross-heap partner code: the disc's next event is its migration into a foreign column. */
     private static final int MIGRATE = Integer.MIN_VALUE + 1;
     /**
@@ -247,7 +246,7 @@ final class SlabsRun {
         this.periodic = table.periodic;
         this.restitution = table.restitution;
         this.audit = Boolean.parseBoolean(options.tunables().getOrDefault("auditEnergy", "false")) ? EnergyAudit.forScene(scene) : null;
-        this.serialVirial = new VirialAccumulator(0, until, PRESSURE_BLOCKS);
+        this.serialVirial = VirialAccumulator.forRun(until);
         this.progress = options.progress();
         this.serialStall = new StallGuard(scene, table::sceneId);
         this.energyStart = Observables.kineticEnergy(src);
@@ -979,7 +978,7 @@ final class SlabsRun {
         /** This domain's predictions: its own scratch, only its own columns. */
         final CellPredictor pred;
         final StallGuard stallGuard = new StallGuard(scene, table::sceneId);
-        final VirialAccumulator virial = new VirialAccumulator(0, until, PRESSURE_BLOCKS);
+        final VirialAccumulator virial = VirialAccumulator.forRun(until);
         long events;
         long pairCollisions;
         long wallCollisions;

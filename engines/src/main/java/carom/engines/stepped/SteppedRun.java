@@ -48,7 +48,6 @@ import java.util.Map;
  * <p>Hot loop: primitive arrays of {@link Discs} and {@link CellLists}; no allocation per step.
  */
 final class SteppedRun {
-    private static final int PRESSURE_BLOCKS = 20;
 
     private final Scene scene;
     private final Discs d;
@@ -84,7 +83,7 @@ final class SteppedRun {
         // Cells at least the largest diameter wide: two overlapping discs are less than that apart.
         this.grid = CellGrid.covering(scene.box().width(), scene.box().height(), 2 * d.maxRadius(),
                 boundary.periodic(), 4L * n + 16);
-        this.virial = new VirialAccumulator(0, until, PRESSURE_BLOCKS);
+        this.virial = VirialAccumulator.forRun(until);
         this.progress = options.progress();
     }
 

@@ -34,7 +34,9 @@ import java.util.Set;
  * disc's centre found outside the box at a step's end, counted once per exit: nothing brings it back),
  * {@code deepestOverlapPpb} (dyn4j's own contact depth before solving, in parts per billion of the
  * contact distance: Ri + Rj for pairs, R for walls). Collisions are contact points that received a
- * positive normal impulse in a step. Single thread.
+ * positive normal impulse in a step. Pressure: each pair contact's normal impulse times the centres'
+ * separation, into the same virial as carom's engines (in the walled box, the pressure on the walls).
+ * Single thread.
  */
 public final class Dyn4jPeer implements Engine {
     @Override

@@ -4,6 +4,8 @@ import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.observe.Observables;
+import carom.core.observe.Pressure;
+import carom.core.observe.VirialAccumulator;
 import carom.core.physics.Boundary;
 import carom.core.physics.Physics;
 import carom.core.physics.Restitution;
@@ -47,6 +49,7 @@ final class Dyn4jRun {
     private final Tagged[] bodies;
     /** Whether each disc was outside the box at the last step's end. */
     private final boolean[] outside;
+    private final VirialAccumulator virial;
 
     /** Absolute time of the step being solved, for the restitution law. */
     private double stepEnd;
@@ -65,6 +68,7 @@ final class Dyn4jRun {
         this.progress = options.progress();
         this.bodies = new Tagged[n];
         this.outside = new boolean[n];
+        this.virial = VirialAccumulator.forRun(until);
         build();
     }
 
@@ -130,8 +134,10 @@ final class Dyn4jRun {
         }
         readBack();
         double seconds = (System.nanoTime() - started) * 1e-9;
+        double energyEnd = Observables.kineticEnergy(d);
+        Pressure pressure = VirialAccumulator.pressureOf(virial, scene, d, energyStart, energyEnd);
         return new RunResult("dyn4j", false, d, until, pairCollisions, wallCollisions, pairCollisions + wallCollisions,
-                energyStart, Observables.kineticEnergy(d), momentumStart, Observables.momentum(d), null, 0, seconds,
+                energyStart, energyEnd, momentumStart, Observables.momentum(d), pressure, 0, seconds,
                 Map.of("steps", steps, SteppedEngine.ESCAPES, escapes,
                         SteppedEngine.DEEPEST_OVERLAP_PPB, SteppedEngine.overlapPpb(deepestOverlap)));
     }
@@ -165,7 +171,10 @@ final class Dyn4jRun {
     /**
      * Before the solver: each contact gets the scene's restitution (dyn4j would mix the two fixtures'
      * values, which cannot tell a wall's from a disc's, nor apply the TC model), and its depth is the
-     * overlap seen. After it: a contact that took a positive normal impulse is a collision.
+     * overlap seen. After it: a contact that took a positive normal impulse is a collision, and a pair's
+     * impulse J adds J |r| to the virial (r the centres' separation as the solver saw it, at the step's
+     * start). dyn4j's position correction moves discs apart without momentum, so the virial does not see
+     * it, as the pressure on a real wall would not.
      */
     private final class Listener extends ContactListenerAdapter<Tagged> {
         @Override
@@ -199,6 +208,9 @@ final class Dyn4jRun {
             int b = data.getBody2().id;
             if (a >= 0 && b >= 0) {
                 pairCollisions++;
+                double dx = bodies[a].getTransform().getTranslationX() - bodies[b].getTransform().getTranslationX();
+                double dy = bodies[a].getTransform().getTranslationY() - bodies[b].getTransform().getTranslationY();
+                virial.add(stepEnd, contact.getNormalImpulse() * Math.sqrt(dx * dx + dy * dy));
             } else {
                 wallCollisions++;
             }

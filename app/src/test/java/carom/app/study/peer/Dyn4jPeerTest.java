@@ -26,7 +26,8 @@ import org.junit.jupiter.params.provider.ValueSource;
 /**
  * The dyn4j peer is set up as a hard-disc gas: elastic head-on collisions swap velocities, masses follow
  * the species (density chosen per disc), wall restitution is the scene's, energy holds roughly on a
- * small gas (dyn4j's default restitution velocity of 1 would make most collisions there inelastic), no
+ * small gas (dyn4j's default restitution velocity of 1 would make most collisions there inelastic), its
+ * solver's impulses give the walled box's pressure as the exact engine's, no
  * disc leaves a walled box under gravity, and periodic boxes are refused.
  */
 class Dyn4jPeerTest {
@@ -57,6 +58,8 @@ class Dyn4jPeerTest {
         assertThat(r.pairCollisions()).isEqualTo(1);
         assertThat(r.wallCollisions()).isZero();
         assertThat(SteppedEngine.deepestOverlap(r)).isPositive().isLessThanOrEqualTo(2 * dt);
+        // One impulse J = 2 at a separation within 2 dt of 1, over t = 4 with K = 1: Z = 1 + 2 |r| / 8.
+        assertThat(r.pressure().compressibility()).isCloseTo(1.25, within(0.25 * 2 * dt));
     }
 
     @Test
@@ -94,6 +97,19 @@ class Dyn4jPeerTest {
         RunResult r = run(scene, 0.002);
         assertThat(r.pairCollisions()).isGreaterThan(300);
         assertThat(Math.abs(r.energyDrift())).isLessThan(0.02);
+    }
+
+    @Test
+    void readsTheWallPressureOfAGasAsTheExactEngineDoes() {
+        // Same start, so the two runs differ by chaos and dyn4j's errors only; at small dt its virial
+        // (solver impulses times separations) must find the exact engine's Z within their error bars.
+        Scene scene = StandardScenes.gas(400, 0.3, false, 8, 5);
+        RunResult exact = EngineCatalog.byName("serial").run(scene, RunOptions.until(scene.until()));
+        RunResult peer = run(scene, 0.002);
+        double sigma = Math.hypot(exact.pressure().compressibilityError(), peer.pressure().compressibilityError());
+        assertThat(peer.pressure().compressibility())
+                .isCloseTo(exact.pressure().compressibility(), within(3 * sigma + 0.01));
+        assertThat(sigma).isLessThan(0.1);
     }
 
     @Test
