@@ -59,7 +59,8 @@ public final class CalendarQueue {
     private int idle;
 
     /**
-     * A queue of n discs, none queued: sets every disc's time to +Infinity.
+     * A queue of n discs, none queued: every disc's time must be +Infinity already (the owner's records
+     * start so; several queues may share them, so none writes them here).
      *
      * @param buckets a power of two
      */
@@ -77,9 +78,6 @@ public final class CalendarQueue {
         this.head = new int[buckets];
         this.buckets = buckets;
         this.mask = buckets - 1;
-        for (int i = 0; i < n; i++) {
-            keys[i * keyStride + keyAt] = INF;
-        }
         Arrays.fill(head, NIL);
     }
 

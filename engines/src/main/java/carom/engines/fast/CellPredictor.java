@@ -256,13 +256,13 @@ public final class CellPredictor {
      */
     public Discs finalState(DiscTable table, double local, double until) {
         Discs out = table.scene.newDiscs();
-        finalRange(out, table.mortonOrder(out), 0, table.n, local, until);
+        finalRange(out, table.sceneIds(), 0, table.n, local, until);
         return out;
     }
 
     /**
      * {@link #finalState} for internal discs {@code from..to-1} only, into {@code out} at
-     * {@code order[k]} (the Morton order of {@code out}): threads may fill disjoint ranges at once.
+     * {@code order[k]} (the disc's scene id): threads may fill disjoint ranges at once.
      */
     public void finalRange(Discs out, int[] order, int from, int to, double local, double until) {
         for (int k = from; k < to; k++) {

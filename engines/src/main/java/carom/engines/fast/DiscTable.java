@@ -60,8 +60,6 @@ public final class DiscTable {
 
     public final Scene scene;
     public final int n;
-    /** The scene's initial discs (in scene order). */
-    public final Discs initial;
     public final Flight flight;
     public final Boundary boundary;
     /** The walls, or null in a periodic box. */
@@ -105,18 +103,19 @@ public final class DiscTable {
     /** Row-major offsets of an interior cell's 3x3 neighbourhood, and of the line ahead per crossing kind. */
     final int[] around;
     final int[][] ahead;
-    /** Scene id of each internal disc, built only for an error message ({@link #sceneId}). */
-    private int[] sceneIds;
+    /**
+     * Scene id of each internal disc (the Morton order): where the final state goes, and which disc an
+     * error message names. Kept (4 bytes a disc) rather than sorted again at the end.
+     */
+    private final int[] sceneIds;
 
     /**
      * Lays out the scene's discs: cells at least {@code cellFactor} times the largest diameter (a
      * hair more), at most about 4 per disc; discs renumbered along the Morton curve of their cells;
-     * every PARTNER {@link #NONE}, no event scheduled.
+     * every PARTNER {@link #NONE}, no event scheduled (every EV +Infinity).
      */
-    public DiscTable(Scene scene, double cellFactor) {
+    public DiscTable(Scene scene, Discs src, double cellFactor) {
         this.scene = scene;
-        Discs src = scene.newDiscs();
-        this.initial = src;
         this.n = src.n;
         Physics physics = Physics.of(scene);
         this.flight = physics.flight;
@@ -170,6 +169,7 @@ public final class DiscTable {
         this.sharedInvMass = shared && n > 0 ? src.invMass[0] : Double.NaN;
         this.rec = new double[Math.multiplyExact(n, stride)];
         int[] order = mortonOrder(src);
+        this.sceneIds = order;
         for (int k = 0; k < n; k++) {
             int o = order[k];
             int at = k * stride;
@@ -177,6 +177,7 @@ public final class DiscTable {
             rec[at + Y] = src.y[o];
             rec[at + VX] = src.vx[o];
             rec[at + VY] = src.vy[o];
+            rec[at + EV] = INF; // not queued: what every CalendarQueue on the table starts from
             if (!shared) {
                 rec[at + R] = src.radius[o];
                 rec[at + IM] = src.invMass[o];
@@ -225,11 +226,11 @@ public final class DiscTable {
 
     /** Heap held by the per-disc and per-cell arrays, in bytes. */
     public long bytes() {
-        return 8L * rec.length + 4L * ir.length + 4L * cellHead.length;
+        return 8L * rec.length + 4L * ir.length + 4L * cellHead.length + 4L * sceneIds.length;
     }
 
     /** Disc ids sorted by the Morton code of their cell (LSD radix sort, two 16-bit passes). */
-    public int[] mortonOrder(Discs src) {
+    private int[] mortonOrder(Discs src) {
         int shiftC = Math.max(0, 32 - Integer.numberOfLeadingZeros(cols - 1) - 16);
         int shiftR = Math.max(0, 32 - Integer.numberOfLeadingZeros(rows - 1) - 16);
         int[] key = new int[n];
@@ -276,12 +277,14 @@ public final class DiscTable {
         return (v | (v << 1)) & 0x55555555;
     }
 
-    /** The scene's id of internal disc k: the Morton order again, from the scene's initial state. */
+    /** The scene's id of internal disc k. */
     public int sceneId(int k) {
-        if (sceneIds == null) {
-            sceneIds = mortonOrder(scene.newDiscs());
-        }
         return sceneIds[k];
+    }
+
+    /** Every internal disc's scene id, indexed by internal id (read only). */
+    public int[] sceneIds() {
+        return sceneIds;
     }
 
     /**

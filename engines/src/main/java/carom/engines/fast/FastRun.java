@@ -67,8 +67,8 @@ import java.util.Map;
  *
  * <h2>Layout</h2>
  * Discs are renumbered along a Morton curve of their initial cells (neighbours close in memory). The
- * permutation is not kept: it is recomputed from the scene for the final state (copied back in
- * original id order) and for error messages. Each disc is one record of doubles (x, y, vx, vy, clock,
+ * permutation (4 bytes a disc) puts the final state back in scene order and names discs in error
+ * messages; the scene's initial discs are not kept. Each disc is one record of doubles (x, y, vx, vy, clock,
  * event time, and radius and inverse mass unless all discs share them) and one record of ints (cell
  * and event kind, partner, counters, cell and queue links), so an event or a candidate costs a cache
  * line or two, not one per quantity: at large N the run is bound by memory latency. Core physics that
@@ -117,8 +117,9 @@ final class FastRun {
     FastRun(Scene scene, RunOptions options) {
         this.scene = scene;
         this.until = options.until();
-        this.table = new DiscTable(scene, options.tunable("cellFactor", 1.0));
-        Discs src = table.initial;
+        // The initial discs are needed only here: the run holds its records, not a second copy.
+        Discs src = scene.newDiscs();
+        this.table = new DiscTable(scene, src, options.tunable("cellFactor", 1.0));
         this.n = table.n;
         this.p = new CellPredictor(table);
         this.rec = table.rec;

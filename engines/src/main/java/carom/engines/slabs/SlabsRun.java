@@ -87,7 +87,9 @@ import java.util.concurrent.locks.LockSupport;
  * <p>Counters: {@code domains}, {@code windows}, {@code commits} (windows without violation),
  * {@code rollbacks}, {@code undoneEvents}, {@code crossDomainEvents} (contacts processed serially),
  * {@code migrations}, {@code crossPredictions}, {@code serialNanos} and {@code windowNanos} (wall time
- * in serial phases and in windows, on the coordinating thread), {@code serialCpuNanos} and
+ * in serial phases and in windows, on the coordinating thread), {@code setupNanos}, {@code startNanos}
+ * and {@code finalNanos} (wall time building the table and domains, making the first predictions, and
+ * filling the final state), {@code serialCpuNanos} and
  * {@code windowCpuNanos} (CPU time of the serial phases, and of all domains in windows),
  * {@code criticalCpuNanos} (the sum over windows of the slowest domain's CPU time: with
  * {@code serialCpuNanos}, what the run would take on dedicated cores, barrier latency aside; on a
@@ -173,6 +175,10 @@ final class SlabsRun {
     private long crossPairCollisions;
     private long serialNanos;
     private long windowNanos;
+    /** Wall time of the constructor (table and domains), of the first predictions, of the final state. */
+    private final long setupNanos;
+    private long startNanos;
+    private long finalNanos;
     /** CPU time of the coordinator in serial phases (robust to a loaded machine, unlike wall time). */
     private long serialCpuNanos;
     /** Sum over windows of the slowest domain's CPU time: the windows' wall time on dedicated cores. */
@@ -196,9 +202,8 @@ final class SlabsRun {
     private static final int TASK_PREDICT = 1;
     private static final int TASK_REPLAN = 2;
     private static final int TASK_FINAL = 3;
-    /** The final state being filled ({@link #TASK_FINAL}, each domain a range) and its Morton order. */
+    /** The final state being filled ({@link #TASK_FINAL}, each domain a range). */
     private Discs finalOut;
-    private int[] finalOrder;
     private volatile boolean shutdown;
     private volatile Throwable failure;
     /**
@@ -234,10 +239,12 @@ final class SlabsRun {
     private volatile boolean coordinatorParked;
 
     SlabsRun(Scene scene, RunOptions options) {
+        long constructing = System.nanoTime();
         this.scene = scene;
         this.until = options.until();
-        this.table = new DiscTable(scene, options.tunable("cellFactor", 1.0));
-        Discs src = table.initial;
+        // The initial discs are needed only here: the run holds its records, not a second copy.
+        Discs src = scene.newDiscs();
+        this.table = new DiscTable(scene, src, options.tunable("cellFactor", 1.0));
         this.n = table.n;
         this.rec = table.rec;
         this.stride = table.stride;
@@ -293,6 +300,7 @@ final class SlabsRun {
         if (many) {
             Arrays.fill(xPos, -1);
         }
+        this.setupNanos = System.nanoTime() - constructing;
     }
 
     private double invMass(int i) {
@@ -330,9 +338,12 @@ final class SlabsRun {
                     }
                 }
             }
+            startNanos = System.nanoTime() - started;
             loop();
-            seconds = (System.nanoTime() - started) * 1e-9;
+            long looped = System.nanoTime();
+            seconds = (looped - started) * 1e-9;
             out = finalState();
+            finalNanos = System.nanoTime() - looped;
         } finally {
             shutdown = true;
             publish();
@@ -380,6 +391,9 @@ final class SlabsRun {
         counters.put("crossPredictions", crossPredictions);
         counters.put("serialNanos", serialNanos);
         counters.put("windowNanos", windowNanos);
+        counters.put("setupNanos", setupNanos);
+        counters.put("startNanos", startNanos);
+        counters.put("finalNanos", finalNanos);
         counters.put("serialCpuNanos", serialCpuNanos);
         counters.put("criticalCpuNanos", criticalCpuNanos);
         long windowCpu = 0;
@@ -956,7 +970,6 @@ final class SlabsRun {
     /** Every disc at {@code until}, in original id order (each domain a range of internal ids). */
     private Discs finalState() {
         finalOut = scene.newDiscs();
-        finalOrder = table.mortonOrder(finalOut);
         everyDomain(TASK_FINAL);
         return finalOut;
     }
@@ -1080,7 +1093,7 @@ final class SlabsRun {
                 switch (t) {
                     case TASK_PREDICT -> predictOwn();
                     case TASK_REPLAN -> replanOwn(taskTime);
-                    case TASK_FINAL -> pred.finalRange(finalOut, finalOrder, (int) ((long) n * id / domainCount),
+                    case TASK_FINAL -> pred.finalRange(finalOut, table.sceneIds(), (int) ((long) n * id / domainCount),
                             (int) ((long) n * (id + 1) / domainCount), untilLocal, until);
                     default -> throw new IllegalStateException("unknown task " + t);
                 }
