@@ -7,9 +7,10 @@ import java.util.Arrays;
  * expected insert, remove and poll (Paul 2007, "A complexity O(1) priority queue for event driven
  * molecular dynamics simulations", J. Comput. Phys. 221, 615). Single writer, not thread-safe.
  *
- * <p>The queue keeps no per-disc array of its own: disc i's event time and list link live in the
+ * <p>The queue keeps no per-disc array of its own: disc i's event time and list links live in the
  * owner's per-disc records, at {@code keys[i * keyStride + keyAt]} and {@code links[i * linkStride +
- * linkAt]}, so that an event touches one record instead of one array per quantity. Disc i is queued
+ * linkAt]} (next) and {@code + prevAt]} (previous), so that an event touches one record instead of one
+ * array per quantity. Disc i is queued
  * iff its time is finite; the owner writes the time only through {@link #insert} (or before
  * {@link #rebuild}) and reads it freely.
  *
@@ -29,9 +30,11 @@ import java.util.Arrays;
  * precedes every bucket entry. After a whole round of empty slices, cur jumps to the earliest
  * queued slice, so a sparse far future costs one scan, not a walk through its slices.
  *
- * <p>One link per disc besides the time, and no back pointers (memory per disc is what bounds
- * large runs): removal walks a bucket list (a slice holds a few events) or searches the heap (about
- * as small).
+ * <p>Bucket lists are doubly linked (two links per disc besides the time), so removing a disc from a
+ * bucket writes its neighbours' links without reading them first. With one link, removal walked the
+ * list from its head to the predecessor, a cache miss a step at N = 1e6: 15% of {@code fast}'s time
+ * there in a JFR profile, and the back link took it from 0.51 to 0.59 M collisions/s (1.15x in 10 paired
+ * rounds, {@code docs/measurements/fast-layout/}). Removal from the heap searches it (a slice's few events).
  */
 public final class CalendarQueue {
     private static final long MAX_SLICE = 1L << 60;
@@ -46,6 +49,7 @@ public final class CalendarQueue {
     private final int[] links;
     private final int linkStride;
     private final int linkAt;
+    private final int prevAt;
     private final int[] head;
     private final int buckets;
     private final int mask;
@@ -64,7 +68,8 @@ public final class CalendarQueue {
      *
      * @param buckets a power of two
      */
-    public CalendarQueue(int n, int buckets, double[] keys, int keyStride, int keyAt, int[] links, int linkStride, int linkAt) {
+    public CalendarQueue(int n, int buckets, double[] keys, int keyStride, int keyAt, int[] links, int linkStride, int linkAt,
+                         int prevAt) {
         if (Integer.bitCount(buckets) != 1) {
             throw new IllegalArgumentException("buckets must be a power of two: " + buckets);
         }
@@ -75,6 +80,7 @@ public final class CalendarQueue {
         this.links = links;
         this.linkStride = linkStride;
         this.linkAt = linkAt;
+        this.prevAt = prevAt;
         this.head = new int[buckets];
         this.buckets = buckets;
         this.mask = buckets - 1;
@@ -96,6 +102,10 @@ public final class CalendarQueue {
 
     private void setNext(int i, int j) {
         links[i * linkStride + linkAt] = j;
+    }
+
+    private void setPrev(int i, int j) {
+        links[i * linkStride + prevAt] = j;
     }
 
     public int buckets() {
@@ -163,8 +173,7 @@ public final class CalendarQueue {
             heapPush(i);
         } else {
             int b = (int) (s & mask);
-            setNext(i, head[b]);
-            head[b] = i;
+            push(b, i);
             inBuckets++;
         }
     }
@@ -223,11 +232,26 @@ public final class CalendarQueue {
                 idle = 0;
             } else {
                 setNext(i, kept);
+                setPrev(i, NIL);
+                if (kept != NIL) {
+                    setPrev(kept, i);
+                }
                 kept = i;
             }
             i = following;
         }
         head[b] = kept;
+    }
+
+    /** Puts disc i at the front of bucket b's list. */
+    private void push(int b, int i) {
+        int h = head[b];
+        setNext(i, h);
+        setPrev(i, NIL);
+        if (h != NIL) {
+            setPrev(h, i);
+        }
+        head[b] = i;
     }
 
     private long earliestSlice() {
@@ -241,15 +265,16 @@ public final class CalendarQueue {
     }
 
     private void unlink(int list, int i) {
-        int h = head[list];
-        if (h == i) {
-            head[list] = next(i);
-            return;
+        int before = links[i * linkStride + prevAt];
+        int after = next(i);
+        if (before == NIL) {
+            head[list] = after;
+        } else {
+            setNext(before, after);
         }
-        while (next(h) != i) {
-            h = next(h);
+        if (after != NIL) {
+            setPrev(after, before);
         }
-        setNext(h, next(i));
     }
 
     private void heapPush(int i) {

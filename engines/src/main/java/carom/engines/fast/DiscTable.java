@@ -20,7 +20,7 @@ import java.util.Arrays;
  * cell and the kind of the scheduled event, {@code kind << 28 | row << 14 | col} (no division on hot
  * paths; axes have at most {@link #AXIS_MASK} cells); PARTNER, the best candidate, and PCOUNT, its
  * counter at prediction; COUNT, the disc's velocity changes (a prediction against j is valid while
- * j's COUNT is unchanged); CNEXT, the next disc in the cell; QNEXT, the queue's link.
+ * j's COUNT is unchanged); CNEXT, the next disc in the cell; QNEXT and QPREV, the queue's links.
  */
 public final class DiscTable {
     /** Scheduled event kinds: the best candidate (pair or wall), or a crossing through a cell side. */
@@ -50,13 +50,14 @@ public final class DiscTable {
     public static final int EV = 5;
     public static final int R = 6;
     public static final int IM = 7;
-    public static final int IS = 6;
+    public static final int IS = 7;
     public static final int CELL = 0;
     public static final int PARTNER = 1;
     public static final int PCOUNT = 2;
     public static final int COUNT = 3;
     public static final int CNEXT = 4;
     public static final int QNEXT = 5;
+    public static final int QPREV = 6;
 
     public final Scene scene;
     public final int n;
