@@ -9,10 +9,9 @@ import java.util.Arrays;
  *
  * <p>The queue keeps no per-disc array of its own: disc i's event time and list links live in the
  * owner's per-disc records, at {@code keys[i * keyStride + keyAt]} and {@code links[i * linkStride +
- * linkAt]} (next) and {@code + prevAt]} (previous), so that an event touches one record instead of one
- * array per quantity. Disc i is queued
- * iff its time is finite; the owner writes the time only through {@link #insert} (or before
- * {@link #rebuild}) and reads it freely.
+ * linkAt]} (next) and {@code links[i * linkStride + prevAt]} (previous), so that an event touches one
+ * record instead of one array per quantity. Disc i is queued iff its time is finite; the owner writes
+ * the time only through {@link #insert} (or before {@link #rebuild}) and reads it freely.
  *
  * <h2>Implementation notes</h2>
  * Time is cut into slices of {@code width}; slice s = floor(t / width), computed by a saturating
@@ -33,8 +32,9 @@ import java.util.Arrays;
  * <p>Bucket lists are doubly linked (two links per disc besides the time), so removing a disc from a
  * bucket writes its neighbours' links without reading them first. With one link, removal walked the
  * list from its head to the predecessor, a cache miss a step at N = 1e6: 15% of {@code fast}'s time
- * there in a JFR profile, and the back link took it from 0.51 to 0.59 M collisions/s (1.15x in 10 paired
- * rounds, {@code docs/measurements/fast-layout/}). Removal from the heap searches it (a slice's few events).
+ * there in a JFR profile, and the back link took it from 0.51 to 0.59 M collisions/s (1.15x in 10
+ * paired rounds, {@code docs/measurements/fast-layout/}). Removal from the heap searches it (a slice's
+ * few events).
  */
 public final class CalendarQueue {
     private static final long MAX_SLICE = 1L << 60;
@@ -102,6 +102,10 @@ public final class CalendarQueue {
 
     private void setNext(int i, int j) {
         links[i * linkStride + linkAt] = j;
+    }
+
+    private int prev(int i) {
+        return links[i * linkStride + prevAt];
     }
 
     private void setPrev(int i, int j) {
@@ -222,8 +226,8 @@ public final class CalendarQueue {
 
     /** Moves bucket b's entries of slice cur to the heap; later rounds' entries stay. */
     private void drain(int b) {
-        int kept = NIL;
         int i = head[b];
+        head[b] = NIL;
         while (i != NIL) {
             int following = next(i);
             if (sliceOf(time(i)) <= cur) {
@@ -231,16 +235,10 @@ public final class CalendarQueue {
                 inBuckets--;
                 idle = 0;
             } else {
-                setNext(i, kept);
-                setPrev(i, NIL);
-                if (kept != NIL) {
-                    setPrev(kept, i);
-                }
-                kept = i;
+                push(b, i);
             }
             i = following;
         }
-        head[b] = kept;
     }
 
     /** Puts disc i at the front of bucket b's list. */
@@ -265,7 +263,7 @@ public final class CalendarQueue {
     }
 
     private void unlink(int list, int i) {
-        int before = links[i * linkStride + prevAt];
+        int before = prev(i);
         int after = next(i);
         if (before == NIL) {
             head[list] = after;
