@@ -58,6 +58,10 @@ class SlabsAgainstSerialTest {
         assertThat(r.pairCollisions()).as("collisions").isGreaterThan(n / 2);
         assertThat(r.counters().get("crossDomainEvents")).as("cross-slab contacts").isPositive();
         assertThat(r.counters().get("windows")).isEqualTo(r.counters().get("commits") + r.counters().get("rollbacks"));
+        // The phases' wall times: each measured, and the timed ones nested in the run's wall time.
+        assertThat(r.counters()).extractingByKeys("setupNanos", "startNanos", "finalNanos").allMatch(t -> t > 0);
+        assertThat(r.counters().get("startNanos") + r.counters().get("windowNanos") + r.counters().get("serialNanos"))
+                .isLessThanOrEqualTo((long) Math.ceil(r.wallSeconds() * 1e9));
         assertSame(scene.name(), r, serial);
     }
 
