@@ -41,7 +41,6 @@ public final class CalendarQueue {
     private static final int NIL = -1;
 
     private static final double INF = Double.POSITIVE_INFINITY;
-    private final int n;
     /** Event times (local, +Infinity when not queued) and links: see the class comment. */
     private final double[] keys;
     private final int keyStride;
@@ -63,17 +62,16 @@ public final class CalendarQueue {
     private int idle;
 
     /**
-     * A queue of n discs, none queued: every disc's time must be +Infinity already (the owner's records
-     * start so; several queues may share them, so none writes them here).
+     * An empty queue over the owner's records: every disc's time must be +Infinity already (the
+     * records start so; several queues may share them, so none writes them here).
      *
      * @param buckets a power of two
      */
-    public CalendarQueue(int n, int buckets, double[] keys, int keyStride, int keyAt, int[] links, int linkStride, int linkAt,
+    public CalendarQueue(int buckets, double[] keys, int keyStride, int keyAt, int[] links, int linkStride, int linkAt,
                          int prevAt) {
         if (Integer.bitCount(buckets) != 1) {
             throw new IllegalArgumentException("buckets must be a power of two: " + buckets);
         }
-        this.n = n;
         this.keys = keys;
         this.keyStride = keyStride;
         this.keyAt = keyAt;
@@ -135,17 +133,10 @@ public final class CalendarQueue {
     }
 
     /**
-     * Empties the queue, sets the slice width and the current time, and queues every disc whose
-     * {@code time} is finite (times must be >= now).
-     */
-    public void rebuild(double newWidth, double now) {
-        rebuild(newWidth, now, null, n);
-    }
-
-    /**
-     * As {@link #rebuild(double, double)}, over the discs {@code members[0..count)} only (every disc if
-     * {@code members} is null): for queues that share their key array with other queues (one per
-     * domain of a parallel engine).
+     * Empties the queue, sets the slice width and the current time, and queues every disc of
+     * {@code members[0..count)} (the first {@code count} discs if {@code members} is null) whose
+     * {@code time} is finite (times must be >= now). Members, because queues may share their key array
+     * (one per domain of a parallel engine).
      */
     public void rebuild(double newWidth, double now, int[] members, int count) {
         width = newWidth;

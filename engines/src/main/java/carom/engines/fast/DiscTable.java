@@ -289,12 +289,25 @@ public final class DiscTable {
     }
 
     /**
+     * Rebuilds {@code queue} over discs {@code members[0..count)} (every disc if {@code members} is
+     * null) at local {@code now}, its slices sized so that the calendar spans {@link #SPAN_MEANS} mean
+     * event delays of those discs; returns that span. {@code untilLocal}, the run's remaining local
+     * time, stands in for the mean when there is none (then 1 if it is not a positive finite number).
+     * Reads the records only: the domains of a parallel run plan at once, each its own queue.
+     */
+    public double planCalendar(CalendarQueue queue, int[] members, int count, double now, double untilLocal) {
+        double mean = meanDelay(members, count, now, untilLocal > 0 && Double.isFinite(untilLocal) ? untilLocal : 1);
+        double span = SPAN_MEANS * mean;
+        queue.rebuild(span / queue.buckets(), now, members, count);
+        return span;
+    }
+
+    /**
      * Mean delay from {@code now} of the scheduled events of discs {@code members[0..count)} (every
      * disc if {@code members} is null), trimmed of those beyond 10 means; {@code fallback} if there is
-     * none or it is not a positive finite number (then {@code fallback} should be). Reads only: the
-     * domains of a parallel run call it at once, each on its own members.
+     * none or it is not a positive finite number (then {@code fallback} should be).
      */
-    public double meanDelay(int[] members, int count, double now, double fallback) {
+    private double meanDelay(int[] members, int count, double now, double fallback) {
         int m = members == null ? n : count;
         double sum = 0;
         long k = 0;

@@ -14,7 +14,6 @@ import static carom.engines.fast.DiscTable.QNEXT;
 import static carom.engines.fast.DiscTable.QPREV;
 import static carom.engines.fast.DiscTable.RECHECK;
 import static carom.engines.fast.DiscTable.RESYNC_SPANS;
-import static carom.engines.fast.DiscTable.SPAN_MEANS;
 
 import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
@@ -137,7 +136,7 @@ final class FastRun {
         this.momentumStart = Observables.momentum(src);
         // A slice then holds about 5 to 8 events at the front: short bucket walks, a small heap.
         int buckets = Integer.highestOneBit(Math.max(64, n / 2 - 1)) << 1;
-        this.queue = new CalendarQueue(n, buckets, rec, stride, EV, ir, IS, QNEXT, QPREV);
+        this.queue = new CalendarQueue(buckets, rec, stride, EV, ir, IS, QNEXT, QPREV);
     }
 
     RunResult run() {
@@ -281,9 +280,7 @@ final class FastRun {
     /** Sizes the calendar from the mean event delay (trimmed of far outliers) and rebuilds it. */
     private void replan(double now) {
         QueueRebuildEvent rebuild = QueueRebuildEvent.start();
-        double mean = table.meanDelay(null, n, now, untilLocal > 0 && Double.isFinite(untilLocal) ? untilLocal : 1);
-        double span = SPAN_MEANS * mean;
-        queue.rebuild(span / queue.buckets(), now);
+        double span = table.planCalendar(queue, null, n, now, untilLocal);
         resyncAt = now + RESYNC_SPANS * span;
         rebuild.finish("fast", n, queue.size());
     }

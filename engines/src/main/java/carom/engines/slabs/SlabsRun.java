@@ -21,7 +21,6 @@ import static carom.engines.fast.DiscTable.QNEXT;
 import static carom.engines.fast.DiscTable.QPREV;
 import static carom.engines.fast.DiscTable.RECHECK;
 import static carom.engines.fast.DiscTable.RESYNC_SPANS;
-import static carom.engines.fast.DiscTable.SPAN_MEANS;
 import static carom.engines.fast.DiscTable.T;
 import static carom.engines.fast.DiscTable.VX;
 import static carom.engines.fast.DiscTable.VY;
@@ -288,7 +287,7 @@ final class SlabsRun {
         this.domains = new Domain[k];
         int buckets = Integer.highestOneBit(Math.max(64, n / (2 * k) - 1)) << 1;
         for (int d = 0; d < k; d++) {
-            domains[d] = new Domain(d, new CalendarQueue(n, buckets, rec, stride, EV, ir, IS, QNEXT, QPREV));
+            domains[d] = new Domain(d, new CalendarQueue(buckets, rec, stride, EV, ir, IS, QNEXT, QPREV));
         }
         boolean many = k > 1;
         this.lastEntry = many ? new int[n] : null;
@@ -1132,9 +1131,7 @@ final class SlabsRun {
             if (shift > 0) {
                 pred.rebase(shift, members, count);
             }
-            double mean = table.meanDelay(members, count, 0, untilLocal > 0 && Double.isFinite(untilLocal) ? untilLocal : 1);
-            span = SPAN_MEANS * mean;
-            queue.rebuild(span / queue.buckets(), 0, members, count);
+            span = table.planCalendar(queue, members, count, 0, untilLocal);
         }
 
         void awaitDone(int g) {
