@@ -289,11 +289,23 @@ public final class DiscTable {
     }
 
     /**
+     * An empty calendar queue over these records (time EV, links QNEXT and QPREV) for about
+     * {@code discs} discs: between discs / 2 and discs buckets, a power of two, at least 128. A slice
+     * then holds about 5 to 8 events at the front: short bucket walks, a small heap. Queues over
+     * disjoint sets of discs may share the records (one per domain of a parallel run).
+     */
+    public CalendarQueue newCalendar(int discs) {
+        int buckets = Integer.highestOneBit(Math.max(64, discs / 2 - 1)) << 1;
+        return new CalendarQueue(buckets, rec, stride, EV, ir, IS, QNEXT, QPREV);
+    }
+
+    /**
      * Rebuilds {@code queue} over discs {@code members[0..count)} (every disc if {@code members} is
      * null) at local {@code now}, its slices sized so that the calendar spans {@link #SPAN_MEANS} mean
      * event delays of those discs; returns that span. {@code untilLocal}, the run's remaining local
      * time, stands in for the mean when there is none (then 1 if it is not a positive finite number).
-     * Reads the records only: the domains of a parallel run plan at once, each its own queue.
+     * Reads the members' records and writes only their queue links: the domains of a parallel run
+     * plan at once, each its own queue over its own members.
      */
     public double planCalendar(CalendarQueue queue, int[] members, int count, double now, double untilLocal) {
         double mean = meanDelay(members, count, now, untilLocal > 0 && Double.isFinite(untilLocal) ? untilLocal : 1);

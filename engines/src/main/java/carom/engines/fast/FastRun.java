@@ -10,8 +10,6 @@ import static carom.engines.fast.DiscTable.IS;
 import static carom.engines.fast.DiscTable.KIND_SHIFT;
 import static carom.engines.fast.DiscTable.PARTNER;
 import static carom.engines.fast.DiscTable.PCOUNT;
-import static carom.engines.fast.DiscTable.QNEXT;
-import static carom.engines.fast.DiscTable.QPREV;
 import static carom.engines.fast.DiscTable.RECHECK;
 import static carom.engines.fast.DiscTable.RESYNC_SPANS;
 
@@ -134,9 +132,7 @@ final class FastRun {
         this.stallGuard = new StallGuard(scene, table::sceneId);
         this.energyStart = Observables.kineticEnergy(src);
         this.momentumStart = Observables.momentum(src);
-        // A slice then holds about 5 to 8 events at the front: short bucket walks, a small heap.
-        int buckets = Integer.highestOneBit(Math.max(64, n / 2 - 1)) << 1;
-        this.queue = new CalendarQueue(buckets, rec, stride, EV, ir, IS, QNEXT, QPREV);
+        this.queue = table.newCalendar(n);
     }
 
     RunResult run() {

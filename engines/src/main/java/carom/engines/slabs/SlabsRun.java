@@ -17,8 +17,6 @@ import static carom.engines.fast.DiscTable.NIL;
 import static carom.engines.fast.DiscTable.NONE;
 import static carom.engines.fast.DiscTable.PARTNER;
 import static carom.engines.fast.DiscTable.PCOUNT;
-import static carom.engines.fast.DiscTable.QNEXT;
-import static carom.engines.fast.DiscTable.QPREV;
 import static carom.engines.fast.DiscTable.RECHECK;
 import static carom.engines.fast.DiscTable.RESYNC_SPANS;
 import static carom.engines.fast.DiscTable.T;
@@ -285,9 +283,8 @@ final class SlabsRun {
         }
 
         this.domains = new Domain[k];
-        int buckets = Integer.highestOneBit(Math.max(64, n / (2 * k) - 1)) << 1;
         for (int d = 0; d < k; d++) {
-            domains[d] = new Domain(d, new CalendarQueue(buckets, rec, stride, EV, ir, IS, QNEXT, QPREV));
+            domains[d] = new Domain(d, table.newCalendar(n / k));
         }
         boolean many = k > 1;
         this.lastEntry = many ? new int[n] : null;
