@@ -70,20 +70,29 @@ public final class PairLaw {
      * @return the collision virial J * |r| (0 if the pair was not approaching after all)
      */
     public static double collide(Discs d, int i, int j, double dx, double dy, double e) {
+        return collide(d.vx, i, j, d.vy, i, j, d.invMass[i], d.invMass[j], dx, dy, e);
+    }
+
+    /**
+     * {@link #collide(Discs, int, int, double, double, double)} on velocities held anywhere: disc i's
+     * at {@code vx[ix]}, {@code vy[iy]}, disc j's at {@code vx[jx]}, {@code vy[jy]} (columns of
+     * {@link Discs}, or one array of per-disc records), so engines that keep discs in records apply
+     * the impulse in place with the same arithmetic.
+     */
+    public static double collide(double[] vx, int ix, int jx, double[] vy, int iy, int jy, double invMi,
+                                 double invMj, double dx, double dy, double e) {
         double dist = Math.sqrt(dx * dx + dy * dy);
         double nx = dx / dist;
         double ny = dy / dist;
-        double u = (d.vx[i] - d.vx[j]) * nx + (d.vy[i] - d.vy[j]) * ny;
+        double u = (vx[ix] - vx[jx]) * nx + (vy[iy] - vy[jy]) * ny;
         if (!(u > 0)) {
             return 0;
         }
-        double invMi = d.invMass[i];
-        double invMj = d.invMass[j];
         double impulse = (1 + e) * u / (invMi + invMj);
-        d.vx[i] -= impulse * invMi * nx;
-        d.vy[i] -= impulse * invMi * ny;
-        d.vx[j] += impulse * invMj * nx;
-        d.vy[j] += impulse * invMj * ny;
+        vx[ix] -= impulse * invMi * nx;
+        vy[iy] -= impulse * invMi * ny;
+        vx[jx] += impulse * invMj * nx;
+        vy[jy] += impulse * invMj * ny;
         return impulse * dist;
     }
 }

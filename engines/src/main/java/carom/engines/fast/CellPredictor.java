@@ -202,11 +202,8 @@ public final class CellPredictor {
             double dist = Math.sqrt(dx * dx + dy * dy);
             guard.pegContact(abs, a, b, dx / dist, dy / dist, rec[at + VX], rec[at + VY], dist);
         }
-        load(a, 0);
-        load(b, 1);
-        double w = PairLaw.collide(pair, 0, 1, dx, dy, e);
-        store(a, 0);
-        store(b, 1);
+        // On the records, not through the pair window: no copies in and out at every collision.
+        double w = PairLaw.collide(rec, at + VX, bt + VX, rec, at + VY, bt + VY, invMass(a), invMass(b), dx, dy, e);
         restitution.collided(a, abs);
         ir[a * IS + COUNT]++;
         if (bMobile) {
