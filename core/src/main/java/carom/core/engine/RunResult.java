@@ -44,9 +44,20 @@ public record RunResult(String engine, boolean exact, Discs finalState, double u
         return collisions() == 0 ? 0 : causalityViolations * 1e6 / collisions();
     }
 
-    /** Messages sent per collision, for engines that count messages (counter "messages"), else NaN. */
+    /** The engine's count of {@code counter}, or {@code fallback} when the engine does not report it. */
+    public long counter(Counter counter, long fallback) {
+        Long v = counters == null ? null : counters.get(counter.key);
+        return v == null ? fallback : v;
+    }
+
+    /** Whether the engine reports {@code counter}. */
+    public boolean has(Counter counter) {
+        return counters != null && counters.containsKey(counter.key);
+    }
+
+    /** Messages sent per collision, for engines that count messages ({@link Counter#MESSAGES}), else NaN. */
     public double messagesPerCollision() {
-        Long messages = counters == null ? null : counters.get("messages");
+        Long messages = counters == null ? null : counters.get(Counter.MESSAGES.key);
         return messages == null || collisions() == 0 ? Double.NaN : messages / (double) collisions();
     }
 
