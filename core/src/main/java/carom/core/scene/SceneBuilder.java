@@ -107,21 +107,18 @@ public final class SceneBuilder {
             d.vy[i] = explicitState[4 * i + 3];
             checkExplicit(i, d);
         }
+        for (int i = 0; i < explicitCount; i++) {
+            Species s = species.get(d.species[i]);
+            d.radius[i] = s.radius();
+            d.invMass[i] = s.inverseMass();
+        }
         int[] blockStarts = new int[blocks.size()];
         int offset = explicitCount;
         for (int b = 0; b < blocks.size(); b++) {
             GenerateBlock block = blocks.get(b);
             blockStarts[b] = offset;
-            String path = "generate[" + b + "]";
-            Species s = species.get(block.species());
-            LatticeGenerator.place(block, s, box, d.x, d.y, d.vx, d.vy, offset, path);
-            Arrays.fill(d.species, offset, offset + (int) block.count(), block.species());
+            BlockGenerator.place(block, species, box, d, offset, "generate[" + b + "]");
             offset += (int) block.count();
-        }
-        for (int i = 0; i < n; i++) {
-            Species s = species.get(d.species[i]);
-            d.radius[i] = s.radius();
-            d.invMass[i] = s.inverseMass();
         }
         checkInsideBox(d, blockStarts);
         checkNoOverlaps(d, blockStarts);
@@ -165,8 +162,23 @@ public final class SceneBuilder {
         for (int b = 0; b < blocks.size(); b++) {
             GenerateBlock block = blocks.get(b);
             String path = "generate[" + b + "]";
-            if (block.species() < 0 || block.species() >= species.size()) {
-                throw new BadInputException(path + ".species: unknown species");
+            int[] ids = block.species();
+            double[] fractions = block.fractions();
+            if (ids.length == 0 || ids.length != fractions.length) {
+                throw new BadInputException(path + ".fractions: one fraction per species is needed");
+            }
+            double sum = 0;
+            for (int k = 0; k < ids.length; k++) {
+                if (ids[k] < 0 || ids[k] >= species.size()) {
+                    throw new BadInputException(path + ".species: unknown species");
+                }
+                if (!(fractions[k] > 0) || Double.isInfinite(fractions[k])) {
+                    throw new BadInputException(path + ".fractions[" + k + "]: must be a number > 0, got " + fractions[k]);
+                }
+                sum += fractions[k];
+            }
+            if (Math.abs(sum - 1) > 1e-9) {
+                throw new BadInputException(path + ".fractions: must sum to 1, got " + sum);
             }
             if (block.count() < 0) {
                 throw new BadInputException(path + ".count: must be >= 0, got " + block.count());

@@ -44,7 +44,7 @@ public final class SceneReader {
     private static final Set<String> BOX_KEYS = Set.of("width", "height", "boundary");
     private static final Set<String> SPECIES_KEYS = Set.of("name", "radius", "mass", "fixed");
     private static final Set<String> PARTICLE_KEYS = Set.of("species", "x", "y", "vx", "vy");
-    private static final Set<String> GENERATE_KEYS = Set.of("species", "count", "layout", "jitter", "velocity", "seed");
+    private static final Set<String> GENERATE_KEYS = Set.of("species", "fractions", "count", "layout", "jitter", "velocity", "seed");
     private static final Set<String> UNIFORM_KEYS = Set.of("distribution", "scale");
     private static final Set<String> MAXWELL_KEYS = Set.of("distribution", "temperature");
     private static final List<String> EFFECTS = List.of("gravity", "restitution", "wallRestitution", "tc");
@@ -188,26 +188,30 @@ public final class SceneReader {
             String path = "generate[" + b + "]";
             JsonNode g = object(list.get(b), path);
             onlyKnownKeys(g, path, GENERATE_KEYS);
-            int s = speciesRef(g, path, speciesByName, species);
+            int[] mixture = speciesList(g, path, speciesByName, species);
+            double[] fractions = fractions(g, path, mixture.length);
             long count = integer(required(g, path, "count"), path + ".count", 0, Integer.MAX_VALUE);
-            String layout = string(required(g, path, "layout"), path + ".layout");
-            if (!layout.equals("lattice")) {
-                throw new BadInputException(path + ".layout: unknown layout '" + layout + "' (known: lattice)");
+            String layoutKey = string(required(g, path, "layout"), path + ".layout");
+            Layout layout = Layout.byKey(layoutKey);
+            if (layout == null) {
+                throw new BadInputException(path + ".layout: unknown layout '" + layoutKey + "' (known: lattice, triangular, random)");
             }
             double jitter = optionalNumber(g, path, "jitter", 0);
             JsonNode velocityNode = g.get("velocity");
             VelocityDistribution velocity = new VelocityDistribution.AtRest();
             if (velocityNode != null) {
-                if (species.get(s).fixed()) {
-                    // The generator would drop it silently; a fixed disc never moves (SPEC).
-                    throw new BadInputException(path + ".velocity: species '" + species.get(s).name()
-                            + "' is fixed and cannot have a velocity");
+                for (int s : mixture) {
+                    if (species.get(s).fixed()) {
+                        // The generator would drop it silently; a fixed disc never moves (SPEC).
+                        throw new BadInputException(path + ".velocity: species '" + species.get(s).name()
+                                + "' is fixed and cannot have a velocity");
+                    }
                 }
                 velocity = readVelocity(object(velocityNode, path + ".velocity"), path + ".velocity");
             }
             JsonNode seedNode = g.get("seed");
             long seed = seedNode == null ? 0 : integer(seedNode, path + ".seed", Long.MIN_VALUE, Long.MAX_VALUE);
-            builder.generate(new GenerateBlock(s, count, jitter, velocity, seed));
+            builder.generate(new GenerateBlock(layout, mixture, fractions, count, jitter, velocity, seed));
         }
     }
 
@@ -247,6 +251,66 @@ public final class SceneReader {
         double restitution = optionalNumber(e, "effects", "restitution", 1);
         double wallRestitution = optionalNumber(e, "effects", "wallRestitution", 1);
         return effects.withRestitution(restitution, wallRestitution).withTc(optionalNumber(e, "effects", "tc", 0));
+    }
+
+    /** {@code species}: one name, or a list of distinct names (a mixture, which then needs {@code fractions}). */
+    private static int[] speciesList(JsonNode g, String path, Map<String, Integer> speciesByName, List<Species> species) {
+        JsonNode node = required(g, path, "species");
+        if (!node.isArray()) {
+            return new int[] {speciesRef(g, path, speciesByName, species)};
+        }
+        if (node.isEmpty()) {
+            throw new BadInputException(path + ".species: a mixture needs at least one species");
+        }
+        int[] ids = new int[node.size()];
+        for (int k = 0; k < ids.length; k++) {
+            String itemPath = path + ".species[" + k + "]";
+            String name = string(node.get(k), itemPath);
+            Integer index = speciesByName.get(name);
+            if (index == null) {
+                throw new BadInputException(itemPath + ": unknown species '" + name + "' (declared: "
+                        + String.join(", ", species.stream().map(Species::name).toList()) + ")");
+            }
+            for (int j = 0; j < k; j++) {
+                if (ids[j] == index) {
+                    throw new BadInputException(itemPath + ": species '" + name + "' is listed twice");
+                }
+            }
+            ids[k] = index;
+        }
+        return ids;
+    }
+
+    /** {@code fractions}: required with a list of species (same length), not allowed with one name. */
+    private static double[] fractions(JsonNode g, String path, int species) {
+        JsonNode node = g.get("fractions");
+        boolean mixture = g.get("species").isArray();
+        if (node == null) {
+            if (mixture) {
+                throw new BadInputException(path + ".fractions: missing (a list of species needs one fraction each)");
+            }
+            return new double[] {1.0};
+        }
+        if (!mixture) {
+            throw new BadInputException(path + ".fractions: only a list of species takes fractions");
+        }
+        JsonNode list = array(node, path + ".fractions");
+        if (list.size() != species) {
+            throw new BadInputException(path + ".fractions: " + list.size() + " fractions for " + species + " species");
+        }
+        double[] f = new double[species];
+        double sum = 0;
+        for (int k = 0; k < species; k++) {
+            f[k] = number(list.get(k), path + ".fractions[" + k + "]");
+            if (!(f[k] > 0)) {
+                throw new BadInputException(path + ".fractions[" + k + "]: must be > 0, got " + f[k]);
+            }
+            sum += f[k];
+        }
+        if (Math.abs(sum - 1) > 1e-9) {
+            throw new BadInputException(path + ".fractions: must sum to 1, got " + sum);
+        }
+        return f;
     }
 
     private static int speciesRef(JsonNode o, String path, Map<String, Integer> speciesByName, List<Species> species) {

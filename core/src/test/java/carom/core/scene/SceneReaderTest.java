@@ -493,8 +493,8 @@ class SceneReaderTest {
 
     @Test
     void unknownLayoutAndDistributionAreErrors() {
-        rejected(base(root -> at(root, "/generate/0").put("layout", "random")),
-                "generate[0].layout: unknown layout 'random' (known: lattice)");
+        rejected(base(root -> at(root, "/generate/0").put("layout", "hexagonal")),
+                "generate[0].layout: unknown layout 'hexagonal' (known: lattice, triangular, random)");
         rejected(base(root -> at(root, "/generate/0/velocity").put("distribution", "gaussian")),
                 "generate[0].velocity.distribution: unknown distribution 'gaussian' (known: uniform, maxwell)");
     }
