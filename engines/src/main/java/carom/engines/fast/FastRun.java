@@ -1,17 +1,17 @@
 package carom.engines.fast;
 
-import static carom.engines.fast.DiscTable.AXIS_BITS;
-import static carom.engines.fast.DiscTable.AXIS_MASK;
-import static carom.engines.fast.DiscTable.CELL;
-import static carom.engines.fast.DiscTable.COUNT;
-import static carom.engines.fast.DiscTable.EV;
-import static carom.engines.fast.DiscTable.HIT;
-import static carom.engines.fast.DiscTable.IS;
-import static carom.engines.fast.DiscTable.KIND_SHIFT;
-import static carom.engines.fast.DiscTable.PARTNER;
-import static carom.engines.fast.DiscTable.PCOUNT;
-import static carom.engines.fast.DiscTable.RECHECK;
-import static carom.engines.fast.DiscTable.RESYNC_SPANS;
+import static carom.engines.kernel.DiscTable.AXIS_BITS;
+import static carom.engines.kernel.DiscTable.AXIS_MASK;
+import static carom.engines.kernel.DiscTable.CELL;
+import static carom.engines.kernel.DiscTable.COUNT;
+import static carom.engines.kernel.DiscTable.EV;
+import static carom.engines.kernel.DiscTable.HIT;
+import static carom.engines.kernel.DiscTable.IS;
+import static carom.engines.kernel.DiscTable.KIND_SHIFT;
+import static carom.engines.kernel.DiscTable.PARTNER;
+import static carom.engines.kernel.DiscTable.PCOUNT;
+import static carom.engines.kernel.DiscTable.RECHECK;
+import static carom.engines.kernel.DiscTable.RESYNC_SPANS;
 
 import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
@@ -25,6 +25,9 @@ import carom.core.observe.jfr.QueueRebuildEvent;
 import carom.core.physics.Flight;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
+import carom.engines.kernel.CalendarQueue;
+import carom.engines.kernel.CellPredictor;
+import carom.engines.kernel.DiscTable;
 import java.util.HashMap;
 import java.util.Map;
 

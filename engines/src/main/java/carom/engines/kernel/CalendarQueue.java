@@ -1,4 +1,4 @@
-package carom.engines.fast;
+package carom.engines.kernel;
 
 import java.util.Arrays;
 
