@@ -14,7 +14,7 @@ import carom.engines.kernel.DiscMotion;
 import carom.engines.kernel.DiscTable;
 
 /**
- * One slab: the kernel's event loop over the discs of its columns ({@code fast}'s loop), with an
+ * One slab: {@code fast}'s event loop, on the kernel, over the discs of its columns, with an
  * {@link UndoLog} while windows can be rolled back. Its methods run on its own thread during a
  * window and the other per-domain tasks, and on the coordinator's in serial phases (the owner then
  * waits at the barrier). Domain 0 is the coordinator's own.
