@@ -19,7 +19,7 @@ import java.util.Set;
  * <p>Tunables: {@code cellFactor}, {@code auditEnergy} (as {@code fast}; with several domains the
  * energy is audited at every barrier); {@code sequential} (measurement mode: all domains' windows run
  * one after another on the calling thread, for single-core costs); {@code spins} (busy-wait iterations at
- * the barrier before a thread parks). Counters: see {@link SlabsRun}.
+ * the barrier before a thread parks). Counters: see {@link SlabsCounters}.
  */
 public final class SlabsEngine implements Engine {
     @Override

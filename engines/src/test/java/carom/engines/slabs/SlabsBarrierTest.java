@@ -18,29 +18,29 @@ class SlabsBarrierTest {
 
     @Test
     void largeScenesWithAProcessorPerThreadSpinLong() {
-        assertThat(SlabsRun.spinsOf(TWO_THREADS, SlabsRun.LONG_SPIN_DISCS, 2)).isEqualTo(SlabsRun.SPINS_LONG);
+        assertThat(SpinPolicy.spinsOf(TWO_THREADS, SpinPolicy.LONG_SPIN_DISCS, 2)).isEqualTo(SpinPolicy.SPINS_LONG);
     }
 
     @Test
     void smallScenesSpinShortSoThatTheJitKeepsACore() {
-        assertThat(SlabsRun.spinsOf(TWO_THREADS, SlabsRun.LONG_SPIN_DISCS - 1, 2)).isEqualTo(SlabsRun.SPINS_SHORT);
+        assertThat(SpinPolicy.spinsOf(TWO_THREADS, SpinPolicy.LONG_SPIN_DISCS - 1, 2)).isEqualTo(SpinPolicy.SPINS_SHORT);
     }
 
     @Test
     void moreThreadsThanProcessorsSpinShortEvenOnLargeScenes() {
-        assertThat(SlabsRun.spinsOf(TWO_THREADS.withThreads(4), 2_000_000, 2)).isEqualTo(SlabsRun.SPINS_SHORT);
+        assertThat(SpinPolicy.spinsOf(TWO_THREADS.withThreads(4), 2_000_000, 2)).isEqualTo(SpinPolicy.SPINS_SHORT);
     }
 
     @Test
     void theTunableOverridesTheDefault() {
-        assertThat(SlabsRun.spinsOf(TWO_THREADS.withTunable("spins", "0"), 2_000_000, 2)).isZero();
-        assertThat(SlabsRun.spinsOf(TWO_THREADS.withTunable("spins", "12345"), 10, 2)).isEqualTo(12345);
+        assertThat(SpinPolicy.spinsOf(TWO_THREADS.withTunable("spins", "0"), 2_000_000, 2)).isZero();
+        assertThat(SpinPolicy.spinsOf(TWO_THREADS.withTunable("spins", "12345"), 10, 2)).isEqualTo(12345);
     }
 
     @ParameterizedTest(name = "spins={0}")
     @ValueSource(strings = {"-1", "1.5", "NaN", "Infinity", "2147483648", "abc"})
     void aSpinCountThatIsNotAWholeNumberInRangeIsBadInput(String value) {
-        assertThatThrownBy(() -> SlabsRun.spinsOf(TWO_THREADS.withTunable("spins", value), 10, 2))
+        assertThatThrownBy(() -> SpinPolicy.spinsOf(TWO_THREADS.withTunable("spins", value), 10, 2))
                 .isInstanceOf(BadInputException.class)
                 .hasMessageStartingWith("engine option spins: ");
     }

@@ -1,4 +1,4 @@
-package carom.engines.fast;
+package carom.engines.kernel;
 
 import carom.core.BadInputException;
 import carom.core.physics.Boundary;
@@ -10,17 +10,11 @@ import carom.core.state.Discs;
 import java.util.Arrays;
 
 /**
- * The discs of a fast-style run laid out for event-driven prediction: the cell grid, the Morton
- * numbering, one record of doubles and one of ints per disc, and the cell lists. Shared by the
- * {@code fast} engine and by every domain of the {@code slabs} engine; each thread predicts on it
- * through its own {@link CellPredictor}. See {@link FastRun} for the algorithm and the invariants.
- *
- * <p>Record layout. Doubles ({@link #stride} per disc): X, Y, VX, VY, T (clock), EV (scheduled
- * event time, the queue's key), then R, IM if per disc. Ints ({@link #IS} per disc): CELL, the logical
- * cell and the kind of the scheduled event, {@code kind << 28 | row << 14 | col} (no division on hot
- * paths; axes have at most {@link #AXIS_MASK} cells); PARTNER, the best candidate, and PCOUNT, its
- * counter at prediction; COUNT, the disc's velocity changes (a prediction against j is valid while
- * j's COUNT is unchanged); CNEXT, the next disc in the cell; QNEXT and QPREV, the queue's links.
+ * The discs of a one-event-per-disc run laid out for event-driven prediction: the cell grid, the
+ * Morton numbering, one record of doubles and one of ints per disc, and the cell lists. One table is
+ * shared by all threads of a run; each thread changes records through its own {@link DiscMotion} and
+ * predicts through its own {@link CellPredictor}. The record layout (see {@code package-info}) is
+ * private to this package: engines read and write a disc through the named methods below.
  */
 public final class DiscTable {
     /** Scheduled event kinds: the best candidate (pair or wall), or a crossing through a cell side. */
@@ -31,61 +25,68 @@ public final class DiscTable {
     public static final byte CROSS_UP = 4;
     /** Re-predict in full (small periodic axes, where the nearest image can switch within a cell). */
     public static final byte RECHECK = 5;
-    /** Candidate codes: j >= 0 a disc, -1 - w wall w, NONE nothing. */
-    public static final int NONE = Integer.MIN_VALUE;
+    /** No disc: the end of a cell list ({@link #nextInCell}). */
     public static final int NIL = -1;
-    public static final int AXIS_BITS = 14;
-    public static final int AXIS_MASK = (1 << AXIS_BITS) - 1;
-    public static final int CELL_MASK = (1 << 2 * AXIS_BITS) - 1;
-    public static final int KIND_SHIFT = 2 * AXIS_BITS;
-    /** Calendar span = SPAN_MEANS mean event delays; clocks re-anchored every RESYNC_SPANS spans. */
-    public static final double SPAN_MEANS = 4;
+    /** Engines re-anchor clocks every RESYNC_SPANS calendar spans ({@link #planCalendar}). */
     public static final double RESYNC_SPANS = 4;
-    public static final double INF = Double.POSITIVE_INFINITY;
-    public static final int X = 0;
-    public static final int Y = 1;
-    public static final int VX = 2;
-    public static final int VY = 3;
-    public static final int T = 4;
-    public static final int EV = 5;
-    public static final int R = 6;
-    public static final int IM = 7;
-    public static final int IS = 7;
-    public static final int CELL = 0;
-    public static final int PARTNER = 1;
-    public static final int PCOUNT = 2;
-    public static final int COUNT = 3;
-    public static final int CNEXT = 4;
-    public static final int QNEXT = 5;
-    public static final int QPREV = 6;
+    /** A calendar spans SPAN_MEANS mean event delays. */
+    static final double SPAN_MEANS = 4;
 
-    public final Scene scene;
+    // The record layout (package-info). Candidate codes: j >= 0 a disc, -1 - w wall w, NONE nothing.
+    static final int NONE = Integer.MIN_VALUE;
+    static final int AXIS_BITS = 14;
+    static final int AXIS_MASK = (1 << AXIS_BITS) - 1;
+    static final int CELL_MASK = (1 << 2 * AXIS_BITS) - 1;
+    static final int KIND_SHIFT = 2 * AXIS_BITS;
+    static final double INF = Double.POSITIVE_INFINITY;
+    static final int X = 0;
+    static final int Y = 1;
+    static final int VX = 2;
+    static final int VY = 3;
+    static final int T = 4;
+    static final int EV = 5;
+    static final int R = 6;
+    static final int IM = 7;
+    static final int IS = 7;
+    static final int CELL = 0;
+    static final int PARTNER = 1;
+    static final int PCOUNT = 2;
+    static final int COUNT = 3;
+    static final int CNEXT = 4;
+    static final int QNEXT = 5;
+    static final int QPREV = 6;
+
+    // What engines read: the run's size, physics and grid shape.
     public final int n;
     public final Flight flight;
     public final Boundary boundary;
-    /** The walls, or null in a periodic box. */
-    public final Boundary.Walls walls;
     public final boolean periodic;
-    public final Restitution restitution;
-    public final double acceleration;
-    public final double[] rec;
-    public final int stride;
-    /** Radius and inverse mass of every disc when all share them (then not in the records). */
-    public final double sharedRadius;
-    public final double sharedInvMass;
-    /** Straight flight: advance and predictions are inlined on the records. */
-    public final boolean straight;
-    public final int[] ir;
-    // Grid: cell = row * cols + col; cellHead[cell] -> chain through each disc's CNEXT.
+    /** Grid columns and rows: cell (col, row) is {@code row * cols + col}. */
     public final int cols;
     public final int rows;
-    public final double cellW;
-    public final double cellH;
-    public final double width;
-    public final double height;
-    public final int[] cellHead;
     /** Re-predict the whole neighbourhood after a crossing (gravity with fixed discs; small grids). */
     public final boolean fullOnCross;
+
+    // The kernel's own: the records, the grid, and what the hot paths copy.
+    final Scene scene;
+    /** The walls, or null in a periodic box. */
+    final Boundary.Walls walls;
+    final Restitution restitution;
+    final double acceleration;
+    final double[] rec;
+    final int stride;
+    /** Radius and inverse mass of every disc when all share them (then not in the records). */
+    final double sharedRadius;
+    final double sharedInvMass;
+    /** Straight flight: advance and predictions are inlined on the records. */
+    final boolean straight;
+    final int[] ir;
+    // Grid: cellHead[row * cols + col] -> chain through each disc's CNEXT.
+    final double cellW;
+    final double cellH;
+    final double width;
+    final double height;
+    final int[] cellHead;
     /**
      * Periodic axes with fewer than 4 cells: two discs in neighbouring cells may be half a box apart,
      * so the nearest image of a pair can switch with no crossing; such a disc is re-predicted in full
@@ -94,13 +95,13 @@ public final class DiscTable {
      * pair must close by L/2 - sigma = 2 * recheck, so one of the two moves recheck first and then
      * predicts with the right image (every column is in every neighbourhood on such an axis).
      */
-    public final double recheckX;
-    public final double recheckY;
+    final double recheckX;
+    final double recheckY;
     /**
      * Straight flight with every neighbour seen through its cell's image (no rechecks): the cell scan
      * predicts inline instead of through {@link Flight#timeToContact}.
      */
-    public final boolean straightImages;
+    final boolean straightImages;
     /** Row-major offsets of an interior cell's 3x3 neighbourhood, and of the line ahead per crossing kind. */
     final int[] around;
     final int[][] ahead;
@@ -212,7 +213,7 @@ public final class DiscTable {
         return row < 0 ? 0 : (row >= rows ? rows - 1 : row);
     }
 
-    public double radius(int i) {
+    double radius(int i) {
         return stride > R ? rec[i * stride + R] : sharedRadius;
     }
 
@@ -223,6 +224,83 @@ public final class DiscTable {
     /** The column of disc i's logical cell. */
     public int colOfDisc(int i) {
         return ir[i * IS + CELL] & AXIS_MASK;
+    }
+
+    /** The row of disc i's logical cell. */
+    public int rowOfDisc(int i) {
+        return (ir[i * IS + CELL] >>> AXIS_BITS) & AXIS_MASK;
+    }
+
+    /** The first disc in the list of cell (col, row), or {@link #NIL}. */
+    public int firstInCell(int col, int row) {
+        return cellHead[row * cols + col];
+    }
+
+    /** The disc after disc j in its cell's list, or {@link #NIL}. */
+    public int nextInCell(int j) {
+        return ir[j * IS + CNEXT];
+    }
+
+    /** Disc i's clock: the local time its position was last advanced to. */
+    public double clock(int i) {
+        return rec[i * stride + T];
+    }
+
+    /** Local time of disc i's scheduled event, +Infinity if none (then it is in no queue). */
+    public double eventTime(int i) {
+        return rec[i * stride + EV];
+    }
+
+    /**
+     * Sets disc i's event time before any queue holds it (the first predictions, before
+     * {@link #planCalendar}); afterwards a queue writes it ({@link CalendarQueue#insert}).
+     */
+    public void setEventTime(int i, double t) {
+        rec[i * stride + EV] = t;
+    }
+
+    /** The kind of disc i's scheduled event: {@link #HIT}, a crossing, or {@link #RECHECK}. */
+    public byte kind(int i) {
+        return (byte) (ir[i * IS + CELL] >>> KIND_SHIFT);
+    }
+
+    /**
+     * Disc i's best candidate at its last prediction: for a {@link #HIT} event, a disc j >= 0 or wall
+     * {@link #wallOf}.
+     */
+    public int partner(int i) {
+        return ir[i * IS + PARTNER];
+    }
+
+    /** The wall of a {@link #partner} code below 0. */
+    public static int wallOf(int partner) {
+        return -1 - partner;
+    }
+
+    /**
+     * Whether disc i's prediction against its partner disc p is stale: p's trajectory changed (its
+     * {@link #changeCount}) since i was predicted against it.
+     */
+    public boolean predictionStale(int i, int p) {
+        return ir[p * IS + COUNT] != ir[i * IS + PCOUNT];
+    }
+
+    /** How many times disc j's trajectory changed: a prediction against j holds while this is unchanged. */
+    public int changeCount(int j) {
+        return ir[j * IS + COUNT];
+    }
+
+    /** Makes every prediction made against disc i so far stale (as a collision of i would). */
+    public void invalidatePredictionsAgainst(int i) {
+        ir[i * IS + COUNT]++;
+    }
+
+    /**
+     * Whether a periodic axis has fewer than 4 cells, so that discs are re-predicted in full as they
+     * move ({@link #RECHECK}) and every column is in every neighbourhood.
+     */
+    public boolean hasRechecks() {
+        return recheckX > 0 || recheckY > 0;
     }
 
     /** Heap held by the per-disc and per-cell arrays, in bytes. */
@@ -284,7 +362,7 @@ public final class DiscTable {
     }
 
     /** Every internal disc's scene id, indexed by internal id (read only). */
-    public int[] sceneIds() {
+    int[] sceneIds() {
         return sceneIds;
     }
 

@@ -1,4 +1,4 @@
-package carom.engines.fast;
+package carom.engines.kernel;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;

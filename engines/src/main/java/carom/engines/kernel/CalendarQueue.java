@@ -1,4 +1,4 @@
-package carom.engines.fast;
+package carom.engines.kernel;
 
 import java.util.Arrays;
 
@@ -67,7 +67,7 @@ public final class CalendarQueue {
      *
      * @param buckets a power of two
      */
-    public CalendarQueue(int buckets, double[] keys, int keyStride, int keyAt, int[] links, int linkStride, int linkAt,
+    CalendarQueue(int buckets, double[] keys, int keyStride, int keyAt, int[] links, int linkStride, int linkAt,
                          int prevAt) {
         if (Integer.bitCount(buckets) != 1) {
             throw new IllegalArgumentException("buckets must be a power of two: " + buckets);
@@ -110,11 +110,11 @@ public final class CalendarQueue {
         links[i * linkStride + prevAt] = j;
     }
 
-    public int buckets() {
+    int buckets() {
         return buckets;
     }
 
-    public double width() {
+    double width() {
         return width;
     }
 
@@ -138,7 +138,7 @@ public final class CalendarQueue {
      * {@code time} is finite (times must be >= now). Members, because queues may share their key array
      * (one per domain of a parallel engine).
      */
-    public void rebuild(double newWidth, double now, int[] members, int count) {
+    void rebuild(double newWidth, double now, int[] members, int count) {
         width = newWidth;
         invWidth = 1 / newWidth;
         Arrays.fill(head, NIL);

@@ -1,45 +1,41 @@
-package carom.engines.fast;
+package carom.engines.kernel;
 
-import static carom.engines.fast.DiscTable.AXIS_BITS;
-import static carom.engines.fast.DiscTable.AXIS_MASK;
-import static carom.engines.fast.DiscTable.CELL;
-import static carom.engines.fast.DiscTable.CELL_MASK;
-import static carom.engines.fast.DiscTable.CNEXT;
-import static carom.engines.fast.DiscTable.COUNT;
-import static carom.engines.fast.DiscTable.CROSS_DOWN;
-import static carom.engines.fast.DiscTable.CROSS_LEFT;
-import static carom.engines.fast.DiscTable.CROSS_RIGHT;
-import static carom.engines.fast.DiscTable.CROSS_UP;
-import static carom.engines.fast.DiscTable.EV;
-import static carom.engines.fast.DiscTable.IM;
-import static carom.engines.fast.DiscTable.INF;
-import static carom.engines.fast.DiscTable.IS;
-import static carom.engines.fast.DiscTable.KIND_SHIFT;
-import static carom.engines.fast.DiscTable.NIL;
-import static carom.engines.fast.DiscTable.NONE;
-import static carom.engines.fast.DiscTable.PARTNER;
-import static carom.engines.fast.DiscTable.PCOUNT;
-import static carom.engines.fast.DiscTable.R;
-import static carom.engines.fast.DiscTable.RECHECK;
-import static carom.engines.fast.DiscTable.T;
-import static carom.engines.fast.DiscTable.VX;
-import static carom.engines.fast.DiscTable.VY;
-import static carom.engines.fast.DiscTable.X;
-import static carom.engines.fast.DiscTable.Y;
+import static carom.engines.kernel.DiscTable.AXIS_BITS;
+import static carom.engines.kernel.DiscTable.AXIS_MASK;
+import static carom.engines.kernel.DiscTable.CELL;
+import static carom.engines.kernel.DiscTable.CELL_MASK;
+import static carom.engines.kernel.DiscTable.CNEXT;
+import static carom.engines.kernel.DiscTable.COUNT;
+import static carom.engines.kernel.DiscTable.CROSS_DOWN;
+import static carom.engines.kernel.DiscTable.CROSS_LEFT;
+import static carom.engines.kernel.DiscTable.CROSS_RIGHT;
+import static carom.engines.kernel.DiscTable.CROSS_UP;
+import static carom.engines.kernel.DiscTable.INF;
+import static carom.engines.kernel.DiscTable.IS;
+import static carom.engines.kernel.DiscTable.KIND_SHIFT;
+import static carom.engines.kernel.DiscTable.NIL;
+import static carom.engines.kernel.DiscTable.NONE;
+import static carom.engines.kernel.DiscTable.PARTNER;
+import static carom.engines.kernel.DiscTable.PCOUNT;
+import static carom.engines.kernel.DiscTable.R;
+import static carom.engines.kernel.DiscTable.RECHECK;
+import static carom.engines.kernel.DiscTable.T;
+import static carom.engines.kernel.DiscTable.VX;
+import static carom.engines.kernel.DiscTable.VY;
+import static carom.engines.kernel.DiscTable.X;
+import static carom.engines.kernel.DiscTable.Y;
 
-import carom.core.engine.StallGuard;
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
 import carom.core.physics.PairLaw;
-import carom.core.physics.Restitution;
 import carom.core.state.Discs;
 
 /**
- * One thread's predictions on a {@link DiscTable}: advance, cell crossing, contact and wall times, the
- * 3x3 neighbourhood scan and the scheduling of a disc's one event (the algorithm of {@link FastRun}).
- * It holds the thread's scratch (the two-slot {@link #pair} window for core physics that takes
- * {@link Discs}, the visited cells, the candidate found so far), so each thread needs its own; no
- * allocation per event.
+ * One thread's predictions on a {@link DiscTable}: when a disc leaves its cell, its contact and wall
+ * times, the 3x3 neighbourhood scan and the scheduling of its one event (the algorithm of the
+ * package comment). It holds the thread's scratch (the visited cells, the candidate found so far) and
+ * shares its {@link DiscMotion}'s two-slot window, so each thread needs its own; no allocation per
+ * event.
  *
  * <p>Owner filter ({@code slabs}): with {@code colOwner} set, only discs of columns owned by
  * {@code owner} are predicted against, and an interior cell in an {@code edgeCol} column is scanned
@@ -49,11 +45,13 @@ import carom.core.state.Discs;
 public final class CellPredictor {
     private static final double[] NO_SHIFT = new double[9];
 
+    /** This thread's changes to the records, and its window for core physics that takes {@link Discs}. */
+    private final DiscMotion motion;
+    private final Discs pair;
     // The table's fields, copied (final) so that hot paths read them with one load.
     private final double[] rec;
     private final int stride;
     private final double sharedRadius;
-    private final double sharedInvMass;
     private final int[] ir;
     private final int[] cellHead;
     private final int cols;
@@ -62,17 +60,14 @@ public final class CellPredictor {
     private final double cellH;
     private final double width;
     private final double height;
-    private final boolean straight;
     private final boolean straightImages;
     private final boolean periodic;
     private final double recheckX;
     private final double recheckY;
+    private final boolean fullOnCross;
     private final Flight flight;
     private final Boundary boundary;
     private final Boundary.Walls walls;
-    private final Restitution restitution;
-    /** Under gravity every contact with something immovable is checked for rest (StallGuard). */
-    private final boolean gravity;
     private final int[] around;
     private final int[][] ahead;
     /** Owning domain of each column, or null if every column is seen; this predictor's domain. */
@@ -81,8 +76,6 @@ public final class CellPredictor {
     /** Columns whose interior cells still need the owner filter, or null. */
     private final boolean[] edgeCol;
 
-    /** Slots 0 and 1: discs copied in for core physics that works on {@link Discs}. */
-    public final Discs pair = new Discs(2);
     /** Cells a border cell's {@link #scan} visits (row-major index) and the image shift of their discs. */
     private final int[] visitCell = new int[9];
     /** The first disc of each cell a {@link #scan} visits. */
@@ -95,19 +88,21 @@ public final class CellPredictor {
     /** Side through which the last {@link #crossing} leaves (a crossing kind). */
     private byte crossKind;
     /** Predictions made (full or after a crossing). */
-    public long predictions;
+    private long predictions;
 
     /** A predictor that sees every column ({@code fast}). */
-    public CellPredictor(DiscTable table) {
-        this(table, null, 0, null);
+    public CellPredictor(DiscMotion motion) {
+        this(motion, null, 0, null);
     }
 
     /** A predictor that sees only columns with {@code colOwner[col] == owner} ({@code slabs}). */
-    public CellPredictor(DiscTable table, int[] colOwner, int owner, boolean[] edgeCol) {
+    public CellPredictor(DiscMotion motion, int[] colOwner, int owner, boolean[] edgeCol) {
+        DiscTable table = motion.table;
+        this.motion = motion;
+        this.pair = motion.pair;
         this.rec = table.rec;
         this.stride = table.stride;
         this.sharedRadius = table.sharedRadius;
-        this.sharedInvMass = table.sharedInvMass;
         this.ir = table.ir;
         this.cellHead = table.cellHead;
         this.cols = table.cols;
@@ -116,16 +111,14 @@ public final class CellPredictor {
         this.cellH = table.cellH;
         this.width = table.width;
         this.height = table.height;
-        this.straight = table.straight;
         this.straightImages = table.straightImages;
         this.periodic = table.periodic;
         this.recheckX = table.recheckX;
         this.recheckY = table.recheckY;
+        this.fullOnCross = table.fullOnCross;
         this.flight = table.flight;
         this.boundary = table.boundary;
         this.walls = table.walls;
-        this.restitution = table.restitution;
-        this.gravity = table.acceleration > 0;
         this.around = table.around;
         this.ahead = table.ahead;
         this.colOwner = colOwner;
@@ -133,215 +126,38 @@ public final class CellPredictor {
         this.edgeCol = edgeCol;
     }
 
-    public double radius(int i) {
+    /** Predictions made so far (full or after a crossing). */
+    public long predictions() {
+        return predictions;
+    }
+
+    private double radius(int i) {
         return stride > R ? rec[i * stride + R] : sharedRadius;
     }
 
-    public double invMass(int i) {
-        return stride > IM ? rec[i * stride + IM] : sharedInvMass;
-    }
-
-    /** Copies disc i into slot {@code slot} of {@link #pair}. */
-    public void load(int i, int slot) {
-        load(pair, i, slot);
-    }
-
-    /** Copies disc i into slot {@code slot} of {@code d}. */
-    public void load(Discs d, int i, int slot) {
-        int at = i * stride;
-        d.x[slot] = rec[at + X];
-        d.y[slot] = rec[at + Y];
-        d.vx[slot] = rec[at + VX];
-        d.vy[slot] = rec[at + VY];
-        d.t[slot] = rec[at + T];
-        d.radius[slot] = radius(i);
-        d.invMass[slot] = invMass(i);
-    }
-
-    /** Copies slot {@code slot} of {@link #pair} back into disc i's motion. */
-    public void store(int i, int slot) {
-        int at = i * stride;
-        rec[at + X] = pair.x[slot];
-        rec[at + Y] = pair.y[slot];
-        rec[at + VX] = pair.vx[slot];
-        rec[at + VY] = pair.vy[slot];
-        rec[at + T] = pair.t[slot];
-    }
-
-    /** Moves disc i to local {@code time} (its clock becomes {@code time}). */
-    public void advance(int i, double time) {
-        if (straight) {
-            // Flight.Straight.advance on the record.
-            int at = i * stride;
-            double dt = time - rec[at + T];
-            rec[at + X] += rec[at + VX] * dt;
-            rec[at + Y] += rec[at + VY] * dt;
-            rec[at + T] = time;
-        } else {
-            load(i, 0);
-            flight.advance(pair, 0, time);
-            store(i, 0);
-        }
+    private void load(int i, int slot) {
+        motion.load(i, slot);
     }
 
     /**
-     * Collides discs a and b at local {@code now} (absolute {@code abs}): both advanced, their
-     * velocities changed, restitution told, collision counters bumped (b's only if mobile); under
-     * gravity a contact with an immovable b goes to {@code guard}. Returns the collision's virial.
+     * Disc i's crossing event at local {@code now} through cell side {@code side}: advances it, moves
+     * it into the neighbouring cell and returns the local time of its next event, predicted against
+     * only the line of cells that entered its neighbourhood (in full where the table says so).
      */
-    public double collidePair(int a, int b, double now, double abs, StallGuard guard) {
-        advance(a, now);
-        advance(b, now);
-        int at = a * stride;
-        int bt = b * stride;
-        double dx = boundary.separationX(rec[bt + X] - rec[at + X]);
-        double dy = boundary.separationY(rec[bt + Y] - rec[at + Y]);
-        double e = restitution.pair(a, b, abs);
-        boolean bMobile = invMass(b) > 0;
-        if (gravity && !bMobile) {
-            double dist = Math.sqrt(dx * dx + dy * dy);
-            guard.pegContact(abs, a, b, dx / dist, dy / dist, rec[at + VX], rec[at + VY], dist);
-        }
-        // On the records, not through the pair window: no copies in and out at every collision.
-        double w = PairLaw.collide(rec, at + VX, bt + VX, rec, at + VY, bt + VY, invMass(a), invMass(b), dx, dy, e);
-        restitution.collided(a, abs);
-        ir[a * IS + COUNT]++;
-        if (bMobile) {
-            restitution.collided(b, abs);
-            ir[b * IS + COUNT]++;
-        }
-        return w;
+    public double crossAndPredict(int i, double now, byte side) {
+        motion.advance(i, now);
+        int packed = motion.moveCell(i, side);
+        return fullOnCross ? predictFull(i, now)
+                : predictAfterCrossing(i, now, side, packed & AXIS_MASK, packed >>> AXIS_BITS);
     }
 
     /**
-     * Bounces disc i off wall {@code wall} at local {@code now} (absolute {@code abs}): advanced,
-     * reflected, restitution told, its collision counter bumped; under gravity the contact goes to
-     * {@code guard}.
+     * Time from {@code now} until disc i, whose clock is {@code now}, leaves its cell (+Infinity if
+     * never): the horizon of a contact search that must agree with this predictor's.
      */
-    public void collideWall(int i, int wall, double now, double abs, StallGuard guard) {
-        advance(i, now);
-        double e = restitution.wall(i, abs);
+    public double timeToLeaveCell(int i, double now) {
         load(i, 0);
-        if (gravity) {
-            guard.wallContact(abs, i, wall, pair.vx[0], pair.vy[0]);
-        }
-        boundary.reflect(pair, 0, wall, e);
-        store(i, 0);
-        restitution.collided(i, abs);
-        ir[i * IS + COUNT]++;
-    }
-
-    /**
-     * Advances discs {@code members[0..count)} (every disc if {@code members} is null) to local
-     * {@code now}, then shifts their clocks and event times so that {@code now} becomes 0.
-     */
-    public void rebase(double now, int[] members, int count) {
-        for (int q = 0; q < count; q++) {
-            int i = members == null ? q : members[q];
-            advance(i, now);
-            int at = i * stride;
-            rec[at + T] = 0;
-            if (rec[at + EV] != INF) {
-                rec[at + EV] = Math.max(0, rec[at + EV] - now);
-            }
-        }
-    }
-
-    /**
-     * Every disc at local {@code local} (absolute {@code until}), in original id order, periodic
-     * positions wrapped into the box (serial: advances every disc).
-     */
-    public Discs finalState(DiscTable table, double local, double until) {
-        Discs out = table.scene.newDiscs();
-        finalRange(out, table.sceneIds(), 0, table.n, local, until);
-        return out;
-    }
-
-    /**
-     * {@link #finalState} for internal discs {@code from..to-1} only, into {@code out} at
-     * {@code order[k]} (the disc's scene id): threads may fill disjoint ranges at once.
-     */
-    public void finalRange(Discs out, int[] order, int from, int to, double local, double until) {
-        for (int k = from; k < to; k++) {
-            advance(k, local);
-            int o = order[k];
-            int at = k * stride;
-            out.x[o] = boundary.wrapX(rec[at + X]);
-            out.y[o] = boundary.wrapY(rec[at + Y]);
-            out.vx[o] = rec[at + VX];
-            out.vy[o] = rec[at + VY];
-            out.t[o] = until;
-        }
-    }
-
-    /** Every disc as {@link Discs} (the energy audit's test mode only: O(N) per call). */
-    public Discs snapshot() {
-        int n = rec.length / stride;
-        Discs all = new Discs(n);
-        for (int i = 0; i < n; i++) {
-            load(all, i, i);
-        }
-        return all;
-    }
-
-    /**
-     * Moves disc i to the neighbouring cell through side k (periodic edges move the position by exactly
-     * one box length) and relinks the cell lists; returns the new packed cell ({@code row << 14 | col}).
-     */
-    public int moveCell(int i, byte k) {
-        int packed = ir[i * IS + CELL];
-        int col = packed & AXIS_MASK;
-        int row = (packed >>> AXIS_BITS) & AXIS_MASK;
-        int old = row * cols + col;
-        switch (k) {
-            case CROSS_LEFT -> {
-                if (--col < 0) {
-                    col = cols - 1;
-                    rec[i * stride + X] += width;
-                }
-            }
-            case CROSS_RIGHT -> {
-                if (++col == cols) {
-                    col = 0;
-                    rec[i * stride + X] -= width;
-                }
-            }
-            case CROSS_DOWN -> {
-                if (--row < 0) {
-                    row = rows - 1;
-                    rec[i * stride + Y] += height;
-                }
-            }
-            default -> {
-                if (++row == rows) {
-                    row = 0;
-                    rec[i * stride + Y] -= height;
-                }
-            }
-        }
-        unlink(i, old);
-        link(i, row * cols + col);
-        ir[i * IS + CELL] = row << AXIS_BITS | col;
-        return row << AXIS_BITS | col;
-    }
-
-    /** Removes disc i from the list of cell {@code cell} (a cell holds a handful of discs). */
-    public void unlink(int i, int cell) {
-        int h = cellHead[cell];
-        if (h == i) {
-            cellHead[cell] = ir[i * IS + CNEXT];
-        } else {
-            while (ir[h * IS + CNEXT] != i) {
-                h = ir[h * IS + CNEXT];
-            }
-            ir[h * IS + CNEXT] = ir[i * IS + CNEXT];
-        }
-    }
-
-    /** Pushes disc i onto the list of cell {@code cell}. */
-    public void link(int i, int cell) {
-        ir[i * IS + CNEXT] = cellHead[cell];
-        cellHead[cell] = i;
+        return crossing(i, now);
     }
 
     /**
@@ -349,7 +165,7 @@ public final class CellPredictor {
      * leaves its cell; sets {@link #crossKind} (not used when the time is infinite).
      * Outer sides of a walled box are at infinity: the walls turn the disc back first.
      */
-    public double crossing(int i, double now) {
+    private double crossing(int i, double now) {
         int packed = ir[i * IS + CELL];
         int col = packed & AXIS_MASK;
         int row = (packed >>> AXIS_BITS) & AXIS_MASK;
@@ -457,7 +273,7 @@ public final class CellPredictor {
      * trajectory is unchanged, so its remembered best candidate is still the earliest of the cells it
      * saw; add the three cells that just entered its neighbourhood.
      */
-    public double predictAfterCrossing(int i, double now, byte k, int col, int row) {
+    private double predictAfterCrossing(int i, double now, byte k, int col, int row) {
         if (!straightImages) {
             load(i, 0);
         }

@@ -1,0 +1,305 @@
+package carom.engines.kernel;
+
+import static carom.engines.kernel.DiscTable.AXIS_BITS;
+import static carom.engines.kernel.DiscTable.AXIS_MASK;
+import static carom.engines.kernel.DiscTable.CELL;
+import static carom.engines.kernel.DiscTable.CNEXT;
+import static carom.engines.kernel.DiscTable.COUNT;
+import static carom.engines.kernel.DiscTable.CROSS_DOWN;
+import static carom.engines.kernel.DiscTable.CROSS_LEFT;
+import static carom.engines.kernel.DiscTable.CROSS_RIGHT;
+import static carom.engines.kernel.DiscTable.EV;
+import static carom.engines.kernel.DiscTable.IM;
+import static carom.engines.kernel.DiscTable.INF;
+import static carom.engines.kernel.DiscTable.IS;
+import static carom.engines.kernel.DiscTable.R;
+import static carom.engines.kernel.DiscTable.T;
+import static carom.engines.kernel.DiscTable.VX;
+import static carom.engines.kernel.DiscTable.VY;
+import static carom.engines.kernel.DiscTable.X;
+import static carom.engines.kernel.DiscTable.Y;
+
+import carom.core.engine.StallGuard;
+import carom.core.physics.Boundary;
+import carom.core.physics.Flight;
+import carom.core.physics.PairLaw;
+import carom.core.physics.Restitution;
+import carom.core.scene.Scene;
+import carom.core.state.Discs;
+
+/**
+ * One thread's changes to the records of a {@link DiscTable}: free flight (advance), pair and wall
+ * collisions on the records, moves between cells and the cell lists, clocks re-anchored, and the
+ * final state. A thread changes only discs it owns (all of them in {@code fast}, its domain's in
+ * {@code slabs}). It holds the thread's two-slot {@link #pair} window for core physics that takes
+ * {@link Discs}, which its {@link CellPredictor} shares, so each thread needs its own; no allocation
+ * per event.
+ */
+public final class DiscMotion {
+    final DiscTable table;
+    // The table's fields, copied (final) so that hot paths read them with one load.
+    private final Scene scene;
+    private final double[] rec;
+    private final int stride;
+    private final double sharedRadius;
+    private final double sharedInvMass;
+    private final int[] ir;
+    private final int[] cellHead;
+    private final int cols;
+    private final int rows;
+    private final double width;
+    private final double height;
+    private final boolean straight;
+    private final Flight flight;
+    private final Boundary boundary;
+    private final Restitution restitution;
+    /** Under gravity every contact with something immovable is checked for rest (StallGuard). */
+    private final boolean gravity;
+    /** Scene id of each internal disc: where the final state puts it. */
+    private final int[] sceneIds;
+
+    /** Slots 0 and 1: discs copied in for core physics that works on {@link Discs}. */
+    final Discs pair = new Discs(2);
+
+    public DiscMotion(DiscTable table) {
+        this.table = table;
+        this.scene = table.scene;
+        this.rec = table.rec;
+        this.stride = table.stride;
+        this.sharedRadius = table.sharedRadius;
+        this.sharedInvMass = table.sharedInvMass;
+        this.ir = table.ir;
+        this.cellHead = table.cellHead;
+        this.cols = table.cols;
+        this.rows = table.rows;
+        this.width = table.width;
+        this.height = table.height;
+        this.straight = table.straight;
+        this.flight = table.flight;
+        this.boundary = table.boundary;
+        this.restitution = table.restitution;
+        this.gravity = table.acceleration > 0;
+        this.sceneIds = table.sceneIds();
+    }
+
+    double radius(int i) {
+        return stride > R ? rec[i * stride + R] : sharedRadius;
+    }
+
+    double invMass(int i) {
+        return stride > IM ? rec[i * stride + IM] : sharedInvMass;
+    }
+
+    /** Copies disc i into slot {@code slot} of {@link #pair}. */
+    void load(int i, int slot) {
+        load(pair, i, slot);
+    }
+
+    /** Copies disc i into slot {@code slot} of {@code d} (any thread: this uses no scratch). */
+    public void load(Discs d, int i, int slot) {
+        int at = i * stride;
+        d.x[slot] = rec[at + X];
+        d.y[slot] = rec[at + Y];
+        d.vx[slot] = rec[at + VX];
+        d.vy[slot] = rec[at + VY];
+        d.t[slot] = rec[at + T];
+        d.radius[slot] = radius(i);
+        d.invMass[slot] = invMass(i);
+    }
+
+    /** Copies slot {@code slot} of {@link #pair} back into disc i's motion. */
+    private void store(int i, int slot) {
+        int at = i * stride;
+        rec[at + X] = pair.x[slot];
+        rec[at + Y] = pair.y[slot];
+        rec[at + VX] = pair.vx[slot];
+        rec[at + VY] = pair.vy[slot];
+        rec[at + T] = pair.t[slot];
+    }
+
+    /** Moves disc i to local {@code time} (its clock becomes {@code time}). */
+    public void advance(int i, double time) {
+        if (straight) {
+            // Flight.Straight.advance on the record.
+            int at = i * stride;
+            double dt = time - rec[at + T];
+            rec[at + X] += rec[at + VX] * dt;
+            rec[at + Y] += rec[at + VY] * dt;
+            rec[at + T] = time;
+        } else {
+            load(i, 0);
+            flight.advance(pair, 0, time);
+            store(i, 0);
+        }
+    }
+
+    /**
+     * Collides discs a and b at local {@code now} (absolute {@code abs}): both advanced, their
+     * velocities changed, restitution told, collision counters bumped (b's only if mobile); under
+     * gravity a contact with an immovable b goes to {@code guard}. Returns the collision's virial.
+     */
+    public double collidePair(int a, int b, double now, double abs, StallGuard guard) {
+        advance(a, now);
+        advance(b, now);
+        int at = a * stride;
+        int bt = b * stride;
+        double dx = boundary.separationX(rec[bt + X] - rec[at + X]);
+        double dy = boundary.separationY(rec[bt + Y] - rec[at + Y]);
+        double e = restitution.pair(a, b, abs);
+        boolean bMobile = invMass(b) > 0;
+        if (gravity && !bMobile) {
+            double dist = Math.sqrt(dx * dx + dy * dy);
+            guard.pegContact(abs, a, b, dx / dist, dy / dist, rec[at + VX], rec[at + VY], dist);
+        }
+        // On the records, not through the pair window: no copies in and out at every collision.
+        double w = PairLaw.collide(rec, at + VX, bt + VX, rec, at + VY, bt + VY, invMass(a), invMass(b), dx, dy, e);
+        restitution.collided(a, abs);
+        ir[a * IS + COUNT]++;
+        if (bMobile) {
+            restitution.collided(b, abs);
+            ir[b * IS + COUNT]++;
+        }
+        return w;
+    }
+
+    /**
+     * Bounces disc i off wall {@code wall} at local {@code now} (absolute {@code abs}): advanced,
+     * reflected, restitution told, its collision counter bumped; under gravity the contact goes to
+     * {@code guard}.
+     */
+    public void collideWall(int i, int wall, double now, double abs, StallGuard guard) {
+        advance(i, now);
+        double e = restitution.wall(i, abs);
+        load(i, 0);
+        if (gravity) {
+            guard.wallContact(abs, i, wall, pair.vx[0], pair.vy[0]);
+        }
+        boundary.reflect(pair, 0, wall, e);
+        store(i, 0);
+        restitution.collided(i, abs);
+        ir[i * IS + COUNT]++;
+    }
+
+    /**
+     * Advances discs {@code members[0..count)} (every disc if {@code members} is null) to local
+     * {@code now}, then shifts their clocks and event times so that {@code now} becomes 0.
+     */
+    public void rebase(double now, int[] members, int count) {
+        for (int q = 0; q < count; q++) {
+            int i = members == null ? q : members[q];
+            advance(i, now);
+            int at = i * stride;
+            rec[at + T] = 0;
+            if (rec[at + EV] != INF) {
+                rec[at + EV] = Math.max(0, rec[at + EV] - now);
+            }
+        }
+    }
+
+    /**
+     * Every disc at local {@code local} (absolute {@code until}), in original id order, periodic
+     * positions wrapped into the box (serial: advances every disc).
+     */
+    public Discs finalState(double local, double until) {
+        Discs out = scene.newDiscs();
+        finalRange(out, 0, sceneIds.length, local, until);
+        return out;
+    }
+
+    /**
+     * {@link #finalState} for internal discs {@code from..to-1} only, into {@code out} at their scene
+     * ids: threads may fill disjoint ranges at once.
+     */
+    public void finalRange(Discs out, int from, int to, double local, double until) {
+        int[] order = sceneIds;
+        for (int k = from; k < to; k++) {
+            advance(k, local);
+            int o = order[k];
+            int at = k * stride;
+            out.x[o] = boundary.wrapX(rec[at + X]);
+            out.y[o] = boundary.wrapY(rec[at + Y]);
+            out.vx[o] = rec[at + VX];
+            out.vy[o] = rec[at + VY];
+            out.t[o] = until;
+        }
+    }
+
+    /** Every disc as {@link Discs} (the energy audit's test mode only: O(N) per call). */
+    public Discs snapshot() {
+        int n = rec.length / stride;
+        Discs all = new Discs(n);
+        for (int i = 0; i < n; i++) {
+            load(all, i, i);
+        }
+        return all;
+    }
+
+    /**
+     * Disc i's crossing through cell side {@code side} at local {@code now}: advanced to {@code now}
+     * and moved into the neighbouring cell.
+     */
+    public void cross(int i, double now, byte side) {
+        advance(i, now);
+        moveCell(i, side);
+    }
+
+    /**
+     * Moves disc i to the neighbouring cell through side k (periodic edges move the position by exactly
+     * one box length) and relinks the cell lists; returns the new packed cell ({@code row << 14 | col}).
+     */
+    int moveCell(int i, byte k) {
+        int packed = ir[i * IS + CELL];
+        int col = packed & AXIS_MASK;
+        int row = (packed >>> AXIS_BITS) & AXIS_MASK;
+        int old = row * cols + col;
+        switch (k) {
+            case CROSS_LEFT -> {
+                if (--col < 0) {
+                    col = cols - 1;
+                    rec[i * stride + X] += width;
+                }
+            }
+            case CROSS_RIGHT -> {
+                if (++col == cols) {
+                    col = 0;
+                    rec[i * stride + X] -= width;
+                }
+            }
+            case CROSS_DOWN -> {
+                if (--row < 0) {
+                    row = rows - 1;
+                    rec[i * stride + Y] += height;
+                }
+            }
+            default -> {
+                if (++row == rows) {
+                    row = 0;
+                    rec[i * stride + Y] -= height;
+                }
+            }
+        }
+        unlink(i, old);
+        link(i, row * cols + col);
+        ir[i * IS + CELL] = row << AXIS_BITS | col;
+        return row << AXIS_BITS | col;
+    }
+
+    /** Removes disc i from the list of cell {@code cell} (a cell holds a handful of discs). */
+    void unlink(int i, int cell) {
+        int h = cellHead[cell];
+        if (h == i) {
+            cellHead[cell] = ir[i * IS + CNEXT];
+        } else {
+            while (ir[h * IS + CNEXT] != i) {
+                h = ir[h * IS + CNEXT];
+            }
+            ir[h * IS + CNEXT] = ir[i * IS + CNEXT];
+        }
+    }
+
+    /** Pushes disc i onto the list of cell {@code cell}. */
+    void link(int i, int cell) {
+        ir[i * IS + CNEXT] = cellHead[cell];
+        cellHead[cell] = i;
+    }
+}

@@ -1,0 +1,139 @@
+package carom.engines.slabs;
+
+import java.util.Arrays;
+
+/**
+ * The cross-domain predictions: an indexed binary min-heap of discs keyed by their predicted cross
+ * event's time, with at most one entry per disc (a new prediction for a queued disc moves it), so
+ * that an entry can be updated or removed in O(log n) without a search. Each entry carries the
+ * partner of the event and the partner's collision counter at prediction. Single writer (the
+ * coordinator, in serial phases).
+ */
+final class CrossHeap {
+    private final double[] time;
+    private final int[] partner;
+    private final int[] partnerCount;
+    /** Each disc's index in {@link #heap}, -1 if it has no entry. */
+    private final int[] pos;
+    private int[] heap = new int[64];
+    private int size;
+
+    /** An empty heap for discs 0..n-1. */
+    CrossHeap(int n) {
+        this.time = new double[n];
+        this.partner = new int[n];
+        this.partnerCount = new int[n];
+        this.pos = new int[n];
+        Arrays.fill(pos, -1);
+    }
+
+    boolean isEmpty() {
+        return size == 0;
+    }
+
+    /** The disc with the earliest cross event (the heap must not be empty). */
+    int top() {
+        return heap[0];
+    }
+
+    /** Disc i's cross event time (local), while it has an entry. */
+    double time(int i) {
+        return time[i];
+    }
+
+    /** Disc i's cross event partner code, while it has an entry. */
+    int partner(int i) {
+        return partner[i];
+    }
+
+    /** The partner's collision counter when disc i's cross event was predicted. */
+    int partnerCount(int i) {
+        return partnerCount[i];
+    }
+
+    /** Gives disc i the cross event at time t with {@code p} (whose counter was then {@code pCount}). */
+    void put(int i, double t, int p, int pCount) {
+        time[i] = t;
+        partner[i] = p;
+        partnerCount[i] = pCount;
+        int k = pos[i];
+        if (k < 0) {
+            if (size == heap.length) {
+                heap = Arrays.copyOf(heap, 2 * size);
+            }
+            k = size++;
+            heap[k] = i;
+            pos[i] = k;
+        }
+        siftUp(k);
+        siftDown(pos[i]);
+    }
+
+    /** Removes disc i's entry, if it has one. */
+    void remove(int i) {
+        int k = pos[i];
+        if (k < 0) {
+            return;
+        }
+        pos[i] = -1;
+        int last = heap[--size];
+        if (k == size) {
+            return;
+        }
+        heap[k] = last;
+        pos[last] = k;
+        siftUp(k);
+        siftDown(pos[last]);
+    }
+
+    /**
+     * Re-anchors every entry's time at local {@code now} (now becomes 0, no time below 0): a monotone
+     * map, so the heap stays ordered.
+     */
+    void rebase(double now) {
+        for (int k = 0; k < size; k++) {
+            int i = heap[k];
+            time[i] = Math.max(0, time[i] - now);
+        }
+    }
+
+    private void siftUp(int k) {
+        int i = heap[k];
+        double t = time[i];
+        while (k > 0) {
+            int parent = (k - 1) >>> 1;
+            int p = heap[parent];
+            if (time[p] <= t) {
+                break;
+            }
+            heap[k] = p;
+            pos[p] = k;
+            k = parent;
+        }
+        heap[k] = i;
+        pos[i] = k;
+    }
+
+    private void siftDown(int k) {
+        int i = heap[k];
+        double t = time[i];
+        int half = size >>> 1;
+        while (k < half) {
+            int child = 2 * k + 1;
+            int c = heap[child];
+            int right = child + 1;
+            if (right < size && time[heap[right]] < time[c]) {
+                child = right;
+                c = heap[child];
+            }
+            if (t <= time[c]) {
+                break;
+            }
+            heap[k] = c;
+            pos[c] = k;
+            k = child;
+        }
+        heap[k] = i;
+        pos[i] = k;
+    }
+}

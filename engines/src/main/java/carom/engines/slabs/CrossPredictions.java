@@ -1,0 +1,139 @@
+package carom.engines.slabs;
+
+import carom.core.physics.Boundary;
+import carom.core.physics.Flight;
+import carom.core.state.Discs;
+import carom.engines.kernel.DiscMotion;
+import carom.engines.kernel.DiscTable;
+
+/**
+ * Cross-domain events, predicted serially (at barriers) because they read discs of two domains.
+ *
+ * <p>A contact between discs of two domains, and a disc crossing into a foreign column (a migration),
+ * are cross events. They are predicted for every mobile disc in an edge column ({@link #predict}),
+ * into a {@link CrossHeap} keyed by time; a prediction against disc j is valid while j's collision
+ * counter is unchanged, exactly as in the kernel. The heap's earliest valid event bounds the next
+ * window ({@link SlabsRun}).
+ */
+final class CrossPredictions {
+    /** Partner code: the disc's next event is its migration into a foreign column. */
+    static final int MIGRATE = Integer.MIN_VALUE + 1;
+    private static final int NONE = Integer.MIN_VALUE;
+    private static final double INF = Double.POSITIVE_INFINITY;
+
+    private final DiscTable table;
+    private final SlabColumns columns;
+    private final Domain[] domains;
+    /** Reads records into {@link #xpair} (it uses no scratch of its own). */
+    private final DiscMotion reader;
+    private final Flight flight;
+    private final Boundary boundary;
+    private final boolean fullOnCross;
+    private final CrossHeap heap;
+    /** Scratch for serial contact tests. */
+    private final Discs xpair = new Discs(2);
+    /** Cross predictions made (counter {@code crossPredictions}). */
+    long predictions;
+
+    CrossPredictions(DiscTable table, SlabColumns columns, Domain[] domains) {
+        this.table = table;
+        this.columns = columns;
+        this.domains = domains;
+        this.reader = domains[0].motion;
+        this.flight = table.flight;
+        this.boundary = table.boundary;
+        this.fullOnCross = table.fullOnCross;
+        this.heap = new CrossHeap(table.n);
+    }
+
+    /** The heap's earliest event after re-predicting stale ones: its disc, or -1 if there is none. */
+    int validTop(double now) {
+        while (!heap.isEmpty()) {
+            int i = heap.top();
+            if (valid(i)) {
+                return i;
+            }
+            predict(i, now);
+        }
+        return -1;
+    }
+
+    /** Local time of disc i's cross event (while it has one). */
+    double time(int i) {
+        return heap.time(i);
+    }
+
+    /** Disc i's cross event partner: a disc, or {@link #MIGRATE}. */
+    int partner(int i) {
+        return heap.partner(i);
+    }
+
+    /** Whether disc i's cross prediction still holds, given that i itself has not changed since. */
+    boolean valid(int i) {
+        int p = heap.partner(i);
+        return p >= 0 ? table.changeCount(p) == heap.partnerCount(i)
+                : p != MIGRATE || (table.eventTime(i) == heap.time(i) && columns.migratesAtEvent(i, columns.ownerOfDisc(i)));
+    }
+
+    /** Shifts every cross event time so that local {@code now} becomes 0 (with the clocks). */
+    void rebase(double now) {
+        heap.rebase(now);
+    }
+
+    /**
+     * Predicts mobile disc i's earliest cross event from local {@code now}: a contact with a disc in a
+     * foreign column next to its cell, or its migration if its scheduled event is one. Discs outside
+     * edge columns leave the heap.
+     */
+    void predict(int i, double now) {
+        if (table.invMass(i) == 0) {
+            return;
+        }
+        int col = table.colOfDisc(i);
+        if (!columns.edge[col]) {
+            heap.remove(i);
+            return;
+        }
+        predictions++;
+        int row = table.rowOfDisc(i);
+        int own = columns.owner[col];
+        Domain dom = domains[own];
+        double best = INF;
+        int bestP = NONE;
+        if (columns.migratesAtEvent(i, own)) {
+            best = table.eventTime(i);
+            bestP = MIGRATE;
+        }
+        // Contacts are searched up to the disc's next cell side, as the domain searches (quartics).
+        double horizon = INF;
+        if (fullOnCross) {
+            horizon = now + dom.pred.timeToLeaveCell(i, now);
+        }
+        reader.load(xpair, i, 0);
+        for (int dc = -1; dc <= 1; dc += 2) {
+            int c = columns.foreignColumn(col, dc, own);
+            if (c < 0) {
+                continue;
+            }
+            for (int dr = -1; dr <= 1; dr++) {
+                int r = columns.wrappedRow(row + dr);
+                if (r < 0) {
+                    continue;
+                }
+                for (int j = table.firstInCell(c, r); j != DiscTable.NIL; j = table.nextInCell(j)) {
+                    reader.load(xpair, j, 1);
+                    double t = now + flight.timeToContact(xpair, 0, 1, now, horizon, boundary);
+                    if (t < best) {
+                        best = t;
+                        bestP = j;
+                    }
+                }
+            }
+        }
+        if (best == INF) {
+            heap.remove(i);
+            return;
+        }
+        heap.put(i, best, bestP, bestP >= 0 ? table.changeCount(bestP) : 0);
+    }
+}

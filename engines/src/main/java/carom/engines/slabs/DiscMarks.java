@@ -1,0 +1,67 @@
+package carom.engines.slabs;
+
+/**
+ * Per-disc marks that the domains share with the coordinator (only with several domains). They are
+ * touched only for discs in edge columns: a per-disc array read on every event would cost a cache
+ * miss per event. During a window each domain writes the marks of its own discs only; the
+ * coordinator reads them between windows (the barrier orders the two).
+ */
+final class DiscMarks {
+    /** The window in which each disc last changed, and the number of the window under way. */
+    private final int[] changedIn;
+    private int window;
+    /** Each disc's last log entry with an edge-column state in the window it changed in (-1 if none). */
+    private final int[] lastEntry;
+    /** The undo in which each disc was last re-queued, and the number of the undo under way. */
+    private final int[] requeuedIn;
+    private int undo;
+
+    DiscMarks(int n) {
+        this.changedIn = new int[n];
+        this.lastEntry = new int[n];
+        this.requeuedIn = new int[n];
+    }
+
+    /** Coordinator: a new window starts; no disc has changed in it yet. */
+    void startWindow() {
+        window++;
+    }
+
+    /** Whether disc i changed (had an event as an edge disc) in the window under way. */
+    boolean changedThisWindow(int i) {
+        return changedIn[i] == window;
+    }
+
+    /** Marks disc i changed in this window (its segment chain then empty); false if it already was. */
+    boolean markChanged(int i) {
+        if (changedIn[i] == window) {
+            return false;
+        }
+        changedIn[i] = window;
+        lastEntry[i] = -1;
+        return true;
+    }
+
+    /** Disc i's last log entry with an edge-column state in this window, or -1. */
+    int lastEntry(int i) {
+        return lastEntry[i];
+    }
+
+    void setLastEntry(int i, int entry) {
+        lastEntry[i] = entry;
+    }
+
+    /** A new undo starts: every disc may be re-queued once in it. */
+    void startUndo() {
+        undo++;
+    }
+
+    /** Whether disc i is met for the first time in the undo under way (then marks it). */
+    boolean firstInThisUndo(int i) {
+        if (requeuedIn[i] == undo) {
+            return false;
+        }
+        requeuedIn[i] = undo;
+        return true;
+    }
+}

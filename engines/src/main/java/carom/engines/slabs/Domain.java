@@ -1,0 +1,300 @@
+package carom.engines.slabs;
+
+import static carom.engines.kernel.DiscTable.HIT;
+import static carom.engines.kernel.DiscTable.RECHECK;
+
+import carom.core.engine.ProgressListener;
+import carom.core.engine.StallGuard;
+import carom.core.observe.EnergyAudit;
+import carom.core.observe.VirialAccumulator;
+import carom.core.scene.Scene;
+import carom.engines.kernel.CalendarQueue;
+import carom.engines.kernel.CellPredictor;
+import carom.engines.kernel.DiscMotion;
+import carom.engines.kernel.DiscTable;
+
+/**
+ * One slab: {@code fast}'s event loop, on the kernel, over the discs of its columns, with an
+ * {@link UndoLog} while windows can be rolled back. Its methods run on its own thread during a
+ * window and the other per-domain tasks, and on the coordinator's in serial phases (the owner then
+ * waits at the barrier). Domain 0 is the coordinator's own.
+ */
+final class Domain {
+    private static final double INF = Double.POSITIVE_INFINITY;
+
+    final int id;
+    private final DiscTable table;
+    private final SlabColumns columns;
+    private final RunClock clock;
+    private final DomainTask task;
+    final CalendarQueue queue;
+    /** This domain's changes to the records, and its predictions (its own scratch, only its own columns). */
+    final DiscMotion motion;
+    final CellPredictor pred;
+    /** Only with several domains (then windows can be rolled back); else null. */
+    final UndoLog log;
+    private final boolean logging;
+    private final StallGuard stallGuard;
+    final VirialAccumulator virial;
+    /** Energy audit after every collision (single domain only; with several, the run audits at barriers). */
+    private final EnergyAudit audit;
+    private final ProgressListener progress;
+    private final int n;
+
+    long events;
+    long pairCollisions;
+    long wallCollisions;
+    long crossings;
+    long staleEvents;
+    long undoneEvents;
+    /** This domain's discs at the last {@link #replanOwn} (scratch), and its calendar's span then. */
+    private int[] members = new int[0];
+    double span;
+    /** CPU time spent in windows (this domain's thread), and in the last one. */
+    long windowCpuNanos;
+    long lastWindowCpu;
+
+    /** Where the last window stopped before its end (a migration), +Infinity if it did not. */
+    double stopTime;
+    int stopDisc;
+
+    Domain(int id, DiscTable table, SlabColumns columns, DiscMarks marks, RunClock clock, DomainTask task,
+           EnergyAudit audit, ProgressListener progress, Scene scene) {
+        this.id = id;
+        this.table = table;
+        this.columns = columns;
+        this.clock = clock;
+        this.task = task;
+        this.n = table.n;
+        this.queue = table.newCalendar(n / columns.domains);
+        this.logging = columns.domains > 1;
+        this.motion = new DiscMotion(table);
+        this.pred = logging ? new CellPredictor(motion, columns.owner, id, columns.edge) : new CellPredictor(motion);
+        this.log = logging ? new UndoLog(motion, columns, marks) : null;
+        this.stallGuard = new StallGuard(scene, table::sceneId);
+        this.virial = VirialAccumulator.forRun(clock.until);
+        this.audit = audit;
+        this.progress = progress;
+    }
+
+    /** Worker thread body: run each published task, then report done, until the run shuts down. */
+    void work(SpinParkBarrier barrier) {
+        barrier.register(id);
+        while (barrier.awaitTask(id)) {
+            runTaskSafely(task.kind);
+            barrier.finished(id);
+        }
+    }
+
+    /** Runs task {@code kind} ({@link DomainTask}) on this domain; a failure is left in the task. */
+    void runTaskSafely(int kind) {
+        if (kind == DomainTask.WINDOW) {
+            runWindowSafely(task.windowEnd, task.windowInclusive);
+            return;
+        }
+        try {
+            switch (kind) {
+                case DomainTask.PREDICT -> predictOwn();
+                case DomainTask.REPLAN -> replanOwn(task.shift);
+                case DomainTask.FINAL -> motion.finalRange(task.finalOut, (int) ((long) n * id / columns.domains),
+                        (int) ((long) n * (id + 1) / columns.domains), clock.untilLocal, clock.until);
+                default -> throw new IllegalStateException("unknown task " + kind);
+            }
+        } catch (Throwable e) {
+            task.failure = e;
+        }
+    }
+
+    private void runWindowSafely(double end, boolean inclusive) {
+        long c0 = SlabsCounters.cpuNanos();
+        try {
+            runWindow(end, inclusive);
+        } catch (Throwable t) {
+            task.failure = t;
+            stopTime = -INF;
+        }
+        lastWindowCpu = SlabsCounters.cpuNanos() - c0;
+        windowCpuNanos += lastWindowCpu;
+    }
+
+    /** Schedules every mobile disc of this domain's columns (before the first window). */
+    private void predictOwn() {
+        for (int i = 0; i < n; i++) {
+            if (columns.ownerOfDisc(i) == id && table.invMass(i) > 0) {
+                table.setEventTime(i, predictFull(i, 0));
+            }
+        }
+    }
+
+    /**
+     * Moves this domain's clocks so that local {@code shift} becomes 0 (none if 0), then sizes its
+     * calendar from its mean event delay and rebuilds it (its discs in id order, as the calendar's
+     * ties depend on it).
+     */
+    private void replanOwn(double shift) {
+        int count = 0;
+        for (int i = 0; i < n; i++) {
+            if (columns.ownerOfDisc(i) == id) {
+                count++;
+            }
+        }
+        if (members.length < count) {
+            members = new int[count];
+        }
+        int m = 0;
+        for (int i = 0; i < n; i++) {
+            if (columns.ownerOfDisc(i) == id) {
+                members[m++] = i;
+            }
+        }
+        if (shift > 0) {
+            motion.rebase(shift, members, count);
+        }
+        span = table.planCalendar(queue, members, count, 0, clock.untilLocal);
+    }
+
+    /** Starts a window: an empty log, no stop. */
+    void startWindow() {
+        log.clear();
+        stopTime = INF;
+        stopDisc = -1;
+    }
+
+    /**
+     * Processes this domain's events before {@code end} (up to it if {@code inclusive}); stops early
+     * at a migration, which only the serial phase may carry out.
+     */
+    void runWindow(double end, boolean inclusive) {
+        long progressMark = events;
+        while (true) {
+            int i = queue.peek();
+            if (i < 0) {
+                return;
+            }
+            double now = queue.time(i);
+            if (now > end || (now == end && !inclusive)) {
+                return;
+            }
+            if (logging && columns.migratesAtEvent(i, id)) {
+                stopTime = now;
+                stopDisc = i;
+                return;
+            }
+            if (logging) {
+                log.beginEvent(now, events, pairCollisions, wallCollisions, crossings, staleEvents);
+                log.save(i);
+            }
+            queue.pollTop();
+            events++;
+            int other = table.partner(i);
+            byte k = table.kind(i);
+            stallGuard.event(clock.epoch + now, i, k != HIT ? StallGuard.CELL_SIDE : other);
+            if (k == RECHECK) {
+                advance(i, now);
+                queue.insert(i, predictFull(i, now));
+            } else if (k != HIT) {
+                crossings++;
+                queue.insert(i, pred.crossAndPredict(i, now, k));
+            } else {
+                int p = other;
+                if (p >= 0) {
+                    if (table.predictionStale(i, p)) {
+                        staleEvents++;
+                        advance(i, now);
+                        queue.insert(i, predictFull(i, now));
+                    } else {
+                        collidePair(i, p, now);
+                    }
+                } else {
+                    collideWall(i, DiscTable.wallOf(p), now);
+                }
+            }
+            if (logging) {
+                log.markIfEdge(i);
+            } else if (events - progressMark >= (1 << 16)) {
+                progressMark = events;
+                progress.simulatedTime(clock.epoch + now);
+            }
+        }
+    }
+
+    /**
+     * Undoes every logged event at or after local {@code tStar}, except those up to log index
+     * {@code keep} (events at tStar itself that must stand): records, cells, queue, counters, virial.
+     */
+    void undo(double tStar, int keep, DiscMarks marks) {
+        int k = log.firstEventToUndo(tStar, keep);
+        int logged = log.events();
+        if (k == logged) {
+            return;
+        }
+        undoneEvents += logged - k;
+        int first = log.firstEntry(k);
+        int entries = log.entries();
+        for (int e = first; e < entries; e++) {
+            queue.remove(log.disc(e));
+        }
+        log.restoreFrom(first);
+        // Each restored disc goes back in the queue once, at the event time its record now holds.
+        marks.startUndo();
+        for (int e = first; e < entries; e++) {
+            int i = log.disc(e);
+            if (marks.firstInThisUndo(i)) {
+                queue.insert(i, table.eventTime(i));
+            }
+        }
+        for (int q = k; q < logged; q++) {
+            if (log.virial(q) != 0) {
+                virial.add(clock.epoch + log.time(q), -log.virial(q));
+            }
+        }
+        events = log.counterBefore(k, UndoLog.EVENTS);
+        pairCollisions = log.counterBefore(k, UndoLog.PAIR_COLLISIONS);
+        wallCollisions = log.counterBefore(k, UndoLog.WALL_COLLISIONS);
+        crossings = log.counterBefore(k, UndoLog.CROSSINGS);
+        staleEvents = log.counterBefore(k, UndoLog.STALE_EVENTS);
+        log.truncate(k);
+    }
+
+    void advance(int i, double time) {
+        motion.advance(i, time);
+    }
+
+    double predictFull(int i, double now) {
+        return pred.predictFull(i, now);
+    }
+
+    private void collidePair(int a, int b, double now) {
+        double abs = clock.epoch + now;
+        if (logging) {
+            log.save(b);
+        }
+        double w = motion.collidePair(a, b, now, abs, stallGuard);
+        pairCollisions++;
+        virial.add(abs, w);
+        if (logging) {
+            log.setVirial(w);
+        }
+        if (audit != null && !logging) {
+            audit.check(motion.snapshot(), table.flight, now, abs);
+        }
+        queue.insert(a, predictFull(a, now));
+        if (table.invMass(b) > 0) {
+            queue.remove(b);
+            queue.insert(b, predictFull(b, now));
+        }
+        if (logging) {
+            log.markIfEdge(b);
+        }
+    }
+
+    private void collideWall(int i, int wall, double now) {
+        double abs = clock.epoch + now;
+        motion.collideWall(i, wall, now, abs, stallGuard);
+        wallCollisions++;
+        if (audit != null && !logging) {
+            audit.check(motion.snapshot(), table.flight, now, abs);
+        }
+        queue.insert(i, predictFull(i, now));
+    }
+}

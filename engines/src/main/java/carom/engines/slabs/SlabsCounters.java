@@ -1,0 +1,123 @@
+package carom.engines.slabs;
+
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
+import java.util.HashMap;
+import java.util.Map;
+
+/**
+ * The measurement counters of a slabs run, kept by the coordinator, and the map of all counters the
+ * run reports ({@link carom.core.engine.RunResult#counters()}):
+ * {@code domains}, {@code windows}, {@code commits} (windows without violation),
+ * {@code rollbacks}, {@code undoneEvents}, {@code crossDomainEvents} (contacts processed serially),
+ * {@code migrations}, {@code crossPredictions}, {@code serialNanos} and {@code windowNanos} (wall time
+ * in serial phases and in windows, on the coordinating thread), {@code setupNanos}, {@code startNanos}
+ * and {@code finalNanos} (wall time building the table and domains, making the first predictions, and
+ * filling the final state), {@code serialCpuNanos} and
+ * {@code windowCpuNanos} (CPU time of the serial phases, and of all domains in windows),
+ * {@code criticalCpuNanos} (the sum over windows of the slowest domain's CPU time: with
+ * {@code serialCpuNanos}, what the run would take on dedicated cores, barrier latency aside; on a
+ * loaded machine wall time mostly measures the scheduler), {@code barrierSpins} (the spins in force),
+ * {@code slabK.events} and
+ * {@code slabK.windowCpuNanos} per slab K (with several), and {@code fast}'s counters.
+ */
+final class SlabsCounters {
+    private static final ThreadMXBean CPU = ManagementFactory.getThreadMXBean();
+
+    long resyncs;
+    long windows;
+    long commits;
+    long rollbacks;
+    long crossDomainEvents;
+    long migrations;
+    long crossPairCollisions;
+    long serialNanos;
+    long windowNanos;
+    /** Wall time of the constructor (table and domains), of the first predictions, of the final state. */
+    long setupNanos;
+    long startNanos;
+    long finalNanos;
+    /** CPU time of the coordinator in serial phases (robust to a loaded machine, unlike wall time). */
+    long serialCpuNanos;
+    /** Sum over windows of the slowest domain's CPU time: the windows' wall time on dedicated cores. */
+    long criticalCpuNanos;
+
+    /** CPU time of the calling thread, in nanoseconds. */
+    static long cpuNanos() {
+        return CPU.getCurrentThreadCpuTime();
+    }
+
+    /** Pair collisions: the serial ones and every domain's. */
+    long pairCollisions(Domain[] domains) {
+        long pair = crossPairCollisions;
+        for (Domain d : domains) {
+            pair += d.pairCollisions;
+        }
+        return pair;
+    }
+
+    long wallCollisions(Domain[] domains) {
+        long wall = 0;
+        for (Domain d : domains) {
+            wall += d.wallCollisions;
+        }
+        return wall;
+    }
+
+    /** Events: the serial ones (cross-domain contacts, migrations) and every domain's. */
+    long events(Domain[] domains) {
+        long events = crossDomainEvents + migrations;
+        for (Domain d : domains) {
+            events += d.events;
+        }
+        return events;
+    }
+
+    /** Every counter the run reports, by its key. */
+    Map<String, Long> toMap(Domain[] domains, long crossPredictions, int spins) {
+        long crossings = migrations;
+        long stale = 0;
+        long predictions = 0;
+        long undoneEvents = 0;
+        for (Domain d : domains) {
+            crossings += d.crossings;
+            stale += d.staleEvents;
+            predictions += d.pred.predictions();
+            undoneEvents += d.undoneEvents;
+        }
+        int domainCount = domains.length;
+        Map<String, Long> counters = new HashMap<>();
+        counters.put("domains", (long) domainCount);
+        counters.put("events", events(domains));
+        counters.put("cellCrossings", crossings);
+        counters.put("staleEvents", stale);
+        counters.put("predictions", predictions);
+        counters.put("resyncs", resyncs);
+        counters.put("windows", windows);
+        counters.put("commits", commits);
+        counters.put("rollbacks", rollbacks);
+        counters.put("undoneEvents", undoneEvents);
+        counters.put("crossDomainEvents", crossDomainEvents);
+        counters.put("migrations", migrations);
+        counters.put("crossPredictions", crossPredictions);
+        counters.put("serialNanos", serialNanos);
+        counters.put("windowNanos", windowNanos);
+        counters.put("setupNanos", setupNanos);
+        counters.put("startNanos", startNanos);
+        counters.put("finalNanos", finalNanos);
+        counters.put("serialCpuNanos", serialCpuNanos);
+        counters.put("criticalCpuNanos", criticalCpuNanos);
+        long windowCpu = 0;
+        for (Domain d : domains) {
+            windowCpu += d.windowCpuNanos;
+            if (domainCount > 1) {
+                // Per slab, to tell a systematic imbalance (one slab always heavier) from noise.
+                counters.put("slab" + d.id + ".events", d.events);
+                counters.put("slab" + d.id + ".windowCpuNanos", d.windowCpuNanos);
+            }
+        }
+        counters.put("windowCpuNanos", windowCpu);
+        counters.put("barrierSpins", (long) spins);
+        return Map.copyOf(counters);
+    }
+}
