@@ -43,6 +43,7 @@ import picocli.CommandLine.Spec;
 final class SimulateCommand implements Callable<Integer> {
     /** Engines that run on the calling thread alone and ignore {@code --threads}. */
     private static final Set<String> SINGLE_THREADED = Set.of("serial", "fast", "stepped");
+
     @Spec
     CommandSpec spec;
 
