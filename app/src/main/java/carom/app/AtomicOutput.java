@@ -1,6 +1,7 @@
 package carom.app;
 
 import carom.core.BadInputException;
+import carom.core.Quoted;
 import java.io.BufferedWriter;
 import java.io.IOException;
 import java.io.OutputStreamWriter;
@@ -8,19 +9,38 @@ import java.io.UncheckedIOException;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
+import java.time.Duration;
+import java.time.Instant;
 import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.HexFormat;
 import java.util.List;
+import java.util.Set;
 import java.util.concurrent.ThreadLocalRandom;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 /**
  * Output files that appear whole or not at all. Each file is first written to a hidden temporary
  * file next to its target (same directory, so the final rename is atomic); only {@link #commit} moves
  * them into place, after every one of them has been written. Closing without committing deletes the
  * temporary files, so a failure never leaves a half-written or newly created file behind.
+ *
+ * <p>The file staged last certifies the others: {@link #commit} removes an old file of its name first
+ * and moves it into place last, so whenever it is there, the files staged before it are complete and
+ * from the same run, even if the process was killed between two renames. ({@code simulate} stages its
+ * summary last.)
+ *
+ * <p>A process killed while writing (SIGKILL, a power cut) cannot delete its temporary files. They are
+ * named {@code .TARGET.carom-PID-NS-RANDOM.tmp} (PID the writer's process id, NS its pid namespace),
+ * and the next output into the same directory removes those of a process that no longer runs, and any
+ * of them a day old (a process id reused since, another machine sharing the directory). Nothing else
+ * is ever touched.
  */
 public final class AtomicOutput implements AutoCloseable {
     /** Writes one file's content. */
@@ -39,8 +59,16 @@ public final class AtomicOutput implements AutoCloseable {
     }
 
     private static final int BUFFER = 1 << 16;
+    /** Our temporary files and nothing else: the target's name, then pid, namespace and a random part. */
+    static final Pattern TEMP_NAME = Pattern.compile("\\..+\\.carom-(\\d{1,19})-([0-9a-f]{8})-[0-9a-f]{16}\\.tmp");
+    /** No writer keeps a temporary file this long: whatever its process id says, it is debris. */
+    static final Duration STALE_ANYWAY = Duration.ofDays(1);
+    /** Characters of the target's name kept in a temporary's name, so that it stays within a file name's limit. */
+    private static final int NAME_CHARS_KEPT = 120;
 
     private final List<Staged> staged = new ArrayList<>();
+    /** Directories already cleared of debris by this output. */
+    private final Set<Path> swept = new HashSet<>();
 
     /**
      * Bad input unless {@code target} can be created or replaced: its directory exists and is writable
@@ -50,13 +78,13 @@ public final class AtomicOutput implements AutoCloseable {
         Path absolute = target.toAbsolutePath();
         Path dir = absolute.getParent();
         if (dir == null || !Files.isDirectory(dir)) {
-            throw new BadInputException(what + ": directory " + dir + " does not exist");
+            throw new BadInputException(what + ": directory " + Quoted.fileName(String.valueOf(dir)) + " does not exist");
         }
         if (!Files.isWritable(dir)) {
-            throw new BadInputException(what + ": cannot write in directory " + dir);
+            throw new BadInputException(what + ": cannot write in directory " + Quoted.fileName(dir.toString()));
         }
         if (Files.isDirectory(absolute)) {
-            throw new BadInputException(what + ": " + target + " is a directory");
+            throw new BadInputException(what + ": " + Quoted.fileName(target.toString()) + " is a directory");
         }
     }
 
@@ -67,7 +95,7 @@ public final class AtomicOutput implements AutoCloseable {
                 StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE), StandardCharsets.UTF_8), BUFFER)) {
             content.writeTo(w);
         } catch (IOException e) {
-            throw new UncheckedIOException("cannot write " + target + ": " + e.getMessage(), e);
+            throw cannotWrite(target, e);
         }
     }
 
@@ -77,29 +105,82 @@ public final class AtomicOutput implements AutoCloseable {
         try {
             content.writeTo(temp);
         } catch (IOException e) {
-            throw new UncheckedIOException("cannot write " + target + ": " + e.getMessage(), e);
+            throw cannotWrite(target, e);
         }
+    }
+
+    private static UncheckedIOException cannotWrite(Path target, IOException e) {
+        return new UncheckedIOException("cannot write " + Quoted.fileName(target.toString()) + ": "
+                + Quoted.fileName(String.valueOf(e.getMessage())), e);
     }
 
     /** Names a temporary file beside {@code target} and remembers it (also for {@link #close}). */
     private Path newTemp(Path target) {
         Path absolute = target.toAbsolutePath();
+        if (swept.add(absolute.getParent())) {
+            removeStaleTemps(absolute.getParent());
+        }
         // Created by name rather than Files.createTempFile, so the file gets the usual permissions
         // (umask) instead of owner-only ones, and keeps them after the rename.
-        Path temp = absolute.resolveSibling("." + absolute.getFileName() + "."
-                + Long.toHexString(ThreadLocalRandom.current().nextLong() >>> 1) + ".tmp");
+        Path temp = tempFor(absolute);
         staged.add(new Staged(temp, absolute));
         return temp;
     }
 
-    /** Moves every staged file into place. */
+    /** A fresh temporary file name beside {@code target}, of this process, that {@link #TEMP_NAME} matches. */
+    public static Path tempFor(Path target) {
+        String name = target.getFileName().toString();
+        String kept = name.length() <= NAME_CHARS_KEPT ? name : name.substring(0, NAME_CHARS_KEPT);
+        return target.resolveSibling("." + kept + ".carom-" + ProcessHandle.current().pid() + "-" + Namespace.ID + "-"
+                + HexFormat.of().toHexDigits(ThreadLocalRandom.current().nextLong()) + ".tmp");
+    }
+
+    /**
+     * Deletes the temporary files in {@code dir} that a killed writer left: those {@link #TEMP_NAME}
+     * matches whose process is gone (same pid namespace) or that are {@link #STALE_ANYWAY} old.
+     * Best effort: a file that cannot be read or deleted stays, and no failure here stops the output.
+     */
+    public static void removeStaleTemps(Path dir) {
+        Instant old = Instant.now().minus(STALE_ANYWAY);
+        try (DirectoryStream<Path> files = Files.newDirectoryStream(dir, ".*.carom-*.tmp")) {
+            for (Path file : files) {
+                Matcher m = TEMP_NAME.matcher(file.getFileName().toString());
+                if (!m.matches() || !Files.isRegularFile(file)) {
+                    continue;
+                }
+                boolean ownersGone = m.group(2).equals(Namespace.ID) && !alive(m.group(1));
+                if (ownersGone || Files.getLastModifiedTime(file).toInstant().isBefore(old)) {
+                    Files.deleteIfExists(file);
+                }
+            }
+        } catch (IOException | RuntimeException e) {
+            // Debris stays for a later run; this run's own output is what matters.
+        }
+    }
+
+    private static boolean alive(String pid) {
+        try {
+            return ProcessHandle.of(Long.parseLong(pid)).map(ProcessHandle::isAlive).orElse(false);
+        } catch (NumberFormatException e) {
+            return true; // 19 digits beyond a long: not a pid we wrote, so leave it to the age rule
+        }
+    }
+
+    /**
+     * Moves every staged file into place, in the order staged, the last one (the certificate) only
+     * after an old file of its name is gone and every other one is in place.
+     */
     public void commit() {
         try {
+            if (staged.size() > 1) {
+                Files.deleteIfExists(staged.getLast().target());
+            }
             for (Staged s : staged) {
                 move(s);
             }
         } catch (IOException e) {
-            throw new UncheckedIOException("cannot move output into place: " + e.getMessage(), e);
+            throw new UncheckedIOException("cannot move output into place: "
+                    + Quoted.fileName(String.valueOf(e.getMessage())), e);
         }
     }
 
@@ -121,6 +202,26 @@ public final class AtomicOutput implements AutoCloseable {
                 Files.deleteIfExists(s.temp());
             } catch (IOException e) {
                 // Nothing more to do: the failure that brought us here is the one to report.
+            }
+        }
+    }
+
+    /**
+     * This process's pid namespace, as 8 hex digits: process ids are only comparable within one
+     * (containers sharing a folder each have their own). Linux names it; elsewhere there is one.
+     */
+    static final class Namespace {
+        static final String ID = read();
+
+        private Namespace() {
+        }
+
+        private static String read() {
+            try {
+                String link = Files.readSymbolicLink(Path.of("/proc/self/ns/pid")).toString();
+                return HexFormat.of().toHexDigits(link.hashCode());
+            } catch (IOException | UnsupportedOperationException | SecurityException e) {
+                return "00000000";
             }
         }
     }

@@ -1,17 +1,31 @@
 package carom.app;
 
+import carom.core.BadInputException;
+import carom.core.Quoted;
 import carom.core.engine.Engine;
 import carom.engines.EngineCatalog;
 import java.io.PrintWriter;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.IDefaultValueProvider;
+import picocli.CommandLine.Model.ArgSpec;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Model.OptionSpec;
 import picocli.CommandLine.Spec;
 
-/** {@code carom engines}: one line per engine, {@code NAME exact|relaxed DESCRIPTION}. */
+/**
+ * {@code carom engines}: one line per engine, {@code NAME exact|relaxed DESCRIPTION}. Also how every
+ * command that runs an engine finds it by name and fills in the one default engine.
+ */
 @Command(name = "engines", mixinStandardHelpOptions = true,
         description = "List the engines, one per line: NAME exact|relaxed DESCRIPTION.")
-final class EnginesCommand implements Callable<Integer> {
+public final class EnginesCommand implements Callable<Integer> {
+    /**
+     * Most worker threads a run may ask for: far beyond any machine's cores, and far below what breaks
+     * the engines' pools (a fork-join pool takes at most 32,767).
+     */
+    public static final int MAX_THREADS = 4096;
+
     @Spec
     CommandSpec spec;
 
@@ -24,5 +38,36 @@ final class EnginesCommand implements Callable<Integer> {
         }
         out.flush();
         return 0;
+    }
+
+    /**
+     * The engine called {@code name}, or {@link EngineCatalog#defaultEngine()} for null; bad input
+     * naming the known ones otherwise, with the name as {@link Quoted} shows it.
+     */
+    public static Engine engineNamed(String name) {
+        if (name == null) {
+            return EngineCatalog.defaultEngine();
+        }
+        for (Engine e : EngineCatalog.all()) {
+            if (e.name().equals(name)) {
+                return e;
+            }
+        }
+        throw new BadInputException("unknown engine " + Quoted.of(name) + " (known: "
+                + String.join(", ", EngineCatalog.all().stream().map(Engine::name).toList()) + ")");
+    }
+
+    /**
+     * Fills {@code --engine} with {@link EngineCatalog#defaultEngine()}'s name, so that every command
+     * has the same default and its help shows it; other options keep their own defaults.
+     */
+    public static final class DefaultEngine implements IDefaultValueProvider {
+        @Override
+        public String defaultValue(ArgSpec argSpec) {
+            if (argSpec instanceof OptionSpec option && option.longestName().equals("--engine")) {
+                return EngineCatalog.defaultEngine().name();
+            }
+            return null;
+        }
     }
 }

@@ -1,6 +1,8 @@
 package carom.app;
 
+import carom.core.Quoted;
 import carom.core.engine.RunResult;
+import carom.core.observe.Energy;
 import carom.core.observe.Pressure;
 import java.io.PrintWriter;
 import java.nio.charset.Charset;
@@ -11,16 +13,22 @@ import java.util.TreeMap;
 /**
  * What {@code simulate} prints when no output file is asked for: aligned {@code key  value} lines for a
  * person to read. Physical quantities keep full precision ({@link Double#toString}); timings are rounded.
+ * The energy is the total ({@link Energy}: kinetic plus gravity's potential), with the kinetic part
+ * beside it when there is gravity; its drift is the total's.
  */
 final class ReadableSummary {
     private static final int KEY_WIDTH = 22;
+    /** Characters of the scene's name shown. */
+    private static final int NAME_CHARS = 200;
 
     private ReadableSummary() {
     }
 
-    static void print(String sceneName, int particles, int threads, RunResult r, PrintWriter out, Charset charset) {
+    static void print(String sceneName, int particles, int threads, RunResult r, Energy energy, PrintWriter out,
+                      Charset charset) {
         String plusMinus = charset.newEncoder().canEncode('\u00b1') ? " \u00b1 " : " +/- ";
-        line(out, "scene", sceneName);
+        // The name comes from the scene file: no control characters reach the terminal.
+        line(out, "scene", Quoted.bare(sceneName, NAME_CHARS));
         line(out, "engine", r.engine() + (r.exact() ? " (exact)" : " (relaxed)"));
         line(out, "discs", Integer.toString(particles));
         line(out, "until", Double.toString(r.until()));
@@ -30,9 +38,11 @@ final class ReadableSummary {
         line(out, "events", Long.toString(r.events()));
         line(out, "wall seconds", String.format(Locale.ROOT, "%.3f", r.wallSeconds()));
         line(out, "collisions per second", String.format(Locale.ROOT, "%.4g", r.collisionsPerSecond()));
-        line(out, "energy initial", Double.toString(r.kineticEnergyStart()));
-        line(out, "energy final", Double.toString(r.kineticEnergyEnd()));
-        line(out, "energy drift", String.format(Locale.ROOT, "%.3e", r.energyDrift()));
+        boolean potential = energy.initial() != r.kineticEnergyStart() || energy.end() != r.kineticEnergyEnd();
+        line(out, "energy initial", energy(energy.initial(), r.kineticEnergyStart(), potential));
+        line(out, "energy final", energy(energy.end(), r.kineticEnergyEnd(), potential));
+        line(out, "energy drift", Double.isNaN(energy.drift()) ? "undefined (gravity in a periodic box)"
+                : String.format(Locale.ROOT, "%.3e", energy.drift()));
         line(out, "momentum initial", vector(r.momentumStart()));
         line(out, "momentum final", vector(r.momentumEnd()));
         Pressure p = r.pressure();
@@ -63,6 +73,14 @@ final class ReadableSummary {
             sb.append(' ');
         } while (sb.length() < KEY_WIDTH);
         out.println(sb.append(' ').append(value));
+    }
+
+    /** The total energy, with its kinetic part when they differ (under gravity). */
+    private static String energy(double total, double kinetic, boolean showKinetic) {
+        if (Double.isNaN(total)) {
+            return "undefined (gravity in a periodic box); kinetic " + kinetic;
+        }
+        return showKinetic ? total + "  (kinetic " + kinetic + ")" : Double.toString(total);
     }
 
     private static String vector(double[] v) {

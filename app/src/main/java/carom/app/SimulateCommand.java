@@ -1,9 +1,11 @@
 package carom.app;
 
 import carom.core.BadInputException;
+import carom.core.Quoted;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
+import carom.core.observe.Energy;
 import carom.core.observe.jfr.CaromRecording;
 import carom.core.scene.Scene;
 import carom.core.scene.SceneReader;
@@ -15,6 +17,8 @@ import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import java.util.Set;
+import java.util.TreeSet;
 import java.util.concurrent.Callable;
 import java.util.function.Supplier;
 import jdk.jfr.Recording;
@@ -29,11 +33,17 @@ import picocli.CommandLine.Spec;
  *
  * <p>Everything that can be wrong with the input is checked before the run starts (the scene, the
  * engine and whether it supports the scene, the options, the output directories), so that a long run
- * is never thrown away at the end. Output files appear whole or not at all ({@link AtomicOutput}).
+ * is never thrown away at the end; the options come first, each within its bounds, before the scene is
+ * read. Output files appear whole or not at all ({@link AtomicOutput}), the summary last, so that a
+ * summary certifies the files beside it.
  */
 @Command(name = "simulate", mixinStandardHelpOptions = true, sortOptions = false,
+        defaultValueProvider = EnginesCommand.DefaultEngine.class,
         description = "Simulate a scene to its end time. Without --out or --summary, print a readable summary.")
 final class SimulateCommand implements Callable<Integer> {
+    /** Engines that run on the calling thread alone and ignore {@code --threads}. */
+    private static final Set<String> SINGLE_THREADED = Set.of("serial", "fast", "stepped");
+
     @Spec
     CommandSpec spec;
 
@@ -41,14 +51,16 @@ final class SimulateCommand implements Callable<Integer> {
     String sceneFile;
 
     @Option(names = "--engine", paramLabel = "NAME",
-            description = "Engine to run (see 'carom engines'); default: fast, the exact serial engine.")
+            description = "Engine to run (see 'carom engines'); default: ${DEFAULT-VALUE}.")
     String engineName;
 
     @Option(names = "--until", paramLabel = "T", description = "Simulated end time, overriding the scene's.")
     Double until;
 
     @Option(names = "--threads", paramLabel = "K",
-            description = "Worker threads for parallel engines; default: the available processors.")
+            description = "Worker threads for parallel engines, 1 to " + EnginesCommand.MAX_THREADS
+                    + "; default: the available processors. Serial engines use one whatever this says, "
+                    + "and the summary says so.")
     Integer threads;
 
     @Option(names = "--out", paramLabel = "FINAL.csv", description = "Write the final state here (id,x,y,vx,vy).")
@@ -78,16 +90,19 @@ final class SimulateCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
+        // Options first: they are cheap to check, and a scene may take long to read.
+        Double checkedUntil = until == null ? null : checkedUntil(until);
+        int workers = threads == null ? Math.min(Runtime.getRuntime().availableProcessors(), EnginesCommand.MAX_THREADS)
+                : checkedThreads(threads);
+        Engine engine = aboutScene(() -> EnginesCommand.engineNamed(engineName));
+        checkTunables(engine);
+        checkOutputs();
         Scene fromFile = aboutScene(() -> SceneReader.read(scenePath()));
-        Engine engine = aboutScene(() -> engineName == null ? EngineCatalog.defaultEngine() : EngineCatalog.byName(engineName));
-        Scene scene = until == null ? fromFile : fromFile.withUntil(checkedUntil(until));
-        int workers = threads == null ? Runtime.getRuntime().availableProcessors() : checkedThreads(threads);
+        Scene scene = checkedUntil == null ? fromFile : fromFile.withUntil(checkedUntil);
         aboutScene(() -> {
             engine.checkSupports(scene);
             return null;
         });
-        checkTunables(engine);
-        checkOutputs();
 
         // The recording covers the run only, not reading the scene; it closes (and its repository goes) in any case.
         try (Recording recording = jfr == null ? null : CaromRecording.create();
@@ -104,14 +119,18 @@ final class SimulateCommand implements Callable<Integer> {
                 recording.stop();
                 files.stageFile(jfr, recording::dump);
             }
+            int used = threadsUsed(result, workers);
+            Energy energy = Energy.of(scene, result);
             if (out == null && summary == null) {
-                ReadableSummary.print(scene.name(), scene.size(), workers, result, spec.commandLine().getOut(), stdoutCharset);
+                ReadableSummary.print(scene.name(), scene.size(), used, result, energy, spec.commandLine().getOut(),
+                        stdoutCharset);
             }
             if (out != null) {
                 files.stage(out, w -> FinalStateCsv.write(result.finalState(), w));
             }
             if (summary != null) {
-                ObjectNode json = SummaryJson.toJson(scene.name(), scene.size(), workers, result);
+                // Staged last, so renamed last: a summary on disk means the files it describes are there too.
+                ObjectNode json = SummaryJson.toJson(scene.name(), scene.size(), used, result, energy);
                 files.stage(summary, w -> SummaryJson.write(json, w));
             }
             files.commit();
@@ -119,24 +138,40 @@ final class SimulateCommand implements Callable<Integer> {
         return 0;
     }
 
+    /**
+     * The threads the run really used: the engine's own count where it reports one (the virtual-thread
+     * carriers it got, akka's dispatcher, the actors' threads, slab domains), 1 for the engines that run
+     * on one thread, else the threads it was given.
+     */
+    static int threadsUsed(RunResult result, int given) {
+        Map<String, Long> counters = result.counters() == null ? Map.of() : result.counters();
+        for (String key : new String[] {"carrierThreads", "dispatcherThreads", "threads", "domains"}) {
+            Long reported = counters.get(key);
+            if (reported != null) {
+                return reported.intValue();
+            }
+        }
+        return SINGLE_THREADED.contains(result.engine()) ? 1 : given;
+    }
+
     private Path scenePath() {
         try {
             return Path.of(sceneFile);
         } catch (InvalidPathException e) {
-            throw new BadInputException("not a valid file name: " + e.getReason());
+            throw new BadInputException("not a valid file name: " + Quoted.bare(e.getReason()));
         }
     }
 
-    private static double checkedUntil(double t) {
+    static double checkedUntil(double t) {
         if (!(t > 0) || Double.isInfinite(t)) {
             throw new BadInputException("--until: must be a finite number > 0, got " + t);
         }
         return t;
     }
 
-    private static int checkedThreads(int k) {
-        if (k < 1) {
-            throw new BadInputException("--threads: must be at least 1, got " + k);
+    static int checkedThreads(int k) {
+        if (k < 1 || k > EnginesCommand.MAX_THREADS) {
+            throw new BadInputException("--threads: must be from 1 to " + EnginesCommand.MAX_THREADS + ", got " + k);
         }
         return k;
     }
@@ -145,8 +180,8 @@ final class SimulateCommand implements Callable<Integer> {
     private void checkTunables(Engine engine) {
         for (String key : tunables.keySet()) {
             if (!engine.tunables().contains(key)) {
-                String known = engine.tunables().isEmpty() ? "none" : String.join(", ", new java.util.TreeSet<>(engine.tunables()));
-                throw new BadInputException("--option " + key + ": engine " + engine.name()
+                String known = engine.tunables().isEmpty() ? "none" : String.join(", ", new TreeSet<>(engine.tunables()));
+                throw new BadInputException("--option " + Quoted.bare(key) + ": engine " + engine.name()
                         + " has no such option (known: " + known + ")");
             }
         }
@@ -166,7 +201,8 @@ final class SimulateCommand implements Callable<Integer> {
         }
         String earlier = named.putIfAbsent(file.toAbsolutePath().normalize(), option);
         if (earlier != null) {
-            throw new BadInputException(earlier + " and " + option + " name the same file " + file);
+            throw new BadInputException(earlier + " and " + option + " name the same file "
+                    + Quoted.fileName(file.toString()));
         }
         AtomicOutput.checkWritable(file, option);
     }
@@ -176,7 +212,7 @@ final class SimulateCommand implements Callable<Integer> {
         try {
             return step.get();
         } catch (BadInputException e) {
-            throw new BadInputException(sceneFile + ": " + e.getMessage());
+            throw new BadInputException(Quoted.fileName(sceneFile) + ": " + e.getMessage());
         }
     }
 }

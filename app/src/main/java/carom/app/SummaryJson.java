@@ -1,6 +1,7 @@
 package carom.app;
 
 import carom.core.engine.RunResult;
+import carom.core.observe.Energy;
 import carom.core.observe.Pressure;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
@@ -12,11 +13,12 @@ import java.util.Map;
 import java.util.TreeMap;
 
 /**
- * SUMMARY.json: SPEC's keys ({@code engine, exact, particles, until, collisions, kineticEnergy,
- * momentum, wallSeconds}) plus what a benchmark needs to compare runs: the scene, threads, events,
- * throughput, energy drift, causality violations, the pressure (from the collision virial; see
- * {@link carom.core.observe.VirialAccumulator} for what it means in a walled box), the engine's
- * counters and the machine it ran on.
+ * SUMMARY.json: SPEC's keys ({@code engine, exact, particles, until, collisions, kineticEnergy, energy,
+ * momentum, wallSeconds}) plus what a benchmark needs to compare runs: the scene, the threads the engine
+ * really used, events, throughput, the drift of the total energy ({@link Energy}), causality violations,
+ * the pressure (from the collision virial; see {@link carom.core.observe.VirialAccumulator} for what it
+ * means in a walled box), the engine's counters and the machine it ran on. Numbers that are not defined
+ * (the energy under gravity in a periodic box, an error bar from too few blocks) are null.
  */
 final class SummaryJson {
     private static final ObjectMapper MAPPER = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
@@ -24,7 +26,7 @@ final class SummaryJson {
     private SummaryJson() {
     }
 
-    static ObjectNode toJson(String sceneName, int particles, int threads, RunResult r) {
+    static ObjectNode toJson(String sceneName, int particles, int threads, RunResult r, Energy total) {
         ObjectNode root = MAPPER.createObjectNode();
         root.put("scene", sceneName);
         root.put("engine", r.engine());
@@ -40,10 +42,13 @@ final class SummaryJson {
         number(root, "wallSeconds", r.wallSeconds());
         number(root, "collisionsPerSecond", r.collisionsPerSecond());
 
-        ObjectNode energy = root.putObject("kineticEnergy");
-        number(energy, "initial", r.kineticEnergyStart());
-        number(energy, "final", r.kineticEnergyEnd());
-        number(root, "energyDrift", r.energyDrift());
+        ObjectNode kinetic = root.putObject("kineticEnergy");
+        number(kinetic, "initial", r.kineticEnergyStart());
+        number(kinetic, "final", r.kineticEnergyEnd());
+        ObjectNode energy = root.putObject("energy");
+        number(energy, "initial", total.initial());
+        number(energy, "final", total.end());
+        number(root, "energyDrift", total.drift());
 
         ObjectNode momentum = root.putObject("momentum");
         vector(momentum.putArray("initial"), r.momentumStart());

@@ -5,10 +5,16 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import carom.core.BadInputException;
+import java.io.BufferedReader;
 import java.io.IOException;
+import java.io.InputStreamReader;
 import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.FileTime;
+import java.time.Instant;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -76,7 +82,8 @@ class AtomicOutputTest {
     void uncommittedFilesAreRemoved() {
         try (AtomicOutput files = new AtomicOutput()) {
             files.stage(dir.resolve("a.csv"), w -> w.write("alpha\n"));
-            assertThat(filesIn(dir)).hasSize(1).allMatch(n -> n.startsWith(".a.csv.") && n.endsWith(".tmp"));
+            assertThat(filesIn(dir)).hasSize(1).allMatch(n -> n.startsWith(".a.csv.carom-" + ProcessHandle.current().pid() + "-")
+                    && AtomicOutput.TEMP_NAME.matcher(n).matches());
         }
         assertThat(filesIn(dir)).isEmpty();
     }
@@ -91,5 +98,129 @@ class AtomicOutputTest {
                 .isInstanceOf(BadInputException.class)
                 .hasMessageStartingWith("--summary: ").hasMessageEndingWith("is a directory");
         AtomicOutput.checkWritable(dir.resolve("fine.csv"), "--out");
+    }
+
+    /** The files are renamed in the order staged; the last one staged certifies the others. */
+    @Test
+    void theLastFileStagedMovesLastAndAnOldOneGoesFirst() throws IOException {
+        Path data = dir.resolve("final.csv");
+        Path certificate = Files.writeString(dir.resolve("summary.json"), "{ \"from\": \"the last run\" }\n");
+        assertThatThrownBy(() -> {
+            try (AtomicOutput files = new AtomicOutput()) {
+                files.stage(data, w -> w.write("new data\n"));
+                files.stage(certificate, w -> w.write("{}\n"));
+                // Take the certificate's temporary file away, so that its rename fails after the data's.
+                for (String name : filesIn(dir)) {
+                    if (name.startsWith(".summary.json.")) {
+                        Files.delete(dir.resolve(name));
+                    }
+                }
+                files.commit();
+            }
+        }).isInstanceOf(UncheckedIOException.class);
+        // The data moved first; the old summary, which would have vouched for it, is gone.
+        assertThat(filesIn(dir)).containsExactly("final.csv");
+        assertThat(Files.readString(data)).isEqualTo("new data\n");
+    }
+
+    /** A temporary file as a process {@code pid} of this pid namespace would have named it. */
+    private Path tempOf(String target, long pid) throws IOException {
+        return Files.writeString(dir.resolve("." + target + ".carom-" + pid + "-" + AtomicOutput.Namespace.ID
+                + "-0123456789abcdef.tmp"), "half a file");
+    }
+
+    /** The pid of a process that has ended. */
+    private static long deadPid() throws IOException, InterruptedException {
+        Process p = new ProcessBuilder("true").start();
+        p.waitFor();
+        return p.pid();
+    }
+
+    @Test
+    void temporaryFilesOfEndedProcessesAreRemovedByTheNextOutputThere() throws Exception {
+        Path stale = tempOf("final.csv", deadPid());
+        Path otherTarget = tempOf("summary.json", deadPid());
+        Path ours = tempOf("live.csv", ProcessHandle.current().pid());
+        try (AtomicOutput files = new AtomicOutput()) {
+            files.stage(dir.resolve("final.csv"), w -> w.write("whole\n"));
+            files.commit();
+        }
+        assertThat(stale).doesNotExist();
+        assertThat(otherTarget).doesNotExist();
+        assertThat(ours).as("a live writer's file is left alone").exists();
+        assertThat(filesIn(dir)).containsExactlyInAnyOrder("final.csv", ours.getFileName().toString());
+    }
+
+    @Test
+    void aDayOldTemporaryGoesWhateverItsPidOrNamespace() throws Exception {
+        Path reusedPid = tempOf("a.csv", ProcessHandle.current().pid());
+        Path elsewhere = Files.writeString(dir.resolve(".b.csv.carom-1-0badf00d-0123456789abcdef.tmp"), "half");
+        Path elsewhereRecent = Files.writeString(dir.resolve(".c.csv.carom-1-0badf00d-0123456789abcdef.tmp"), "half");
+        FileTime twoDaysAgo = FileTime.from(Instant.now().minus(AtomicOutput.STALE_ANYWAY.multipliedBy(2)));
+        Files.setLastModifiedTime(reusedPid, twoDaysAgo);
+        Files.setLastModifiedTime(elsewhere, twoDaysAgo);
+        AtomicOutput.removeStaleTemps(dir);
+        assertThat(reusedPid).doesNotExist();
+        assertThat(elsewhere).doesNotExist();
+        assertThat(elsewhereRecent).as("another namespace's pid says nothing here: only age counts").exists();
+    }
+
+    @Test
+    void onlyOurOwnNamingIsEverRemoved() throws Exception {
+        long dead = deadPid();
+        List<String> others = List.of(".a.csv.0123abcd.tmp", ".a.csv.carom-" + dead + ".tmp", "a.csv.carom-" + dead
+                + "-" + AtomicOutput.Namespace.ID + "-0123456789abcdef.tmp", ".a.csv.carom-" + dead + "-"
+                + AtomicOutput.Namespace.ID + "-0123456789abcdef.tmp.bak", "notes.tmp", ".a.csv.carom-x-y-z.tmp");
+        FileTime old = FileTime.from(Instant.now().minus(AtomicOutput.STALE_ANYWAY.multipliedBy(30)));
+        for (String name : others) {
+            Files.setLastModifiedTime(Files.writeString(dir.resolve(name), "not ours"), old);
+        }
+        Files.createDirectory(dir.resolve(".d.csv.carom-" + dead + "-" + AtomicOutput.Namespace.ID + "-0123456789abcdef.tmp"));
+        AtomicOutput.removeStaleTemps(dir);
+        assertThat(filesIn(dir)).hasSize(others.size() + 1);
+    }
+
+    /**
+     * A writer killed with SIGKILL while writing leaves its temporary file (nothing in it can run);
+     * the next output into the folder removes it. The child signals when it is mid-write, so nothing
+     * here waits on a clock.
+     */
+    @Test
+    void debrisOfAKilledWriterGoesWithTheNextRun() throws Exception {
+        Path java = Path.of(System.getProperty("java.home"), "bin", "java");
+        Process child = new ProcessBuilder(java.toString(), "-cp", System.getProperty("java.class.path"),
+                KilledWriter.class.getName(), dir.resolve("final.csv").toString())
+                .redirectError(ProcessBuilder.Redirect.INHERIT).start();
+        try (BufferedReader said = new BufferedReader(new InputStreamReader(child.getInputStream(), StandardCharsets.UTF_8))) {
+            assertThat(said.readLine()).as("the child reports it is writing").isEqualTo("writing");
+            child.destroyForcibly();
+            child.waitFor();
+        }
+        assertThat(filesIn(dir)).as("a kill leaves a temporary file, never the target").hasSize(1)
+                .allMatch(n -> n.startsWith(".final.csv.carom-" + child.pid() + "-"));
+
+        try (AtomicOutput files = new AtomicOutput()) {
+            files.stage(dir.resolve("final.csv"), w -> w.write("whole\n"));
+            files.commit();
+        }
+        assertThat(filesIn(dir)).containsExactly("final.csv");
+    }
+
+    /** Child JVM for {@link #debrisOfAKilledWriterGoesWithTheNextRun}: starts a file, says so, waits to be killed. */
+    public static final class KilledWriter {
+        public static void main(String[] args) {
+            try (AtomicOutput files = new AtomicOutput()) {
+                files.stage(Path.of(args[0]), w -> {
+                    w.write("the first rows\n");
+                    w.flush();
+                    System.out.println("writing");
+                    System.out.flush();
+                    // Block until killed; the parent never closes our stdin.
+                    while (System.in.read() >= 0) {
+                        continue;
+                    }
+                });
+            }
+        }
     }
 }

@@ -51,4 +51,31 @@ class ErrorReportingTest {
         assertThat(status).isEqualTo(1);
         assertThat(text.toString()).startsWith("error: cannot write out.csv: No space left on device");
     }
+
+    @Test
+    void aMessageThatCopiedAValueUnquotedIsStillOneBoundedLine() {
+        String value = "x".repeat(5_000_000) + "\nerror: fake";
+        int status = reporting(false).report(new BadInputException("engine option spins: not a number: " + value));
+        assertThat(status).isEqualTo(2);
+        String out = text.toString();
+        assertThat(out.lines()).hasSize(1);
+        assertThat(out).startsWith("error: engine option spins: not a number: xxx")
+                .endsWith("... (" + ("engine option spins: not a number: ".length() + value.length()) + " characters)"
+                        + System.lineSeparator())
+                .hasSizeLessThan(1100);
+    }
+
+    @Test
+    void controlCharactersInAnyMessageAreEscaped() {
+        reporting(false).report(new IllegalStateException("bad \u001b[2J\r\nerror: fake"));
+        assertThat(text.toString()).isEqualTo("error: internal failure: IllegalStateException: bad \\u001b[2J\\r\\nerror: fake"
+                + System.lineSeparator());
+    }
+
+    @Test
+    void picocliOwnErrorPrefixIsDropped() {
+        assertThat(ErrorReporting.withoutPicocliPrefix("Error: Missing required argument(s): --x")).isEqualTo(
+                "Missing required argument(s): --x");
+        assertThat(ErrorReporting.withoutPicocliPrefix("Unknown option: '--bogus'")).isEqualTo("Unknown option: '--bogus'");
+    }
 }

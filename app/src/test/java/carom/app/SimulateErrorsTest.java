@@ -111,7 +111,46 @@ class SimulateErrorsTest {
     @Test
     void threadsMustBeAtLeastOne() {
         Path scene = Scenes.write(dir, "head-on.json", Scenes.headOn());
-        assertRejected(simulate(scene, "--threads", "0"), "error: --threads: must be at least 1, got 0", "head-on.json");
+        assertRejected(simulate(scene, "--threads", "0"), "error: --threads: must be from 1 to 4096, got 0", "head-on.json");
+    }
+
+    /** Beyond the bound no engine starts: the pools of akka and stripes and the virtual-thread scheduler broke at 32,768. */
+    @org.junit.jupiter.params.ParameterizedTest
+    @org.junit.jupiter.params.provider.CsvSource({"akka, 32768", "stripes, 32768", "vthreads, 32768", "slabs, 4097",
+        "fast, 2147483647", "serial, -1"})
+    void threadsBeyondTheBoundAreBadInputForEveryEngine(String engine, String threads) {
+        Path scene = Scenes.write(dir, "head-on.json", Scenes.headOn());
+        assertRejected(simulate(scene, "--engine", engine, "--threads", threads),
+                "error: --threads: must be from 1 to 4096, got " + threads, "head-on.json");
+    }
+
+    @Test
+    void threadsBeyondAnIntAreAUsageError() {
+        Path scene = Scenes.write(dir, "head-on.json", Scenes.headOn());
+        assertRejected(simulate(scene, "--threads", "99999999999"), "error: Invalid value for option '--threads'",
+                "head-on.json");
+    }
+
+    @Test
+    void optionsAreCheckedBeforeTheSceneIsRead() {
+        Path missing = dir.resolve("absent.json");
+        assertRejected(simulate(missing, "--threads", "5000"), "error: --threads: ");
+        assertRejected(simulate(missing, "--until", "-1"), "error: --until: ");
+    }
+
+    @Test
+    void untilBeyondTheRangeOfADoubleIsBadInput() {
+        Path scene = Scenes.write(dir, "head-on.json", Scenes.headOn());
+        assertRejected(simulate(scene, "--until", "1e999"), "error: --until: must be a finite number > 0, got Infinity",
+                "head-on.json");
+    }
+
+    @Test
+    void aSceneThatIsNotUtf8NamesTheByte() throws IOException {
+        Path scene = dir.resolve("latin1.json");
+        Files.write(scene, Scenes.headOn().replace("head-on", "h\u00e9ad-on").getBytes(java.nio.charset.StandardCharsets.ISO_8859_1));
+        int at = Scenes.headOn().indexOf("head-on") + 2;
+        assertRejected(simulate(scene), "error: " + scene + ": not valid UTF-8 at byte " + at, "latin1.json");
     }
 
     @Test

@@ -3,6 +3,7 @@ package carom.app;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import carom.core.engine.RunResult;
+import carom.core.observe.Energy;
 import carom.core.observe.Pressure;
 import carom.core.state.Discs;
 import com.fasterxml.jackson.databind.JsonNode;
@@ -16,6 +17,9 @@ import org.junit.jupiter.api.Test;
 
 /** The JSON and readable summaries of a hand-made result. */
 class SummaryTest {
+    /** The energy of {@link #result} without gravity: its kinetic energy. */
+    private static final Energy KINETIC_ONLY = new Energy(3.0, 2.7);
+
     private static RunResult result(Pressure pressure) {
         return new RunResult("fast", false, new Discs(3), 2.0, 40, 10, 55, 3.0, 2.7,
                 new double[] {0.5, -0.25}, new double[] {0.5, -0.25}, pressure, 4, 0.5,
@@ -25,7 +29,7 @@ class SummaryTest {
     @Test
     void jsonCarriesEveryField() throws IOException {
         StringWriter w = new StringWriter();
-        SummaryJson.write(SummaryJson.toJson("gas", 3, 8, result(new Pressure(1.25, 0.01, 0.4, 0.003, 12))), w);
+        SummaryJson.write(SummaryJson.toJson("gas", 3, 8, result(new Pressure(1.25, 0.01, 0.4, 0.003, 12)), KINETIC_ONLY), w);
         JsonNode s = new ObjectMapper().readTree(w.toString());
 
         assertThat(s.get("engine").asText()).isEqualTo("fast");
@@ -39,6 +43,9 @@ class SummaryTest {
         assertThat(s.get("events").asLong()).isEqualTo(55);
         assertThat(s.get("collisionsPerSecond").asDouble()).isEqualTo(100.0);
         assertThat(s.get("energyDrift").asDouble()).isCloseTo(-0.1, org.assertj.core.api.Assertions.within(1e-12));
+        assertThat(s.at("/kineticEnergy/initial").asDouble()).isEqualTo(3.0);
+        assertThat(s.at("/energy/initial").asDouble()).isEqualTo(3.0);
+        assertThat(s.at("/energy/final").asDouble()).isEqualTo(2.7);
         assertThat(s.at("/momentum/final/1").asDouble()).isEqualTo(-0.25);
         assertThat(s.get("causalityViolations").asLong()).isEqualTo(4);
         assertThat(s.at("/pressure/Z").asDouble()).isEqualTo(1.25);
@@ -55,7 +62,7 @@ class SummaryTest {
     @Test
     void nonFiniteNumbersBecomeNullSoTheJsonStaysValid() throws IOException {
         StringWriter w = new StringWriter();
-        SummaryJson.write(SummaryJson.toJson("gas", 3, 1, result(new Pressure(1.25, Double.NaN, 0.4, Double.NaN, 1))), w);
+        SummaryJson.write(SummaryJson.toJson("gas", 3, 1, result(new Pressure(1.25, Double.NaN, 0.4, Double.NaN, 1)), KINETIC_ONLY), w);
         JsonNode s = new ObjectMapper().readTree(w.toString());
         assertThat(s.at("/pressure/Zerror").isNull()).isTrue();
         assertThat(s.at("/pressure/Z").asDouble()).isEqualTo(1.25);
@@ -64,7 +71,7 @@ class SummaryTest {
     @Test
     void readableSummaryShowsPressureAndCounters() {
         StringWriter w = new StringWriter();
-        ReadableSummary.print("gas", 3, 8, result(new Pressure(1.25, 0.01, 0.4, 0.003, 12)), new PrintWriter(w),
+        ReadableSummary.print("gas", 3, 8, result(new Pressure(1.25, 0.01, 0.4, 0.003, 12)), KINETIC_ONLY, new PrintWriter(w),
                 StandardCharsets.UTF_8);
         assertThat(w.toString()).containsPattern("(?m)^engine +fast \\(relaxed\\)$")
                 .containsPattern("(?m)^pressure Z +1\\.25000 \u00b1 0\\.010 ")
@@ -78,8 +85,48 @@ class SummaryTest {
     @Test
     void readableSummaryAvoidsCharactersTheConsoleCannotShow() {
         StringWriter w = new StringWriter();
-        ReadableSummary.print("gas", 3, 8, result(new Pressure(1.25, 0.01, 0.4, 0.003, 12)), new PrintWriter(w),
+        ReadableSummary.print("gas", 3, 8, result(new Pressure(1.25, 0.01, 0.4, 0.003, 12)), KINETIC_ONLY, new PrintWriter(w),
                 StandardCharsets.US_ASCII);
         assertThat(w.toString()).contains("1.25000 +/- 0.010").doesNotContain("\u00b1");
+    }
+
+    @Test
+    void underGravityTheTotalEnergyCarriesTheDriftAndTheKineticPartIsShownBesideIt() throws IOException {
+        // Kinetic energy fell from 3 to 2.7 while the total stayed at 10: nothing was lost.
+        Energy total = new Energy(10.0, 10.0);
+        StringWriter w = new StringWriter();
+        SummaryJson.write(SummaryJson.toJson("pile", 3, 1, result(null), total), w);
+        JsonNode s = new ObjectMapper().readTree(w.toString());
+        assertThat(s.at("/energy/initial").asDouble()).isEqualTo(10.0);
+        assertThat(s.at("/energy/final").asDouble()).isEqualTo(10.0);
+        assertThat(s.at("/kineticEnergy/final").asDouble()).isEqualTo(2.7);
+        assertThat(s.get("energyDrift").asDouble()).isZero();
+
+        StringWriter text = new StringWriter();
+        ReadableSummary.print("pile", 3, 1, result(null), total, new PrintWriter(text), StandardCharsets.UTF_8);
+        assertThat(text.toString()).containsPattern("(?m)^energy initial +10\\.0  \\(kinetic 3\\.0\\)$")
+                .containsPattern("(?m)^energy final +10\\.0  \\(kinetic 2\\.7\\)$")
+                .containsPattern("(?m)^energy drift +0\\.000e\\+00$");
+    }
+
+    @Test
+    void anUndefinedEnergyIsNullAndSaysWhy() throws IOException {
+        Energy undefined = new Energy(Double.NaN, Double.NaN);
+        StringWriter w = new StringWriter();
+        SummaryJson.write(SummaryJson.toJson("falling gas", 3, 1, result(null), undefined), w);
+        JsonNode s = new ObjectMapper().readTree(w.toString());
+        assertThat(s.at("/energy/initial").isNull()).isTrue();
+        assertThat(s.get("energyDrift").isNull()).isTrue();
+        StringWriter text = new StringWriter();
+        ReadableSummary.print("falling gas", 3, 1, result(null), undefined, new PrintWriter(text), StandardCharsets.UTF_8);
+        assertThat(text.toString()).containsPattern("(?m)^energy drift +undefined \\(gravity in a periodic box\\)$");
+    }
+
+    @Test
+    void aSceneNameCannotWriteControlCharactersToTheTerminal() {
+        StringWriter text = new StringWriter();
+        ReadableSummary.print("gas\n\u001b[2J", 3, 1, result(null), KINETIC_ONLY, new PrintWriter(text),
+                StandardCharsets.UTF_8);
+        assertThat(text.toString()).contains("gas\\n\\u001b[2J" + System.lineSeparator()).doesNotContain("\u001b");
     }
 }

@@ -1,6 +1,7 @@
 package carom.app.analyze;
 
 import carom.core.BadInputException;
+import carom.core.Quoted;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
@@ -30,7 +31,8 @@ public final class AnalyzeCommand implements Callable<Integer> {
             report = JfrReport.read(path);
         } catch (IOException e) {
             // JFR says "Not a Flight Recorder file", or the file is cut short or unreadable.
-            throw new BadInputException(file + ": not a readable flight recording (" + e.getMessage() + ")");
+            throw new BadInputException(Quoted.fileName(file) + ": not a readable flight recording ("
+                    + Quoted.fileName(String.valueOf(e.getMessage())) + ")");
         }
         report.print(spec.commandLine().getOut());
         return 0;
@@ -41,10 +43,11 @@ public final class AnalyzeCommand implements Callable<Integer> {
         try {
             path = Path.of(file);
         } catch (InvalidPathException e) {
-            throw new BadInputException(file + ": not a valid file name: " + e.getReason());
+            throw new BadInputException(Quoted.fileName(file) + ": not a valid file name: " + Quoted.bare(e.getReason()));
         }
         if (!Files.isRegularFile(path)) {
-            throw new BadInputException(file + ": " + (Files.exists(path) ? "not a regular file" : "no such file"));
+            throw new BadInputException(Quoted.fileName(file) + ": "
+                    + (Files.exists(path) ? "not a regular file" : "no such file"));
         }
         return path;
     }

@@ -1,6 +1,8 @@
 package carom.app.render;
 
+import carom.app.AtomicOutput;
 import carom.core.BadInputException;
+import carom.core.Quoted;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.AtomicMoveNotSupportedException;
@@ -12,12 +14,12 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.ThreadLocalRandom;
 
 /**
  * Writes a set of files into one directory all together or not at all: each goes to a hidden temporary
  * file beside its target, and only when every one is written are they renamed into place. A directory
- * created for them is removed again if they could not all be written.
+ * created for them is removed again if they could not all be written. Temporary files are named, and
+ * those a killed writer left are removed, as {@link AtomicOutput} does it.
  */
 final class PngFiles {
     private PngFiles() {
@@ -31,19 +33,21 @@ final class PngFiles {
         Path absolute = dir.toAbsolutePath().normalize();
         if (Files.exists(absolute)) {
             if (!Files.isDirectory(absolute)) {
-                throw new BadInputException(what + ": " + dir + " is not a directory");
+                throw new BadInputException(what + ": " + Quoted.fileName(dir.toString()) + " is not a directory");
             }
             if (!Files.isWritable(absolute)) {
-                throw new BadInputException(what + ": cannot write in directory " + dir);
+                throw new BadInputException(what + ": cannot write in directory " + Quoted.fileName(dir.toString()));
             }
             return;
         }
         Path parent = absolute.getParent();
         if (parent == null || !Files.isDirectory(parent)) {
-            throw new BadInputException(what + ": neither " + dir + " nor its parent directory exists");
+            throw new BadInputException(what + ": neither " + Quoted.fileName(dir.toString())
+                    + " nor its parent directory exists");
         }
         if (!Files.isWritable(parent)) {
-            throw new BadInputException(what + ": cannot create " + dir + " (directory " + parent + " is not writable)");
+            throw new BadInputException(what + ": cannot create " + Quoted.fileName(dir.toString()) + " (directory "
+                    + Quoted.fileName(parent.toString()) + " is not writable)");
         }
     }
 
@@ -52,7 +56,7 @@ final class PngFiles {
         for (String name : names) {
             Path target = dir.resolve(name);
             if (Files.isDirectory(target)) {
-                throw new BadInputException(what + ": " + target + " is a directory");
+                throw new BadInputException(what + ": " + Quoted.fileName(target.toString()) + " is a directory");
             }
         }
     }
@@ -64,14 +68,15 @@ final class PngFiles {
         Map<Path, Path> staged = new LinkedHashMap<>();
         boolean done = false;
         try {
-            if (!Files.isDirectory(absolute)) {
+            if (Files.isDirectory(absolute)) {
+                AtomicOutput.removeStaleTemps(absolute);
+            } else {
                 Files.createDirectory(absolute);
                 created = true;
             }
             for (Map.Entry<String, byte[]> f : files.entrySet()) {
                 Path target = absolute.resolve(f.getKey());
-                Path temp = absolute.resolve("." + f.getKey() + "."
-                        + Long.toHexString(ThreadLocalRandom.current().nextLong() >>> 1) + ".tmp");
+                Path temp = AtomicOutput.tempFor(target);
                 staged.put(temp, target);
                 Files.write(temp, f.getValue(), StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
             }
@@ -83,7 +88,8 @@ final class PngFiles {
             done = true;
             return written;
         } catch (IOException e) {
-            throw new UncheckedIOException("cannot write pictures in " + dir + ": " + e.getMessage(), e);
+            throw new UncheckedIOException("cannot write pictures in " + Quoted.fileName(dir.toString()) + ": "
+                    + Quoted.fileName(String.valueOf(e.getMessage())), e);
         } finally {
             if (!done) {
                 cleanUp(staged.keySet(), created ? absolute : null);

@@ -1,12 +1,13 @@
 package carom.app.render;
 
+import carom.app.EnginesCommand;
 import carom.core.BadInputException;
+import carom.core.Quoted;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.scene.Scene;
 import carom.core.scene.SceneReader;
 import carom.core.state.Discs;
-import carom.engines.EngineCatalog;
 import java.awt.image.BufferedImage;
 import java.math.BigDecimal;
 import java.nio.file.InvalidPathException;
@@ -32,11 +33,16 @@ import picocli.CommandLine.Spec;
  * are written only once all of them are drawn, all together or not at all.
  */
 @Command(name = "render", mixinStandardHelpOptions = true, sortOptions = false,
+        defaultValueProvider = EnginesCommand.DefaultEngine.class,
         description = "Draw the scene's state at given times into PNG files DIR/<scene name>-t<T>.png.")
 public final class RenderCommand implements Callable<Integer> {
     static final int DEFAULT_SIZE = 800;
     static final int MIN_SIZE = 16;
     static final int MAX_SIZE = 10_000;
+    /** Most pictures one command draws; each runs the engine from t = 0. */
+    static final int MAX_TIMES = 1000;
+    /** Characters of the longest time text read; longer is no time (and would make the pattern slow). */
+    private static final int MAX_TIME_CHARS = 100;
 
     @Spec
     CommandSpec spec;
@@ -45,7 +51,7 @@ public final class RenderCommand implements Callable<Integer> {
     String sceneFile;
 
     @Option(names = "--at", required = true, paramLabel = "T1,T2,...",
-            description = "Times to draw, comma-separated, each >= 0 (0 is the initial state).")
+            description = "Times to draw, comma-separated, each >= 0 (0 is the initial state), at most " + MAX_TIMES + ".")
     String at;
 
     @Option(names = "--out", required = true, paramLabel = "DIR",
@@ -53,7 +59,7 @@ public final class RenderCommand implements Callable<Integer> {
     Path outDir;
 
     @Option(names = "--engine", paramLabel = "NAME",
-            description = "Engine to run (see 'carom engines'); default: the exact serial reference.")
+            description = "Engine to run (see 'carom engines'); default: ${DEFAULT-VALUE}.")
     String engineName;
 
     @Option(names = "--color", paramLabel = "species|speed", defaultValue = "species",
@@ -72,13 +78,13 @@ public final class RenderCommand implements Callable<Integer> {
         List<Double> times = parseTimes(at);
         SceneRenderer.ColourMode mode = SceneRenderer.ColourMode.parse(color);
         if (mode == null) {
-            throw new BadInputException("--color: unknown colour mode '" + color + "' (known: species, speed)");
+            throw new BadInputException("--color: unknown colour mode " + Quoted.of(color) + " (known: species, speed)");
         }
         if (size < MIN_SIZE || size > MAX_SIZE) {
             throw new BadInputException("--size: must be between " + MIN_SIZE + " and " + MAX_SIZE + " pixels, got " + size);
         }
         Scene scene = aboutScene(() -> SceneReader.read(scenePath()));
-        Engine engine = aboutScene(() -> engineName == null ? EngineCatalog.defaultEngine() : EngineCatalog.byName(engineName));
+        Engine engine = aboutScene(() -> EnginesCommand.engineNamed(engineName));
         aboutScene(() -> {
             engine.checkSupports(scene);
             return null;
@@ -119,7 +125,8 @@ public final class RenderCommand implements Callable<Integer> {
         if (t == 0) {
             return scene.newDiscs();
         }
-        int threads = Runtime.getRuntime().availableProcessors();
+        // The processors, as simulate's default, within its bound.
+        int threads = Math.min(Runtime.getRuntime().availableProcessors(), EnginesCommand.MAX_THREADS);
         return aboutScene(() -> engine.run(scene.withUntil(t), RunOptions.until(t).withThreads(threads))).finalState();
     }
 
@@ -129,19 +136,22 @@ public final class RenderCommand implements Callable<Integer> {
         for (String item : list.split(",", -1)) {
             String s = item.strip();
             if (s.isEmpty()) {
-                throw new BadInputException("--at: empty time in '" + list + "' (give times like 0,0.5,2)");
+                throw new BadInputException("--at: empty time in " + Quoted.of(list) + " (give times like 0,0.5,2)");
             }
             // Plain decimals only: Java would also take "1d", hex floats, "NaN" and "Infinity".
-            if (!s.matches("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d+)?")) {
-                throw new BadInputException("--at: '" + s + "' is not a time (a finite number >= 0)");
+            if (s.length() > MAX_TIME_CHARS || !s.matches("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d+)?")) {
+                throw new BadInputException("--at: " + Quoted.of(s) + " is not a time (a finite number >= 0)");
             }
             double t = Double.parseDouble(s);
             if (Double.isInfinite(t) || t < 0) {
-                throw new BadInputException("--at: times must be finite numbers >= 0, got '" + s + "'");
+                throw new BadInputException("--at: times must be finite numbers >= 0, got " + Quoted.of(s));
             }
             t = t == 0 ? 0.0 : t; // -0 is 0
             if (!times.contains(t)) {
                 times.add(t);
+            }
+            if (times.size() > MAX_TIMES) {
+                throw new BadInputException("--at: at most " + MAX_TIMES + " times, each a picture of its own");
             }
         }
         return times;
@@ -165,7 +175,7 @@ public final class RenderCommand implements Callable<Integer> {
         try {
             return Path.of(sceneFile);
         } catch (InvalidPathException e) {
-            throw new BadInputException("not a valid file name: " + e.getReason());
+            throw new BadInputException("not a valid file name: " + Quoted.bare(e.getReason()));
         }
     }
 
@@ -174,7 +184,7 @@ public final class RenderCommand implements Callable<Integer> {
         try {
             return step.get();
         } catch (BadInputException e) {
-            throw new BadInputException(sceneFile + ": " + e.getMessage());
+            throw new BadInputException(Quoted.fileName(sceneFile) + ": " + e.getMessage());
         }
     }
 }

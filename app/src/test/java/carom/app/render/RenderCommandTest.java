@@ -231,6 +231,38 @@ class RenderCommandTest {
     }
 
     @Test
+    void atMostAThousandTimesAndNoTimeOfAbsurdLength() {
+        Path scene = scene("s.json", WALLED);
+        StringBuilder times = new StringBuilder("0");
+        for (int k = 1; k <= RenderCommand.MAX_TIMES; k++) {
+            times.append(',').append(k);
+        }
+        assertRejected(carom("render", scene.toString(), "--at", times.toString(), "--out", dir.resolve("out").toString()),
+                "error: --at: at most 1000 times");
+        // Ten million digits: refused at once, not matched against the pattern of a number.
+        Run r = carom("render", scene.toString(), "--at", "1".repeat(10_000_000) + "x", "--out", dir.resolve("out").toString());
+        assertRejected(r, "error: --at: '111");
+        assertThat(r.firstErrorLine()).endsWith("... (10000001 characters) is not a time (a finite number >= 0)");
+    }
+
+    /** A killed render leaves temporary pictures; the next render into the folder removes them. */
+    @Test
+    void temporaryPicturesOfAKilledRenderAreRemoved() throws Exception {
+        Path scene = scene("s.json", WALLED);
+        Path out = Files.createDirectories(dir.resolve("out"));
+        Process ended = new ProcessBuilder("true").start();
+        ended.waitFor();
+        // Named as that process would have named it: as ours, with its pid.
+        String ours = carom.app.AtomicOutput.tempFor(out.resolve("peg-and-ball-t1.png")).getFileName().toString();
+        String name = ours.replace(".carom-" + ProcessHandle.current().pid() + "-", ".carom-" + ended.pid() + "-");
+        Path debris = Files.writeString(out.resolve(name), "half a picture");
+        Run r = carom("render", scene.toString(), "--at", "0", "--out", out.toString(), "--size", "50");
+        assertThat(r.status()).as(r.err()).isZero();
+        assertThat(debris).doesNotExist();
+        assertThat(filesIn(out)).containsExactly("peg-and-ball-t0.png");
+    }
+
+    @Test
     void unknownColourModeIsRejected() {
         Path scene = scene("s.json", WALLED);
         Run r = carom("render", scene.toString(), "--at", "0", "--color", "rainbow", "--out", dir.resolve("out").toString());

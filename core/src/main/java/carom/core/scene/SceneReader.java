@@ -1,6 +1,8 @@
 package carom.core.scene;
 
 import carom.core.BadInputException;
+import carom.core.Quoted;
+import carom.core.StrictUtf8;
 import com.fasterxml.jackson.core.JsonLocation;
 import com.fasterxml.jackson.core.JsonParser;
 import com.fasterxml.jackson.core.JsonProcessingException;
@@ -11,6 +13,7 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.json.JsonMapper;
 import java.io.IOException;
 import java.io.InputStream;
+import java.io.Reader;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.FileSystemException;
 import java.nio.file.Files;
@@ -28,6 +31,10 @@ import java.util.Set;
  * non-finite numbers, wrong types, missing keys and unknown keys are all errors, so that a typo never
  * silently changes the physics. The tree is walked by hand so that every error names its JSON path
  * ({@code species[1].mass}); ranges, placement and overlaps are then checked by {@link SceneBuilder}.
+ * The bytes must be UTF-8, strictly ({@link StrictUtf8}): Jackson alone let some malformed bytes pass.
+ *
+ * <p>What the user wrote enters a message only through {@link Quoted}, so that every message is one
+ * line of bounded length, whatever the file holds.
  */
 public final class SceneReader {
     private static final ObjectMapper MAPPER = JsonMapper.builder()
@@ -48,6 +55,8 @@ public final class SceneReader {
     private static final Set<String> UNIFORM_KEYS = Set.of("distribution", "scale");
     private static final Set<String> MAXWELL_KEYS = Set.of("distribution", "temperature");
     private static final List<String> EFFECTS = List.of("gravity", "restitution", "wallRestitution", "tc");
+    /** Species names an "unknown species" message lists before it just counts them. */
+    private static final int DECLARED_NAMES_SHOWN = 10;
 
     private SceneReader() {
     }
@@ -60,10 +69,12 @@ public final class SceneReader {
     public static Scene read(Path file) {
         JsonNode root;
         // Streamed rather than read into one array, so that file size is bounded by the heap only.
-        try (InputStream in = Files.newInputStream(file)) {
-            root = MAPPER.readTree(in);
+        try (InputStream in = Files.newInputStream(file); Reader text = StrictUtf8.reader(in)) {
+            root = MAPPER.readTree(text);
         } catch (JsonProcessingException e) {
             throw malformed(e);
+        } catch (StrictUtf8.MalformedException e) {
+            throw new BadInputException(e.getMessage());
         } catch (IOException e) {
             throw new BadInputException("cannot read the file: " + ioReason(e));
         }
@@ -121,7 +132,7 @@ public final class SceneReader {
             }
         }
         if (kind == null) {
-            throw new BadInputException("box.boundary: unknown boundary '" + boundary + "' (known: walls, periodic)");
+            throw new BadInputException("box.boundary: unknown boundary " + Quoted.of(boundary) + " (known: walls, periodic)");
         }
         builder.box(width, height, kind);
     }
@@ -143,8 +154,8 @@ public final class SceneReader {
             }
             Integer earlier = byName.putIfAbsent(name, i);
             if (earlier != null) {
-                throw new BadInputException(path + ".name: duplicate species name '" + name
-                        + "' (already used by species[" + earlier + "])");
+                throw new BadInputException(path + ".name: duplicate species name " + Quoted.of(name)
+                        + " (already used by species[" + earlier + "])");
             }
             double radius = requiredNumber(s, path, "radius");
             JsonNode fixedNode = s.get("fixed");
@@ -194,7 +205,7 @@ public final class SceneReader {
             String layoutKey = string(required(g, path, "layout"), path + ".layout");
             Layout layout = Layout.byKey(layoutKey);
             if (layout == null) {
-                throw new BadInputException(path + ".layout: unknown layout '" + layoutKey + "' (known: lattice, triangular, random)");
+                throw new BadInputException(path + ".layout: unknown layout " + Quoted.of(layoutKey) + " (known: lattice, triangular, random)");
             }
             double jitter = optionalNumber(g, path, "jitter", 0);
             JsonNode velocityNode = g.get("velocity");
@@ -203,8 +214,8 @@ public final class SceneReader {
                 for (int s : mixture) {
                     if (species.get(s).fixed()) {
                         // The generator would drop it silently; a fixed disc never moves (SPEC).
-                        throw new BadInputException(path + ".velocity: species '" + species.get(s).name()
-                                + "' is fixed and cannot have a velocity");
+                        throw new BadInputException(path + ".velocity: species " + Quoted.of(species.get(s).name())
+                                + " is fixed and cannot have a velocity");
                     }
                 }
                 velocity = readVelocity(object(velocityNode, path + ".velocity"), path + ".velocity");
@@ -226,8 +237,8 @@ public final class SceneReader {
                 onlyKnownKeys(v, path, MAXWELL_KEYS);
                 return new VelocityDistribution.Maxwell(requiredNumber(v, path, "temperature"));
             }
-            default -> throw new BadInputException(path + ".distribution: unknown distribution '" + distribution
-                    + "' (known: uniform, maxwell)");
+            default -> throw new BadInputException(path + ".distribution: unknown distribution " + Quoted.of(distribution)
+                    + " (known: uniform, maxwell)");
         }
     }
 
@@ -235,7 +246,7 @@ public final class SceneReader {
         for (Iterator<String> keys = e.fieldNames(); keys.hasNext(); ) {
             String key = keys.next();
             if (!EFFECTS.contains(key)) {
-                throw new BadInputException("effects." + key + ": unknown effect (known: " + String.join(", ", EFFECTS) + ")");
+                throw new BadInputException("effects." + Quoted.bare(key) + ": unknown effect (known: " + String.join(", ", EFFECTS) + ")");
             }
         }
         Effects effects = Effects.NONE;
@@ -268,12 +279,12 @@ public final class SceneReader {
             String name = string(node.get(k), itemPath);
             Integer index = speciesByName.get(name);
             if (index == null) {
-                throw new BadInputException(itemPath + ": unknown species '" + name + "' (declared: "
-                        + String.join(", ", species.stream().map(Species::name).toList()) + ")");
+                throw new BadInputException(itemPath + ": unknown species " + Quoted.of(name) + " (declared: "
+                        + declared(species) + ")");
             }
             for (int j = 0; j < k; j++) {
                 if (ids[j] == index) {
-                    throw new BadInputException(itemPath + ": species '" + name + "' is listed twice");
+                    throw new BadInputException(itemPath + ": species " + Quoted.of(name) + " is listed twice");
                 }
             }
             ids[k] = index;
@@ -317,10 +328,23 @@ public final class SceneReader {
         String name = string(required(o, path, "species"), path + ".species");
         Integer index = speciesByName.get(name);
         if (index == null) {
-            throw new BadInputException(path + ".species: unknown species '" + name + "' (declared: "
-                    + String.join(", ", species.stream().map(Species::name).toList()) + ")");
+            throw new BadInputException(path + ".species: unknown species " + Quoted.of(name) + " (declared: "
+                    + declared(species) + ")");
         }
         return index;
+    }
+
+    /** The species names for a message: the first few, then how many there are. */
+    private static String declared(List<Species> species) {
+        int shown = Math.min(species.size(), DECLARED_NAMES_SHOWN);
+        StringBuilder sb = new StringBuilder();
+        for (int i = 0; i < shown; i++) {
+            sb.append(i == 0 ? "" : ", ").append(Quoted.bare(species.get(i).name()));
+        }
+        if (shown < species.size()) {
+            sb.append(", ... (").append(species.size()).append(" species)");
+        }
+        return sb.toString();
     }
 
     // ---- typed access with paths ----
@@ -333,7 +357,7 @@ public final class SceneReader {
         for (Iterator<String> keys = o.fieldNames(); keys.hasNext(); ) {
             String key = keys.next();
             if (!known.contains(key)) {
-                throw new BadInputException(child(path, key) + ": unknown key (known: "
+                throw new BadInputException(child(path, Quoted.bare(key)) + ": unknown key (known: "
                         + String.join(", ", known.stream().sorted().toList()) + ")");
             }
         }
@@ -378,23 +402,23 @@ public final class SceneReader {
         long value;
         if (v.isIntegralNumber()) {
             if (!v.canConvertToLong()) {
-                throw new BadInputException(path + ": must be " + (d < 0 ? ">= " + min : "at most " + max) + ", got " + v);
+                throw new BadInputException(path + ": must be " + (d < 0 ? ">= " + min : "at most " + max) + ", got " + Quoted.bare(v.toString()));
             }
             value = v.longValue();
         } else {
             if (d != Math.rint(d)) {
-                throw new BadInputException(path + ": must be an integer, got " + v);
+                throw new BadInputException(path + ": must be an integer, got " + Quoted.bare(v.toString()));
             }
             if (Math.abs(d) >= 0x1p63) {
-                throw new BadInputException(path + ": must be " + (d < 0 ? ">= " + min : "at most " + max) + ", got " + v);
+                throw new BadInputException(path + ": must be " + (d < 0 ? ">= " + min : "at most " + max) + ", got " + Quoted.bare(v.toString()));
             }
             value = (long) d;
         }
         if (value < min) {
-            throw new BadInputException(path + ": must be >= " + min + ", got " + v);
+            throw new BadInputException(path + ": must be >= " + min + ", got " + Quoted.bare(v.toString()));
         }
         if (value > max) {
-            throw new BadInputException(path + ": must be at most " + max + ", got " + v);
+            throw new BadInputException(path + ": must be at most " + max + ", got " + Quoted.bare(v.toString()));
         }
         return value;
     }
@@ -438,6 +462,9 @@ public final class SceneReader {
 
     // ---- error messages for what Jackson rejects ----
 
+    /** Characters of Jackson's own explanation shown (it quotes up to 256 characters of a bad token). */
+    private static final int JACKSON_REASON_CHARS = 200;
+
     private static BadInputException malformed(JsonProcessingException e) {
         String reason = readableReason(e);
         JsonLocation at = e.getLocation();
@@ -451,27 +478,31 @@ public final class SceneReader {
     /** Jackson's own wording, first line only, with the advice to switch on lenient features removed. */
     private static String readableReason(JsonProcessingException e) {
         String original = e.getOriginalMessage() == null ? e.getClass().getSimpleName() : e.getOriginalMessage();
+        String duplicate = "Duplicate field '";
+        if (original.startsWith(duplicate) && original.endsWith("'")) {
+            // Jackson quotes the key as it is, newlines and all: bound and escape it like any value.
+            return "duplicate key " + Quoted.of(original.substring(duplicate.length(), original.length() - 1));
+        }
         // Jackson names the source of a location inline; keep just the line and column.
-        String line = original.lines().findFirst().orElse("").strip()
+        String line = original.strip()
                 .replaceAll("\\[Source: .*?; line: (\\d+), column: (\\d+)\\]", "line $1 column $2")
                 .replaceAll("\\[Source: .*?; line: (\\d+)\\]", "line $1");
         if (line.startsWith("Unexpected close marker") && line.contains("for root")) {
             return "unexpected content after the end of the scene object";
-        }
-        if (line.startsWith("Duplicate field ")) {
-            return "duplicate key " + line.substring("Duplicate field ".length());
         }
         if (line.startsWith("Trailing token")) {
             return "unexpected content after the end of the scene object";
         }
         if (line.startsWith("Non-standard token")) {
             int end = line.indexOf(':');
-            return (end > 0 ? line.substring(0, end) : line) + " (NaN and Infinity are not JSON numbers)";
+            return Quoted.bare(end > 0 ? line.substring(0, end) : line, JACKSON_REASON_CHARS)
+                    + " (NaN and Infinity are not JSON numbers)";
         }
         if (line.contains("ALLOW_COMMENTS") || line.contains("comment")) {
             return "comments are not allowed in JSON";
         }
-        return line.length() > 200 ? line.substring(0, 200) + "..." : line;
+        // Jackson quotes up to 256 characters of a bad token as it is.
+        return Quoted.bare(line, JACKSON_REASON_CHARS);
     }
 
     private static String ioReason(IOException e) {
@@ -482,8 +513,8 @@ public final class SceneReader {
             return "permission denied";
         }
         if (e instanceof FileSystemException fse && fse.getReason() != null) {
-            return fse.getReason();
+            return Quoted.bare(fse.getReason());
         }
-        return e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+        return e.getMessage() == null ? e.getClass().getSimpleName() : Quoted.fileName(e.getMessage());
     }
 }

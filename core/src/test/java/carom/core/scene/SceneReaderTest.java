@@ -748,11 +748,165 @@ class SceneReaderTest {
     }
 
     @Test
-    void invalidUtf8IsMalformed(@TempDir Path dir) throws IOException {
+    void invalidUtf8NamesTheByte(@TempDir Path dir) throws IOException {
         Path file = dir.resolve("latin1.json");
         byte[] bytes = BASE.replace("\"base\"", "\"b\u00e4se\"").getBytes(java.nio.charset.StandardCharsets.ISO_8859_1);
         Files.write(file, bytes);
+        // "{", newline, two spaces, "name": "b, then the Latin-1 a-umlaut, byte 15.
         assertThatThrownBy(() -> SceneReader.read(file)).isInstanceOf(BadInputException.class)
-                .hasMessageStartingWith("malformed JSON at line 2");
+                .hasMessage("not valid UTF-8 at byte 15");
+    }
+
+    // ---- strict UTF-8 ----
+
+    /** One disc's particle entry: {@code BEFORE} + the bytes under test + {@code AFTER}. */
+    private static final String PARTICLE_SCENE = """
+            { "box": { "width": 10, "height": 4, "boundary": "walls" },
+              "species": [ { "name": "d", "radius": 0.5, "mass": 1 } ],
+              "particles": [ { "species": "d", %s } ],
+              "until": 1 }
+            """;
+
+    /** Writes PARTICLE_SCENE with {@code entry} (latin-1 text: each char one byte) and reads it. */
+    private static Throwable readBytes(Path dir, String entry) throws IOException {
+        String text = PARTICLE_SCENE.formatted(entry);
+        Path file = dir.resolve("bytes.json");
+        Files.write(file, text.getBytes(java.nio.charset.StandardCharsets.ISO_8859_1));
+        try {
+            SceneReader.read(file);
+        } catch (BadInputException e) {
+            return e;
+        }
+        throw new AssertionError("accepted " + entry);
+    }
+
+    /** Byte number (1 = first) of the first {@code marker} char in PARTICLE_SCENE with {@code entry}. */
+    private static long byteOf(String entry, char marker) {
+        return PARTICLE_SCENE.formatted(entry).indexOf(marker) + 1;
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {
+        "\"\u00ffx\": 2, \"y\": 2",
+        "\"x\": 2, \"y\": 2, \"\u00ffvx\": 1",
+        "\"x\": 2, \"y\": 2, \"\u00ffvy\": 1",
+        "\"\u00ffx\": 2, \"y\": 2, \"vx\": 1, \"vy\": 1",
+        "\"x\": 2, \"\u00ffspecies_and_then_some\": 2, \"y\": 2",
+        "\"x\": 2, \"y\": 2\u00ff",
+        "\u00ff\"x\": 2, \"y\": 2"})
+    void aByteFFAnywhereIsRejectedWithItsPosition(String entry, @TempDir Path dir) throws IOException {
+        assertThat(readBytes(dir, entry)).hasMessage("not valid UTF-8 at byte " + byteOf(entry, '\u00ff'));
+    }
+
+    /** Overlong forms of '.', an encoded surrogate, a code point beyond U+10FFFF, a lone continuation byte. */
+    @ParameterizedTest
+    @ValueSource(strings = {"\u00c0\u00ae", "\u00e0\u0080\u00ae", "\u00f0\u0080\u0080\u00ae", "\u00c1\u00bf",
+        "\u00ed\u00a0\u0080", "\u00f4\u0090\u0080\u0080", "\u0080", "\u00f8\u0088\u0080\u0080\u0080"})
+    void overlongAndOtherMalformedSequencesAreRejected(String sequence, @TempDir Path dir) throws IOException {
+        String entry = "\"x\": 2, \"y\": 2, \"" + sequence + "vx\": 1";
+        assertThat(readBytes(dir, entry)).hasMessage("not valid UTF-8 at byte " + byteOf(entry, sequence.charAt(0)));
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"\u00e2\u0082", "\u00f0\u009f\u0098", "\u00c3"})
+    void aTruncatedSequenceIsRejected(String cut, @TempDir Path dir) throws IOException {
+        String entry = "\"x\": 2, \"y\": 2, \"vx\": 1, \"" + cut + "\": 1";
+        assertThat(readBytes(dir, entry)).hasMessage("not valid UTF-8 at byte " + byteOf(entry, cut.charAt(0)));
+    }
+
+    @Test
+    void aSequenceCutShortByTheEndOfTheFileIsRejected(@TempDir Path dir) throws IOException {
+        Path file = dir.resolve("cut.json");
+        byte[] text = BASE.strip().getBytes(java.nio.charset.StandardCharsets.UTF_8);
+        byte[] bytes = java.util.Arrays.copyOf(text, text.length + 2);
+        bytes[text.length] = (byte) 0xE2;
+        bytes[text.length + 1] = (byte) 0x82;
+        Files.write(file, bytes);
+        assertThatThrownBy(() -> SceneReader.read(file)).hasMessage("not valid UTF-8 at byte " + (text.length + 1));
+    }
+
+    @Test
+    void aBadByteFarIntoALargeFileIsCountedAcrossReads(@TempDir Path dir) throws IOException {
+        // 200 kB of spaces, with a three-byte character and then the bad byte well past the first buffers.
+        String padding = " ".repeat(200_001);
+        String text = BASE.replace("\"name\": \"base\",", "\"name\": \"b\u20acse\"," + padding + "\"\u00ff\": 1,");
+        Path file = dir.resolve("long.json");
+        byte[] bytes = text.replace("\u20ac", "\u00e2\u0082\u00ac").getBytes(java.nio.charset.StandardCharsets.ISO_8859_1);
+        Files.write(file, bytes);
+        long expected = text.indexOf('\u00ff') + 1 + 2; // the euro sign takes three bytes, one char
+        assertThatThrownBy(() -> SceneReader.read(file)).hasMessage("not valid UTF-8 at byte " + expected);
+    }
+
+    @Test
+    void wellFormedUtf8AndAByteOrderMarkAreRead(@TempDir Path dir) throws IOException {
+        // Names of one, two, three and four bytes per character, one straddling a 64 KiB read.
+        String names = "\"name\": \"" + " ".repeat(65_530) + "\u00e4\u03c3\u20ac\ud83d\ude00\",";
+        String text = "\ufeff" + BASE.replace("\"name\": \"base\",", names);
+        Path file = dir.resolve("utf8.json");
+        Files.writeString(file, text);
+        assertThat(SceneReader.read(file).name()).endsWith("\u00e4\u03c3\u20ac\ud83d\ude00").hasSize(65_530 + 5);
+    }
+
+    // ---- user text in messages: one line, bounded, escaped ----
+
+    private static final String LONG = "k".repeat(10_000_000);
+    private static final String MULTI_LINE = "a\nerror: b\r\nc";
+    private static final String ESCAPES = "\u001b[31mred\u001b[0m\u0007\u202e";
+
+    @ParameterizedTest
+    @ValueSource(strings = {"long", "multi", "escapes"})
+    void userTextInMessagesIsOneBoundedLine(String kind) {
+        String nasty = switch (kind) {
+            case "long" -> LONG;
+            case "multi" -> MULTI_LINE;
+            default -> ESCAPES;
+        };
+        String text = JSON.getNodeFactory().textNode(nasty).toString();
+        List<String> scenes = List.of(
+                base(root -> at(root, "/particles/0").put("PLACEHOLDER", 1)),
+                base(root -> at(root, "/effects").put("PLACEHOLDER", 1)),
+                base(root -> root.put("PLACEHOLDER", 1)),
+                base(root -> at(root, "/box").put("boundary", "PLACEHOLDER")),
+                base(root -> at(root, "/particles/1").put("species", "PLACEHOLDER")),
+                base(root -> at(root, "/generate/0").put("layout", "PLACEHOLDER")),
+                base(root -> at(root, "/generate/0/velocity").put("distribution", "PLACEHOLDER")),
+                base(root -> at(root, "/species/1").put("name", "disc")).replace("\"disc\"", "\"PLACEHOLDER\""),
+                BASE.replace("\"until\": 3", "\"until\": 3, \"PLACEHOLDER\": 1, \"PLACEHOLDER\": 2"));
+        for (String scene : scenes) {
+            String message = catchBad(scene.replace("\"PLACEHOLDER\"", text)).getMessage();
+            assertOneBoundedLine(message);
+            if (!kind.equals("long")) {
+                assertThat(message).as("shown escaped").containsAnyOf("\\n", "\\u001b");
+            }
+        }
+        // Outside a string, as a token Jackson cannot read.
+        assertOneBoundedLine(catchBad(BASE.replace("\"until\": 3", "\"until\": t" + nasty)).getMessage());
+    }
+
+    private static void assertOneBoundedLine(String message) {
+        assertThat(message).as(message).hasSizeLessThan(400)
+                .doesNotContain("\n", "\r", "\u001b", "\u0007", "\u202e");
+    }
+
+    @Test
+    void integersOfHundredsOfDigitsAreQuotedShort() {
+        // Jackson itself refuses numbers of more than 1000 digits, and 400 overflow a double.
+        String digits = "9".repeat(300);
+        String message = catchBad(BASE.replace("\"seed\": 42", "\"seed\": " + digits)).getMessage();
+        assertThat(message).startsWith("generate[0].seed: must be at most").endsWith("... (300 characters)")
+                .hasSizeLessThan(200);
+    }
+
+    @Test
+    void manySpeciesAreCountedNotAllListed() {
+        String json = base(root -> {
+            ArrayNode species = (ArrayNode) root.get("species");
+            for (int i = 0; i < 1000; i++) {
+                species.add(JSON.createObjectNode().put("name", "s" + i).put("radius", 0.1).put("mass", 1));
+            }
+            at(root, "/particles/0").put("species", "none");
+        });
+        String message = rejected(json, "particles[0].species: unknown species 'none' (declared: disc, peg, s0, ");
+        assertThat(message).endsWith(", ... (1002 species))").hasSizeLessThan(200);
     }
 }
