@@ -1,6 +1,7 @@
 package carom.core.engine;
 
 import carom.core.BadInputException;
+import carom.core.Quoted;
 import java.util.Locale;
 import java.util.regex.Pattern;
 
@@ -69,7 +70,7 @@ public sealed interface Tunable<T> permits Tunable.Real, Tunable.Whole, Tunable.
         @Override
         public Double parse(String text) {
             if (!DECIMAL.matcher(text).matches()) {
-                throw new BadInputException("--option " + name + ": not a number: " + shown(text));
+                throw new BadInputException("--option " + name + ": not a number: " + Quoted.of(text));
             }
             double v = Double.parseDouble(text);
             if (!(v >= min && v <= max)) {
@@ -121,7 +122,7 @@ public sealed interface Tunable<T> permits Tunable.Real, Tunable.Whole, Tunable.
             try {
                 v = Long.parseLong(text.startsWith("+") ? text.substring(1) : text);
             } catch (NumberFormatException e) {
-                throw new BadInputException("--option " + name + ": not a whole number: " + shown(text));
+                throw new BadInputException("--option " + name + ": not a whole number: " + Quoted.of(text));
             }
             if (v < min || v > max) {
                 throw new BadInputException("--option " + name + ": must be " + rangeText() + ", got " + v);
@@ -159,7 +160,7 @@ public sealed interface Tunable<T> permits Tunable.Real, Tunable.Whole, Tunable.
             if (text.equals("false")) {
                 return false;
             }
-            throw new BadInputException("--option " + name + ": must be true or false, got " + shown(text));
+            throw new BadInputException("--option " + name + ": must be true or false, got " + Quoted.of(text));
         }
 
         @Override
@@ -171,14 +172,6 @@ public sealed interface Tunable<T> permits Tunable.Real, Tunable.Whole, Tunable.
         public String defaultText() {
             return Boolean.toString(fallback);
         }
-    }
-
-    /** A user's text in a one-line message: at most 40 characters, control characters escaped. */
-    private static String shown(String text) {
-        StringBuilder b = new StringBuilder("'");
-        text.codePoints().limit(40).forEach(c -> b.append(c < 0x20 || c == 0x7f ? String.format("\\u%04x", c) : Character.toString(c)));
-        b.append('\'');
-        return text.length() > 40 ? b + "... (" + text.length() + " characters)" : b.toString();
     }
 
     /** Shortest text that reads back as {@code v}, without a trailing {@code .0}. */

@@ -1,6 +1,7 @@
 package carom.core.engine;
 
 import carom.core.BadInputException;
+import carom.core.Quoted;
 import java.util.List;
 import java.util.Map;
 import java.util.stream.Collectors;
@@ -18,7 +19,7 @@ public final class Tunables {
     public static void check(String engine, List<Tunable<?>> declared, Map<String, String> given) {
         for (Map.Entry<String, String> e : given.entrySet()) {
             Tunable<?> t = declared.stream().filter(d -> d.name().equals(e.getKey())).findFirst()
-                    .orElseThrow(() -> new BadInputException("--option " + e.getKey() + ": engine " + engine
+                    .orElseThrow(() -> new BadInputException("--option " + Quoted.bare(e.getKey()) + ": engine " + engine
                             + " has no such option (known: " + names(declared) + ")"));
             t.parse(e.getValue());
         }
