@@ -19,10 +19,10 @@ import picocli.CommandLine.Spec;
         description = "Exact event-driven simulation of hard discs in 2D.",
         subcommands = {SimulateCommand.class, EnginesCommand.class, carom.app.render.RenderCommand.class,
                 carom.app.analyze.AnalyzeCommand.class},
-        footer = {"", "Measurements live in the lab (lab/target/carom-lab.jar), which ./carom runs for these commands:",
-                "  carom experiment thesis|actors   the thesis's experiment, actors per core",
-                "  carom study accuracy             every engine's errors against the exact serial engine",
-                "  carom bench ARGS                 JMH benchmarks (ARGS are JMH's)"})
+        footer = {"", "Measurements are the lab's (lab/target/carom-lab.jar; ./carom runs it):",
+                "  carom experiment thesis|actors  the thesis's experiment; actors per core",
+                "  carom study accuracy            engines' errors against the serial engine",
+                "  carom bench ARGS                JMH benchmarks (ARGS are JMH's own)"})
 public final class Main implements Runnable {
     /** Exit status for a bad scene, bad option or other bad input. */
     public static final int BAD_INPUT = 2;

@@ -27,7 +27,7 @@ import picocli.CommandLine.Spec;
 @Command(name = "carom",
         description = "carom's lab: experiments, studies and benchmarks of the engines.",
         subcommands = {ExperimentCommand.class, StudyCommand.class, BenchCommand.class, LabMain.WorkerCommand.class},
-        footer = {"", "Simulation itself (simulate, render, analyze, engines) is the app: ./carom simulate SCENE.json"})
+        footer = {"", "Simulation (simulate, render, analyze, engines) is the app's: ./carom --help"})
 public final class LabMain implements Runnable {
     @Spec
     CommandSpec spec;

@@ -4,7 +4,7 @@ import java.util.List;
 import java.util.Map;
 
 /**
- * What one child JVM runs ({@link TrialProcess}): one engine on a fixed number of threads, a
+ * What one child JVM runs ({@link ExperimentWorker}): one engine on a fixed number of threads, a
  * warm-up, then the runs in order. Sent to the child as JSON on its standard input.
  *
  * @param engine      engine name

@@ -1,8 +1,8 @@
 package carom.lab.study;
 
-import carom.lab.peer.Dyn4jPeer;
 import carom.core.engine.Engine;
 import carom.engines.EngineCatalog;
+import carom.lab.peer.Dyn4jPeer;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;

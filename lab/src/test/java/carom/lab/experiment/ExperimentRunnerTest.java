@@ -2,6 +2,7 @@ package carom.lab.experiment;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import carom.lab.run.Carriers;
 import carom.lab.run.TrialRecord;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
@@ -38,9 +39,9 @@ class ExperimentRunnerTest {
     void onlyTheVirtualThreadEngineGetsItsThreadsAsCarriers() {
         ExperimentRunner runner = new ExperimentRunner("3g", System.err);
         List<String> vthreads = runner.childFor(new ChildPlan("vthreads", 3, 0, List.of())).command("experiment");
-        assertThat(vthreads).contains("-Xmx3g", "-Djdk.virtualThreadScheduler.parallelism=3");
+        assertThat(vthreads).contains("-Xmx3g", Carriers.option(3));
         assertThat(vthreads.subList(vthreads.size() - 3, vthreads.size())).containsExactly("carom.lab.LabMain", "worker", "experiment");
         assertThat(runner.childFor(new ChildPlan("akka", 3, 0, List.of())).command("experiment"))
-                .noneMatch(o -> o.startsWith("-Djdk.virtualThreadScheduler"));
+                .noneMatch(o -> o.contains(Carriers.PARALLELISM));
     }
 }
