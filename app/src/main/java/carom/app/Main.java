@@ -18,8 +18,11 @@ import picocli.CommandLine.Spec;
         versionProvider = VersionProvider.class,
         description = "Exact event-driven simulation of hard discs in 2D.",
         subcommands = {SimulateCommand.class, EnginesCommand.class, carom.app.render.RenderCommand.class,
-                carom.app.analyze.AnalyzeCommand.class, carom.app.experiment.ExperimentCommand.class,
-                carom.app.study.StudyCommand.class})
+                carom.app.analyze.AnalyzeCommand.class},
+        footer = {"", "Measurements are the lab's (lab/target/carom-lab.jar; ./carom runs it):",
+                "  carom experiment thesis|actors  the thesis's experiment; actors per core",
+                "  carom study accuracy            engines' errors against the serial engine",
+                "  carom bench ARGS                JMH benchmarks (ARGS are JMH's own)"})
 public final class Main implements Runnable {
     /** Exit status for a bad scene, bad option or other bad input. */
     public static final int BAD_INPUT = 2;
@@ -60,7 +63,7 @@ public final class Main implements Runnable {
     /** {@code carom} alone: say which commands exist rather than doing nothing. */
     @Override
     public void run() {
-        throw new ParameterException(spec.commandLine(), "missing command: use 'carom simulate SCENE.json', 'carom render SCENE.json --at T1,T2 --out DIR', 'carom analyze FILE.jfr', 'carom experiment thesis' or 'carom engines'");
+        throw new ParameterException(spec.commandLine(), "missing command: use 'carom simulate SCENE.json', 'carom render SCENE.json --at T1,T2 --out DIR', 'carom analyze FILE.jfr' or 'carom engines' (measurements: 'carom experiment thesis', 'carom study accuracy', 'carom bench')");
     }
 
     /** Hands the raw streams to the command that needs to know what they are. */
@@ -69,12 +72,6 @@ public final class Main implements Runnable {
         public <K> K create(Class<K> cls) throws Exception {
             if (cls == SimulateCommand.class) {
                 return cls.cast(new SimulateCommand(out, err));
-            }
-            if (cls == carom.app.experiment.ThesisCommand.class) {
-                return cls.cast(new carom.app.experiment.ThesisCommand(err));
-            }
-            if (cls == carom.app.experiment.ActorsCommand.class) {
-                return cls.cast(new carom.app.experiment.ActorsCommand(err));
             }
             return CommandLine.defaultFactory().create(cls);
         }

@@ -1,0 +1,45 @@
+package carom.lab.experiment;
+
+import carom.app.Main;
+import carom.lab.run.TrialRecord;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.Map;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Spec;
+
+/** {@code carom experiment}: the group of experiments, each a subcommand writing a report folder. */
+@Command(name = "experiment", mixinStandardHelpOptions = true,
+        description = "Run an experiment and write its report folder: 'thesis' (the thesis's Tables 4.1-4.4 on our engines) "
+                + "or 'actors' (time against actors per core for the actor engines).",
+        subcommands = {ThesisCommand.class, ActorsCommand.class})
+public final class ExperimentCommand implements Runnable {
+    @Spec
+    CommandSpec spec;
+
+    @Override
+    public void run() {
+        throw new ParameterException(spec.commandLine(), "missing experiment: use 'carom experiment thesis' or 'carom experiment actors'");
+    }
+
+    /**
+     * Says what was written; exit status 0, or 1 when a child JVM failed (its runs are in the report as
+     * skipped, with the child's last error line).
+     */
+    static int conclude(CommandSpec spec, Path out, Map<String, byte[]> files, ExperimentRunner.Outcome outcome) {
+        PrintWriter stdout = spec.commandLine().getOut();
+        long measured = outcome.records().stream().filter(TrialRecord::measured).count();
+        stdout.println("wrote " + out + ": " + String.join(", ", files.keySet()));
+        stdout.println(measured + " of " + outcome.records().size() + " runs measured; see " + out.resolve(ThesisReport.REPORT));
+        stdout.flush();
+        if (outcome.failed() > 0) {
+            PrintWriter stderr = spec.commandLine().getErr();
+            stderr.println("error: " + outcome.failed() + " run(s) lost to a failed child JVM (the report's notes say why)");
+            stderr.flush();
+            return Main.INTERNAL_FAILURE;
+        }
+        return 0;
+    }
+}

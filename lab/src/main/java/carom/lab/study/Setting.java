@@ -1,0 +1,60 @@
+package carom.lab.study;
+
+import carom.core.engine.Engine;
+import carom.engines.EngineCatalog;
+import carom.lab.peer.Dyn4jPeer;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+import java.util.stream.Stream;
+
+/**
+ * One engine and setting of the study: an engine by name (the catalog's or the dyn4j peer), its thread
+ * count, and for engines with a time step ({@code dt} tunable) the step as a multiple of the stepped
+ * engine's default.
+ */
+record Setting(String engine, int threads, double dtFactor) {
+    /** Catalog engines known to use one thread; every other catalog engine is run at each thread count. */
+    private static final Set<String> SINGLE_THREADED = Set.of("serial", "fast");
+    static final String PEER = "dyn4j";
+
+    boolean hasDt() {
+        return !Double.isNaN(dtFactor);
+    }
+
+    String label() {
+        if (hasDt()) {
+            return engine + " dt×" + StudyScene.fmt(dtFactor);
+        }
+        return SINGLE_THREADED.contains(engine) ? engine : engine + " ×" + threads;
+    }
+
+    /** The engine itself: a catalog engine or the peer. */
+    static Engine engineNamed(String name) {
+        return name.equals(PEER) ? new Dyn4jPeer() : EngineCatalog.byName(name);
+    }
+
+    /** Every engine the study knows: the catalog's, then the peer. */
+    static List<String> knownEngines() {
+        return Stream.concat(EngineCatalog.all().stream().map(Engine::name), Stream.of(PEER)).toList();
+    }
+
+    /**
+     * The settings for these engines: a stepping engine once per dt factor, a single-threaded engine
+     * once, any other engine (relaxed and future parallel ones) once per thread count.
+     */
+    static List<Setting> expand(List<String> engines, List<Integer> threads, List<Double> dtFactors) {
+        List<Setting> settings = new ArrayList<>();
+        for (String name : engines) {
+            Engine engine = engineNamed(name);
+            if (engine.tunables().contains("dt")) {
+                dtFactors.forEach(f -> settings.add(new Setting(name, 1, f)));
+            } else if (SINGLE_THREADED.contains(name)) {
+                settings.add(new Setting(name, 1, Double.NaN));
+            } else {
+                threads.forEach(k -> settings.add(new Setting(name, k, Double.NaN)));
+            }
+        }
+        return settings;
+    }
+}
