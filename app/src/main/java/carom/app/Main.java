@@ -1,8 +1,6 @@
 package carom.app;
 
-import java.io.OutputStreamWriter;
 import java.io.PrintStream;
-import java.io.PrintWriter;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -38,26 +36,8 @@ public final class Main implements Runnable {
 
     /** Runs one carom command line, writing to {@code out} and {@code err}; returns the exit status. */
     public static int run(PrintStream out, PrintStream err, String... args) {
-        PrintWriter outWriter = new PrintWriter(new OutputStreamWriter(out, out.charset()), true);
-        PrintWriter errWriter = new PrintWriter(new OutputStreamWriter(err, err.charset()), true);
-        ErrorReporting errors = new ErrorReporting(errWriter, ErrorReporting.debugFromEnvironment());
-        // simulate and the experiments draw their progress bars only on a real terminal, so they are told which streams these are.
-        CommandLine cl = new CommandLine(new Main(), new CommandFactory(out, err));
-        cl.setOut(outWriter);
-        cl.setErr(errWriter);
-        cl.setParameterExceptionHandler(errors::usageError);
-        cl.setExecutionExceptionHandler(errors::executionError);
-        try {
-            return cl.execute(args);
-        } catch (OutOfMemoryError e) {
-            // picocli lets Errors through; the heap is mostly free again once the run's arrays are gone.
-            return errors.outOfMemory(e);
-        } catch (Throwable e) {
-            return errors.internalFailure(e);
-        } finally {
-            outWriter.flush();
-            errWriter.flush();
-        }
+        // simulate draws its progress bar only on a real terminal, so it is told which streams these are.
+        return CommandRunner.run(new CommandLine(new Main(), new CommandFactory(out, err)), out, err, args);
     }
 
     /** {@code carom} alone: say which commands exist rather than doing nothing. */
