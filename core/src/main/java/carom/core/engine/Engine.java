@@ -34,5 +34,13 @@ public interface Engine {
         return java.util.Set.of();
     }
 
+    /**
+     * Whether this engine can hand out samples at given times ({@link RunOptions#sampler()}): the exact
+     * engines can. {@link #run} of one that cannot refuses options with a sampler as bad input.
+     */
+    default boolean samples() {
+        return false;
+    }
+
     RunResult run(Scene scene, RunOptions options);
 }

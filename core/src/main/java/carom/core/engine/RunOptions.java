@@ -3,15 +3,36 @@ package carom.core.engine;
 import java.util.Map;
 
 /**
- * How to run: the end time, the worker threads (ignored by serial engines), a progress listener, and
- * engine-specific tunables as text (for example {@code cellFactor=2}), each engine documenting its own.
+ * How to run: the end time, the worker threads (ignored by serial engines), a progress listener,
+ * engine-specific tunables as text (for example {@code cellFactor=2}; each engine declares its own as
+ * {@link Tunable}s), and optionally a {@link Sampler} told the state every {@code every} of simulated
+ * time ({@code every} is NaN and {@code sampler} null without one).
  */
-public record RunOptions(double until, int threads, ProgressListener progress, Map<String, String> tunables) {
+public record RunOptions(double until, int threads, ProgressListener progress, Map<String, String> tunables,
+                         double every, Sampler sampler) {
     public RunOptions {
         tunables = Map.copyOf(tunables);
         if (progress == null) {
             progress = ProgressListener.NONE;
         }
+        if (sampler != null && !(every > 0 && Double.isFinite(every))) {
+            throw new IllegalArgumentException("a sampler needs a finite sample interval > 0, got " + every);
+        }
+    }
+
+    /** Options without samples. */
+    public RunOptions(double until, int threads, ProgressListener progress, Map<String, String> tunables) {
+        this(until, threads, progress, tunables, Double.NaN, null);
+    }
+
+    /** These options with {@code sampler} told the state at every multiple of {@code interval} up to {@code until}. */
+    public RunOptions withSamples(double interval, Sampler newSampler) {
+        return new RunOptions(until, threads, progress, tunables, interval, newSampler);
+    }
+
+    /** Whether the run hands out samples. */
+    public boolean sampled() {
+        return sampler != null;
     }
 
     public static RunOptions until(double until) {
@@ -19,17 +40,17 @@ public record RunOptions(double until, int threads, ProgressListener progress, M
     }
 
     public RunOptions withThreads(int newThreads) {
-        return new RunOptions(until, newThreads, progress, tunables);
+        return new RunOptions(until, newThreads, progress, tunables, every, sampler);
     }
 
     public RunOptions withProgress(ProgressListener listener) {
-        return new RunOptions(until, threads, listener, tunables);
+        return new RunOptions(until, threads, listener, tunables, every, sampler);
     }
 
     public RunOptions withTunable(String key, String value) {
         Map<String, String> m = new java.util.HashMap<>(tunables);
         m.put(key, value);
-        return new RunOptions(until, threads, progress, m);
+        return new RunOptions(until, threads, progress, m, every, sampler);
     }
 
     public double tunable(String key, double fallback) {

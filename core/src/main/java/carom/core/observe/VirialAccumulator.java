@@ -49,6 +49,15 @@ public final class VirialAccumulator {
         }
     }
 
+    /** The virial sum over the whole run so far (every block), for a sample's running total. */
+    public double total() {
+        double t = 0;
+        for (double b : sums) {
+            t += b;
+        }
+        return t;
+    }
+
     /**
      * @param mobileDiscs number of mobile discs
      * @param kineticEnergy total kinetic energy (constant in an elastic run; the mean otherwise)

@@ -42,6 +42,11 @@ public final class FastEngine implements Engine {
     }
 
     @Override
+    public boolean samples() {
+        return true;
+    }
+
+    @Override
     public RunResult run(Scene scene, RunOptions options) {
         checkSupports(scene);
         return new FastRun(scene, options).run();

@@ -224,6 +224,33 @@ public final class DiscMotion {
         }
     }
 
+    /**
+     * Discs {@code from..to-1} at local time {@code local} into {@code out} at their scene ids (periodic
+     * positions wrapped), without moving any record: a sample of a run in progress. The arithmetic is
+     * {@link #advance}'s, so a sample at the end time equals the final state to the bit.
+     */
+    public void stateAt(Discs out, int from, int to, double local) {
+        int[] order = sceneIds;
+        for (int k = from; k < to; k++) {
+            int o = order[k];
+            int at = k * stride;
+            if (straight) {
+                double dt = local - rec[at + T];
+                out.x[o] = boundary.wrapX(rec[at + X] + rec[at + VX] * dt);
+                out.y[o] = boundary.wrapY(rec[at + Y] + rec[at + VY] * dt);
+                out.vx[o] = rec[at + VX];
+                out.vy[o] = rec[at + VY];
+            } else {
+                load(k, 0);
+                flight.advance(pair, 0, local);
+                out.x[o] = boundary.wrapX(pair.x[0]);
+                out.y[o] = boundary.wrapY(pair.y[0]);
+                out.vx[o] = pair.vx[0];
+                out.vy[o] = pair.vy[0];
+            }
+        }
+    }
+
     /** Every disc as {@link Discs} (the energy audit's test mode only: O(N) per call). */
     public Discs snapshot() {
         int n = rec.length / stride;

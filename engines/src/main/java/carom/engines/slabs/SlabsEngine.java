@@ -43,6 +43,11 @@ public final class SlabsEngine implements Engine {
     }
 
     @Override
+    public boolean samples() {
+        return true;
+    }
+
+    @Override
     public RunResult run(Scene scene, RunOptions options) {
         checkSupports(scene);
         return new SlabsRun(scene, options).run();

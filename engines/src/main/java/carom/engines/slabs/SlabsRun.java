@@ -3,6 +3,7 @@ package carom.engines.slabs;
 import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
+import carom.core.engine.SampleSchedule;
 import carom.core.engine.StallGuard;
 import carom.core.observe.EnergyAudit;
 import carom.core.observe.Observables;
@@ -69,6 +70,9 @@ final class SlabsRun {
     private final VirialAccumulator serialVirial;
     private final StallGuard serialStall;
     private double resyncAt;
+    /** Samples asked for ({@code --every}), and the next one's local time (+Infinity if none). */
+    private final SampleSchedule samples;
+    private double sampleLocal;
 
     SlabsRun(Scene scene, RunOptions options) {
         long constructing = System.nanoTime();
@@ -100,6 +104,7 @@ final class SlabsRun {
         }
         this.cross = many ? new CrossPredictions(table, columns, domains) : null;
         this.verifier = many ? new WindowVerifier(table, columns, domains, marks) : null;
+        this.samples = SampleSchedule.of(scene, options);
         counters.setupNanos = System.nanoTime() - constructing;
     }
 
@@ -127,7 +132,11 @@ final class SlabsRun {
                 }
             }
             counters.startNanos = System.nanoTime() - started;
+            sampleLocal = samples.next() - clock.epoch;
             loop();
+            while (samples.next() <= until) {
+                sample();
+            }
             long looped = System.nanoTime();
             seconds = (looped - started) * 1e-9;
             out = finalState();
@@ -161,14 +170,18 @@ final class SlabsRun {
         long progressMark = 0;
         Domain single = domainCount == 1 ? domains[0] : null;
         while (true) {
+            if (now >= sampleLocal) {
+                sample();
+                continue;
+            }
             if (now >= resyncAt) {
                 resync(now);
                 now = 0;
             }
-            // The earliest valid cross event bounds the window.
+            // The earliest valid cross event bounds the window, and so does the next sample.
             int top = single != null ? -1 : cross.validTop(now);
             double h = top >= 0 ? cross.time(top) : INF;
-            double end = Math.min(Math.min(h, resyncAt), clock.untilLocal);
+            double end = Math.min(Math.min(Math.min(h, resyncAt), sampleLocal), clock.untilLocal);
             boolean last = end == clock.untilLocal && h > clock.untilLocal && resyncAt > clock.untilLocal;
             if (single != null) {
                 single.runWindow(end, last);
@@ -341,8 +354,23 @@ final class SlabsRun {
                 cross.rebase(now);
             }
             clock.shift(now);
+            sampleLocal = samples.next() - clock.epoch;
         }
         replan(now);
+    }
+
+    /**
+     * The sample due now (between windows, every domain idle): every disc at its time, computed from
+     * the shared records without moving them. Events at exactly a sample's time come after it.
+     */
+    private void sample() {
+        double virialSum = serialVirial.total();
+        for (Domain d : domains) {
+            virialSum += d.virial.total();
+        }
+        domains[0].motion.stateAt(samples.state(), 0, n, samples.next() - clock.epoch);
+        samples.emit(virialSum);
+        sampleLocal = samples.next() - clock.epoch;
     }
 
     /**
