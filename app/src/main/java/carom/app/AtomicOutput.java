@@ -109,6 +109,62 @@ public final class AtomicOutput implements AutoCloseable {
         }
     }
 
+    /**
+     * A writer to a temporary file beside {@code target}, for output written while a run goes (a
+     * trajectory); the caller closes it, and {@link #commit} moves it into place with the others.
+     */
+    public Writer stream(Path target) {
+        Path temp = newTemp(target);
+        try {
+            return new BufferedWriter(new OutputStreamWriter(Files.newOutputStream(temp,
+                    StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE), StandardCharsets.UTF_8), BUFFER);
+        } catch (IOException e) {
+            throw cannotWrite(target, e);
+        }
+    }
+
+    /** Writes the files of a folder into a temporary folder beside {@code target}, moved into place whole. */
+    @FunctionalInterface
+    public interface FolderContent {
+        void writeInto(Path folder) throws IOException;
+    }
+
+    /**
+     * Has {@code content} fill a temporary folder beside {@code target}; {@link #commit} renames it to
+     * {@code target} (which must not exist, or be an empty folder), so the folder appears whole or not
+     * at all.
+     */
+    public void stageFolder(Path target, FolderContent content) {
+        Path temp = newTemp(target);
+        try {
+            Files.createDirectory(temp);
+            content.writeInto(temp);
+        } catch (IOException e) {
+            throw cannotWrite(target, e);
+        }
+    }
+
+    /** Bad input unless {@code target} can become a new folder: absent or empty, in a writable directory. */
+    public static void checkFolderWritable(Path target, String what) {
+        Path absolute = target.toAbsolutePath();
+        if (Files.isDirectory(absolute)) {
+            try (DirectoryStream<Path> entries = Files.newDirectoryStream(absolute)) {
+                if (entries.iterator().hasNext()) {
+                    throw new BadInputException(what + ": folder " + Quoted.fileName(target.toString())
+                            + " exists and is not empty");
+                }
+            } catch (IOException e) {
+                throw new BadInputException(what + ": cannot read folder " + Quoted.fileName(target.toString()));
+            }
+            if (!Files.isWritable(absolute.getParent())) {
+                throw new BadInputException(what + ": cannot write in directory "
+                        + Quoted.fileName(absolute.getParent().toString()));
+            }
+            return;
+        }
+        checkWritable(target, what);
+    }
+
     private static UncheckedIOException cannotWrite(Path target, IOException e) {
         return new UncheckedIOException("cannot write " + Quoted.fileName(target.toString()) + ": "
                 + Quoted.fileName(String.valueOf(e.getMessage())), e);
@@ -185,6 +241,12 @@ public final class AtomicOutput implements AutoCloseable {
     }
 
     private static void move(Staged s) throws IOException {
+        if (Files.isDirectory(s.temp())) {
+            // A folder replaces only an empty one (checked before the run); rename is atomic.
+            Files.deleteIfExists(s.target());
+            Files.move(s.temp(), s.target(), StandardCopyOption.ATOMIC_MOVE);
+            return;
+        }
         try {
             Files.move(s.temp(), s.target(), StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
         } catch (AtomicMoveNotSupportedException e) {
@@ -199,6 +261,13 @@ public final class AtomicOutput implements AutoCloseable {
     public void close() {
         for (Staged s : staged) {
             try {
+                if (Files.isDirectory(s.temp())) {
+                    try (var files = Files.walk(s.temp())) {
+                        for (Path f : files.sorted(java.util.Comparator.reverseOrder()).toList()) {
+                            Files.deleteIfExists(f);
+                        }
+                    }
+                }
                 Files.deleteIfExists(s.temp());
             } catch (IOException e) {
                 // Nothing more to do: the failure that brought us here is the one to report.

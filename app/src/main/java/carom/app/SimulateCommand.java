@@ -11,7 +11,10 @@ import carom.core.scene.Scene;
 import carom.core.scene.SceneReader;
 import carom.engines.EngineCatalog;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.IOException;
 import java.io.PrintStream;
+import java.io.UncheckedIOException;
+import java.io.Writer;
 import java.nio.charset.Charset;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
@@ -69,6 +72,14 @@ final class SimulateCommand implements Callable<Integer> {
     @Option(names = "--summary", paramLabel = "SUMMARY.json", description = "Write the run's summary here as JSON.")
     Path summary;
 
+    @Option(names = "--every", paramLabel = "DT",
+            description = "Sample interval for --trajectory: samples at t = 0, DT, 2 DT, ... up to the end time.")
+    Double every;
+
+    @Option(names = "--trajectory", paramLabel = "FRAMES.xyz",
+            description = "Write every sample as a frame of extended XYZ (OVITO, ASE); needs --every.")
+    Path trajectory;
+
     @Option(names = "--jfr", paramLabel = "FILE.jfr",
             description = "Record the run with Java Flight Recorder (carom's events, execution samples, GC, CPU load) "
                     + "into this file; read it with 'carom analyze'.")
@@ -96,6 +107,7 @@ final class SimulateCommand implements Callable<Integer> {
                 : checkedThreads(threads);
         Engine engine = aboutScene(() -> EnginesCommand.engineNamed(engineName));
         checkTunables(engine);
+        checkSampling(engine);
         checkOutputs();
         Scene fromFile = aboutScene(() -> SceneReader.read(scenePath()));
         Scene scene = checkedUntil == null ? fromFile : fromFile.withUntil(checkedUntil);
@@ -103,6 +115,9 @@ final class SimulateCommand implements Callable<Integer> {
             engine.checkSupports(scene);
             return null;
         });
+        if (trajectory != null) {
+            TrajectoryXyz.checkNames(scene);
+        }
 
         // The recording covers the run only, not reading the scene; it closes (and its repository goes) in any case.
         try (Recording recording = jfr == null ? null : CaromRecording.create();
@@ -111,9 +126,16 @@ final class SimulateCommand implements Callable<Integer> {
                 recording.start();
             }
             RunResult result;
-            try (ProgressBar bar = ProgressBar.forRun(err, scene.until())) {
+            try (ProgressBar bar = ProgressBar.forRun(err, scene.until());
+                 Writer frames = trajectory == null ? null : files.stream(trajectory)) {
                 RunOptions options = new RunOptions(scene.until(), workers, bar, tunables);
-                result = aboutScene(() -> engine.run(scene, options));
+                if (frames != null) {
+                    options = options.withSamples(every, new TrajectoryXyz(scene, frames));
+                }
+                RunOptions chosen = options;
+                result = aboutScene(() -> engine.run(scene, chosen));
+            } catch (IOException e) {
+                throw new UncheckedIOException("cannot write the trajectory: " + e.getMessage(), e);
             }
             if (recording != null) {
                 recording.stop();
@@ -187,11 +209,30 @@ final class SimulateCommand implements Callable<Integer> {
         }
     }
 
+    /** --every and what samples need: a positive finite interval, and an engine that can stop at given times. */
+    private void checkSampling(Engine engine) {
+        if (every == null) {
+            if (trajectory != null) {
+                throw new BadInputException("--trajectory needs --every DT (the time between frames)");
+            }
+            return;
+        }
+        if (!(every > 0) || Double.isInfinite(every)) {
+            throw new BadInputException("--every: must be a finite number > 0, got " + every);
+        }
+        if (!engine.samples()) {
+            throw new BadInputException("--every: engine " + engine.name() + " cannot stop at given times "
+                    + "(engines that can: " + String.join(", ", EngineCatalog.all().stream().filter(Engine::samples)
+                    .map(Engine::name).toList()) + ")");
+        }
+    }
+
     private void checkOutputs() {
         Map<Path, String> named = new LinkedHashMap<>();
         checkOutput(out, "--out", named);
         checkOutput(summary, "--summary", named);
         checkOutput(jfr, "--jfr", named);
+        checkOutput(trajectory, "--trajectory", named);
     }
 
     /** {@code file} must be writable and not named by another output option already in {@code named}. */
