@@ -244,7 +244,7 @@ public final class SceneBuilder {
 
     private void checkNoOverlaps(Discs d, int[] blockStarts) {
         double coordinateUlp = 4 * Math.ulp(Math.max(box.width(), box.height()));
-        NeighbourPairs.forEach(d, box, (i, j, dx, dy) -> {
+        NeighbourPairs.forEach(d, box.width(), box.height(), box.periodic(), (i, j, dx, dy) -> {
             double sigma = d.radius[i] + d.radius[j];
             double dist = Math.sqrt(dx * dx + dy * dy);
             double tolerance = CONTACT_TOLERANCE * sigma + coordinateUlp;

@@ -1,12 +1,8 @@
 package carom.engines.actors;
 
 import carom.core.engine.Contacts;
-import carom.core.grid.CellGrid;
-import carom.core.grid.CellLists;
 import carom.core.observe.jfr.CausalityViolationEvent;
-import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
-import carom.core.physics.Restitution;
 import carom.core.state.Discs;
 import carom.engines.actors.Protocol.BeginProcessing;
 import carom.engines.actors.Protocol.BeginStep;
@@ -54,6 +50,12 @@ import java.util.concurrent.atomic.LongAdder;
  *
  * <p>Validity of potentials by stamps: every local copy has a local stamp, bumped whenever the copy
  * changes; the owner's collision counter (global stamp) travels with the copies.
+ *
+ * <h2>Parts</h2>
+ * This class handles the messages and processes the events. What the actor knows of the layout is
+ * its {@link BlockNeighbourhood}; the discs it works on, own and copies, are its {@link DiscSlots};
+ * the potentials it owns are its {@link BlockPotentials}; the relaxed order (local minimums and what
+ * to tell the neighbours) is its {@link NeighbourMinimums}.
  */
 public final class BlockActor {
     /** Sends messages; each engine delivers them its own way. */
@@ -84,53 +86,14 @@ public final class BlockActor {
     long busyNanos;
     private final boolean timed;
     private final Flight flight;
-    private final Boundary boundary;
-    private final Boundary.Walls walls;
     private final Contacts contacts;
-    private final Restitution restitutionTemplate;
 
-    // Known cells: own [0, ownCells), then the foreign cells this actor holds copies of.
-    private final int[] knownCell;
-    private final int ownCells;
-    /** (global cell << 32 | local cell), ascending: global to local lookup. */
-    private final long[] knownIndex;
-    /** Per local cell, the local cells whose pairs with it this actor owns (CSR). */
-    private final int[] pairStart;
-    private final int[] pairList;
-    private final int[] neighbours;
-    /** Each neighbour's next event time as last reported (-Infinity: not heard this step). */
-    private final double[] neighbourMin;
-    /** Each neighbour's report of the earliest event among its other neighbours, with that actor's id. */
-    private final double[] neighbourOthers;
-    private final int[] neighbourOthersId;
-    /** What was last sent to each neighbour, so that only changes are sent. */
-    private final double[] sentOwn;
-    private final double[] sentOthers;
-    private final int[] sentOthersId;
-    private final boolean relayMinimums;
-    /** Neighbours holding some of my cells, and which of my (local) cells each holds (CSR). */
-    private final int[] particleTargets;
-    private final int[] targetCellStart;
-    private final int[] targetCells;
-    /** Own cell l's discs sit in slots [ownSlotStart[l], ownSlotStart[l + 1]). */
-    private final int[] ownSlotStart;
-
-    // This step's discs: own in slots [0, ownCount), copies of foreign discs after.
-    private Discs local = new Discs(16);
-    private Restitution restitution;
-    private int[] discId = new int[16];
-    private int[] slotCell = new int[16];
-    private int[] localStamp = new int[16];
-    private int[] globalStamp = new int[16];
-    private long[] idIndex = new long[16];
-    private int[] cellItemStart;
-    private int[] cellItems = new int[16];
-    private int ownCount;
-    private int count;
-    private final CellHeap heap = new CellHeap();
+    private final BlockNeighbourhood cells;
+    private final DiscSlots slots;
+    private final BlockPotentials potentials;
+    private final NeighbourMinimums minimums;
 
     private double epoch;
-    private double stepEnd;
     private boolean begun;
     private boolean potentialsFound;
     private boolean processing;
@@ -148,13 +111,12 @@ public final class BlockActor {
 
     /**
      * @param relayMinimums whether minimum messages also carry the earliest event among the sender's
-     *                      other neighbours (see {@link #isLocalMinimum})
+     *                      other neighbours (see {@link NeighbourMinimums})
      */
     public BlockActor(int id, StepFrame frame, BlockLayout layout, Outbox out, boolean relayMinimums,
                       FaultInjection faults, LongAdder heartbeat, boolean timed) {
         this.id = id;
         this.timed = timed;
-        this.relayMinimums = relayMinimums;
         this.frame = frame;
         this.layout = layout;
         this.out = out;
@@ -162,96 +124,12 @@ public final class BlockActor {
         this.heartbeat = heartbeat;
         this.worker = frame.newWorker();
         this.flight = frame.flight;
-        this.boundary = frame.boundary;
-        this.walls = frame.walls;
         this.contacts = worker.contacts;
-        this.restitutionTemplate = frame.restitution;
-        this.restitution = restitutionTemplate.forRun(local.n);
-        this.ownCells = layout.cellCount(id);
-        this.knownCell = knownCells();
-        this.knownIndex = new long[knownCell.length];
-        for (int l = 0; l < knownCell.length; l++) {
-            knownIndex[l] = ((long) knownCell[l] << 32) | l;
-        }
-        Arrays.sort(knownIndex);
-        this.pairStart = new int[knownCell.length + 1];
-        this.pairList = ownedPairCells();
-        this.cellItemStart = new int[knownCell.length + 1];
-        this.neighbours = Arrays.copyOfRange(layout.neighbourList, layout.neighbourStart[id], layout.neighbourStart[id + 1]);
-        this.neighbourMin = new double[neighbours.length];
-        this.neighbourOthers = new double[neighbours.length];
-        this.neighbourOthersId = new int[neighbours.length];
-        this.sentOwn = new double[neighbours.length];
-        this.sentOthers = new double[neighbours.length];
-        this.sentOthersId = new int[neighbours.length];
-        this.particleTargets = Arrays.copyOfRange(layout.particleTargetList, layout.particleTargetStart[id],
-                layout.particleTargetStart[id + 1]);
-        this.targetCellStart = new int[particleTargets.length + 1];
-        int[] held = new int[0];
-        for (int t = 0; t < particleTargets.length; t++) {
-            int b = particleTargets[t];
-            int[] mine = java.util.stream.IntStream.range(0, ownCells).filter(l -> layout.isHolder(knownCell[l], b)).toArray();
-            held = Arrays.copyOf(held, held.length + mine.length);
-            System.arraycopy(mine, 0, held, targetCellStart[t], mine.length);
-            targetCellStart[t + 1] = targetCellStart[t] + mine.length;
-        }
-        this.targetCells = held;
-        this.ownSlotStart = new int[ownCells + 1];
-    }
-
-    /** Own cells, then every foreign cell next to an own cell of a lower index (this actor holds those). */
-    private int[] knownCells() {
-        CellGrid grid = layout.grid;
-        int[] cells = Arrays.copyOfRange(layout.cellList, layout.cellStart[id], layout.cellStart[id + 1]);
-        int size = cells.length;
-        for (int l = 0; l < ownCells; l++) {
-            int c = cells[l];
-            for (int m = grid.neighbourStart[c]; m < grid.neighbourStart[c + 1]; m++) {
-                int other = grid.neighbours[m];
-                if (other > c && layout.actorOfCell[other] != id && BlockLayout.indexOf(cells, ownCells, size, other) < 0) {
-                    if (size == cells.length) {
-                        cells = Arrays.copyOf(cells, 2 * size);
-                    }
-                    cells[size++] = other;
-                }
-            }
-        }
-        return Arrays.copyOf(cells, size);
-    }
-
-    /** Own cell: every own neighbour and the held neighbours of a higher index. Held cell: own neighbours of a lower index. */
-    private int[] ownedPairCells() {
-        CellGrid grid = layout.grid;
-        int[] list = new int[knownCell.length * 9];
-        int size = 0;
-        for (int l = 0; l < knownCell.length; l++) {
-            pairStart[l] = size;
-            int c = knownCell[l];
-            for (int m = grid.neighbourStart[c]; m < grid.neighbourStart[c + 1]; m++) {
-                int other = grid.neighbours[m];
-                boolean otherOwn = layout.actorOfCell[other] == id;
-                boolean owned = l < ownCells ? otherOwn || other > c : otherOwn && other < c;
-                if (owned) {
-                    if (size == list.length) {
-                        list = Arrays.copyOf(list, 2 * size);
-                    }
-                    list[size++] = localCell(other);
-                }
-            }
-        }
-        pairStart[knownCell.length] = size;
-        return Arrays.copyOf(list, size);
-    }
-
-    private int localCell(int globalCell) {
-        int k = Arrays.binarySearch(knownIndex, (long) globalCell << 32);
-        if (k < 0) {
-            k = -k - 1;
-        }
-        if (k >= knownIndex.length || (int) (knownIndex[k] >>> 32) != globalCell) {
-            throw new IllegalStateException(layout.describe(id) + " got discs of cell " + globalCell + ", which it does not hold");
-        }
-        return (int) knownIndex[k];
+        this.cells = new BlockNeighbourhood(layout, id);
+        this.slots = new DiscSlots(frame.restitution, cells);
+        this.potentials = new BlockPotentials(frame, cells, slots, worker);
+        this.minimums = new NeighbourMinimums(id, cells.neighbours, relayMinimums,
+                (neighbour, message) -> send(neighbour, message, Kind.MINIMUM));
     }
 
     /** Handles one message; the engine guarantees one at a time per actor. */
@@ -282,41 +160,13 @@ public final class BlockActor {
 
     private void onBeginStep(BeginStep m) {
         epoch = m.epoch();
-        stepEnd = m.stepEnd();
-        heap.clear();
-        count = 0;
-        Arrays.fill(neighbourMin, Double.NEGATIVE_INFINITY);
-        Arrays.fill(neighbourOthers, Double.NEGATIVE_INFINITY);
-        Arrays.fill(neighbourOthersId, -1);
-        Arrays.fill(sentOwn, Double.NaN);
+        potentials.beginStep(m.stepEnd());
+        minimums.beginStep();
         workSent = 0;
         workReceived = 0;
         reportedSent = -1;
         reportedReceived = -1;
-        CellLists cells = frame.cells;
-        Discs d = frame.d;
-        for (int l = 0; l < ownCells; l++) {
-            int c = knownCell[l];
-            ownSlotStart[l] = count;
-            for (int q = cells.start[c]; q < cells.start[c + 1]; q++) {
-                int i = cells.items[q];
-                int s = newSlot();
-                discId[s] = i;
-                slotCell[s] = l;
-                localStamp[s] = 0;
-                globalStamp[s] = 0;
-                local.x[s] = d.x[i];
-                local.y[s] = d.y[i];
-                local.vx[s] = d.vx[i];
-                local.vy[s] = d.vy[i];
-                local.t[s] = d.t[i];
-                local.radius[s] = d.radius[i];
-                local.invMass[s] = d.invMass[i];
-                restitution.collided(s, restitutionTemplate.lastCollision(i));
-            }
-        }
-        ownCount = count;
-        ownSlotStart[ownCells] = count;
+        slots.loadOwn(frame);
         begun = true;
         sendParticles();
         findPotentialsWhenReady();
@@ -324,15 +174,15 @@ public final class BlockActor {
 
     /** Copies of my discs to each neighbour that holds some of my cells: one message each, even if empty. */
     private void sendParticles() {
-        for (int t = 0; t < particleTargets.length; t++) {
+        for (int t = 0; t < cells.particleTargets.length; t++) {
             int size = 0;
-            for (int q = targetCellStart[t]; q < targetCellStart[t + 1]; q++) {
-                int l = targetCells[q];
-                for (int s = ownSlotStart[l]; s < ownSlotStart[l + 1]; s++) {
+            for (int q = cells.targetCellStart[t]; q < cells.targetCellStart[t + 1]; q++) {
+                int l = cells.targetCells[q];
+                for (int s = slots.ownSlotStart[l]; s < slots.ownSlotStart[l + 1]; s++) {
                     size = push(size, s);
                 }
             }
-            send(particleTargets[t], new Particles(id, copies(scratch, size)), Kind.PARTICLES);
+            send(cells.particleTargets[t], new Particles(id, slots.copies(scratch, size)), Kind.PARTICLES);
         }
     }
 
@@ -342,29 +192,6 @@ public final class BlockActor {
         }
         scratch[size] = value;
         return size + 1;
-    }
-
-    private DiscCopies copies(int[] slots, int size) {
-        int[] ids = new int[size];
-        int[] stamps = new int[size];
-        int[] cells = new int[size];
-        double[] state = new double[size * DiscCopies.STRIDE];
-        for (int k = 0; k < size; k++) {
-            int s = slots[k];
-            ids[k] = discId[s];
-            stamps[k] = globalStamp[s];
-            cells[k] = knownCell[slotCell[s]];
-            int o = k * DiscCopies.STRIDE;
-            state[o] = local.x[s];
-            state[o + 1] = local.y[s];
-            state[o + 2] = local.vx[s];
-            state[o + 3] = local.vy[s];
-            state[o + 4] = local.t[s];
-            state[o + 5] = restitution.lastCollision(s);
-            state[o + 6] = local.radius[s];
-            state[o + 7] = local.invMass[s];
-        }
-        return new DiscCopies(ids, stamps, cells, state);
     }
 
     private void onParticles(Particles m) {
@@ -379,107 +206,12 @@ public final class BlockActor {
         }
         potentialsFound = true;
         for (DiscCopies copies : pendingParticles) {
-            for (int k = 0; k < copies.size(); k++) {
-                int s = newSlot();
-                discId[s] = copies.ids()[k];
-                slotCell[s] = localCell(copies.cells()[k]);
-                localStamp[s] = 0;
-                globalStamp[s] = copies.stamps()[k];
-                int o = k * DiscCopies.STRIDE;
-                double[] st = copies.state();
-                local.x[s] = st[o];
-                local.y[s] = st[o + 1];
-                local.vx[s] = st[o + 2];
-                local.vy[s] = st[o + 3];
-                local.t[s] = st[o + 4];
-                restitution.collided(s, st[o + 5]);
-                local.radius[s] = st[o + 6];
-                local.invMass[s] = st[o + 7];
-            }
+            slots.addCopies(copies);
         }
         pendingParticles.clear();
-        indexSlots();
-        for (int l = 0; l < ownCells; l++) {
-            for (int q = cellItemStart[l]; q < cellItemStart[l + 1]; q++) {
-                int i = cellItems[q];
-                predictWalls(i, 0);
-                for (int p = pairStart[l]; p < pairStart[l + 1]; p++) {
-                    int other = pairList[p];
-                    if (other < ownCells && knownCell[other] < knownCell[l]) {
-                        continue; // counted from the other own cell
-                    }
-                    for (int r = cellItemStart[other]; r < cellItemStart[other + 1]; r++) {
-                        int j = cellItems[r];
-                        if (other != l || j > i) {
-                            predictPair(i, j, 0);
-                        }
-                    }
-                }
-            }
-        }
+        slots.index();
+        potentials.predictAll();
         sendToGrid(new Progress(id), Kind.PROGRESS);
-    }
-
-    /** Slots grouped by local cell (counting sort), and the id to slot index. */
-    private void indexSlots() {
-        Arrays.fill(cellItemStart, 0);
-        for (int s = 0; s < count; s++) {
-            cellItemStart[slotCell[s] + 1]++;
-        }
-        for (int l = 0; l < knownCell.length; l++) {
-            cellItemStart[l + 1] += cellItemStart[l];
-        }
-        if (cellItems.length < count) {
-            cellItems = new int[discId.length];
-        }
-        int[] fill = Arrays.copyOf(cellItemStart, knownCell.length);
-        for (int s = 0; s < count; s++) {
-            cellItems[fill[slotCell[s]]++] = s;
-        }
-        for (int s = 0; s < count; s++) {
-            idIndex[s] = ((long) discId[s] << 32) | s;
-        }
-        Arrays.sort(idIndex, 0, count);
-    }
-
-    private int slotOf(int disc) {
-        int k = Arrays.binarySearch(idIndex, 0, count, (long) disc << 32);
-        if (k < 0) {
-            k = -k - 1;
-        }
-        if (k >= count || (int) (idIndex[k] >>> 32) != disc) {
-            throw new IllegalStateException(layout.describe(id) + " got a message about disc " + disc + ", which it does not know");
-        }
-        return (int) idIndex[k];
-    }
-
-    private int newSlot() {
-        if (count == discId.length) {
-            grow(2 * count);
-        }
-        return count++;
-    }
-
-    private void grow(int capacity) {
-        Discs bigger = new Discs(capacity);
-        System.arraycopy(local.x, 0, bigger.x, 0, count);
-        System.arraycopy(local.y, 0, bigger.y, 0, count);
-        System.arraycopy(local.vx, 0, bigger.vx, 0, count);
-        System.arraycopy(local.vy, 0, bigger.vy, 0, count);
-        System.arraycopy(local.t, 0, bigger.t, 0, count);
-        System.arraycopy(local.radius, 0, bigger.radius, 0, count);
-        System.arraycopy(local.invMass, 0, bigger.invMass, 0, count);
-        Restitution biggerRestitution = restitutionTemplate.forRun(capacity);
-        for (int s = 0; s < count; s++) {
-            biggerRestitution.collided(s, restitution.lastCollision(s));
-        }
-        local = bigger;
-        restitution = biggerRestitution;
-        discId = Arrays.copyOf(discId, capacity);
-        slotCell = Arrays.copyOf(slotCell, capacity);
-        localStamp = Arrays.copyOf(localStamp, capacity);
-        globalStamp = Arrays.copyOf(globalStamp, capacity);
-        idIndex = Arrays.copyOf(idIndex, capacity);
     }
 
     // ---- processing ------------------------------------------------------------------------------------
@@ -490,10 +222,7 @@ public final class BlockActor {
     }
 
     private void onMinimum(Minimum m) {
-        int k = Arrays.binarySearch(neighbours, m.from());
-        neighbourMin[k] = m.time();
-        neighbourOthers[k] = m.othersTime();
-        neighbourOthersId[k] = m.othersId();
+        minimums.record(m);
         afterHandling();
     }
 
@@ -503,11 +232,11 @@ public final class BlockActor {
             return;
         }
         double t;
-        while ((t = nextValidTime()) <= stepEnd && isLocalMinimum(t)) {
+        while ((t = potentials.nextValidTime()) <= potentials.stepEnd() && minimums.isLocalMinimum(t)) {
             processMin();
-            announceMinimum();
+            minimums.announce(currentMinimum());
         }
-        announceMinimum();
+        minimums.announce(currentMinimum());
         if (currentMinimum() == Double.POSITIVE_INFINITY
                 && (workSent != reportedSent || workReceived != reportedReceived)) {
             reportedSent = workSent;
@@ -516,81 +245,22 @@ public final class BlockActor {
         }
     }
 
+    /** My next valid event's time, or +Infinity if I have none left in this step. */
     private double currentMinimum() {
-        double t = nextValidTime();
-        return t <= stepEnd ? t : Double.POSITIVE_INFINITY;
+        double t = potentials.nextValidTime();
+        return t <= potentials.stepEnd() ? t : Double.POSITIVE_INFINITY;
     }
 
-    /**
-     * Sends each neighbour my next event time and, when relaying, the earliest among my other
-     * neighbours' (so it sees the actors two blocks away, which can touch the same discs); only what
-     * changed since the last message to that neighbour.
-     */
-    private void announceMinimum() {
-        double own = currentMinimum();
-        int first = -1;
-        int second = -1;
-        for (int k = 0; k < neighbours.length; k++) {
-            if (first < 0 || earlier(neighbourMin[k], neighbours[k], neighbourMin[first], neighbours[first])) {
-                second = first;
-                first = k;
-            } else if (second < 0 || earlier(neighbourMin[k], neighbours[k], neighbourMin[second], neighbours[second])) {
-                second = k;
-            }
-        }
-        for (int k = 0; k < neighbours.length; k++) {
-            int other = k == first ? second : first;
-            double othersTime = relayMinimums && other >= 0 ? neighbourMin[other] : Double.POSITIVE_INFINITY;
-            int othersId = relayMinimums && other >= 0 ? neighbours[other] : -1;
-            if (own != sentOwn[k] || othersTime != sentOthers[k] || othersId != sentOthersId[k]) {
-                sentOwn[k] = own;
-                sentOthers[k] = othersTime;
-                sentOthersId[k] = othersId;
-                send(neighbours[k], new Minimum(id, own, othersTime, othersId), Kind.MINIMUM);
-            }
-        }
-    }
-
-    private static boolean earlier(double t1, int id1, double t2, int id2) {
-        return t1 < t2 || (t1 == t2 && id1 < id2);
-    }
-
-    /**
-     * Whether my next event at t comes before every event I know of nearby (ties go to the lower actor
-     * id; an unheard neighbour counts as earlier). The thesis compares with the neighbours only; but
-     * an event of mine may touch a neighbour's disc that another neighbour of that neighbour, two blocks
-     * from me, is about to touch too, so with relaying the neighbours' neighbours count as well.
-     */
-    private boolean isLocalMinimum(double t) {
-        for (int k = 0; k < neighbours.length; k++) {
-            if (earlier(neighbourMin[k], neighbours[k], t, id)
-                    || earlier(neighbourOthers[k], neighbourOthersId[k], t, id)) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    /** Time of the next valid event (+Infinity if none), after dropping stale ones. */
-    private double nextValidTime() {
-        while (heap.size() > 0) {
-            int a = heap.minA();
-            int b = heap.minB();
-            if (localStamp[a] == heap.minStampA() && (b < 0 || localStamp[b] == heap.minStampB())) {
-                return heap.minTime();
-            }
-            heap.removeMin();
-            worker.staleEvents++;
-        }
-        return Double.POSITIVE_INFINITY;
-    }
-
+    /** Processes my earliest event, which {@link BlockPotentials#nextValidTime} found valid. */
     private void processMin() {
+        CellHeap heap = potentials.heap;
         double now = heap.minTime();
         int a = heap.minA();
         int b = heap.minB();
         heap.removeMin();
         faults.beforeEvent(id, events++);
+        Discs local = slots.local;
+        int[] discId = slots.discId;
         if (local.t[a] > now || (b >= 0 && local.t[b] > now)) {
             worker.violations++;
             CausalityViolationEvent.emit(epoch + now, discId[a], b >= 0 ? discId[b] : b,
@@ -607,6 +277,7 @@ public final class BlockActor {
     }
 
     private void collidePair(double now, int a, int b) {
+        Discs local = slots.local;
         // Velocities at the collision (gravity bends them in flight), for the kick's velocity change.
         flight.advance(local, a, now);
         flight.advance(local, b, now);
@@ -614,7 +285,7 @@ public final class BlockActor {
         double avy = local.vy[a];
         double bvx = local.vx[b];
         double bvy = local.vy[b];
-        double virial = contacts.pair(local, restitution, a, b, now, epoch + now, discId[a], discId[b]);
+        double virial = contacts.pair(local, slots.restitution, a, b, now, epoch + now, slots.discId[a], slots.discId[b]);
         worker.pairCollisions++;
         worker.virial.add(epoch + now, virial);
         if (local.invMass[a] > 0) {
@@ -626,92 +297,57 @@ public final class BlockActor {
     }
 
     private void collideWall(double now, int i, int wall) {
-        contacts.wall(local, restitution, i, wall, now, epoch + now, discId[i]);
+        contacts.wall(slots.local, slots.restitution, i, wall, now, epoch + now, slots.discId[i]);
         worker.wallCollisions++;
         changed(i, now, Double.NaN, Double.NaN); // an own disc: no kick, no velocity change to send
     }
 
     /** Slot s's velocity changed at {@code now} (it was vx0, vy0): own discs are re-predicted and announced, copies kicked to their owner. */
     private void changed(int s, double now, double vx0, double vy0) {
-        restitution.collided(s, epoch + now);
-        if (s < ownCount) {
+        slots.restitution.collided(s, epoch + now);
+        if (s < slots.ownCount) {
             ownChanged(s, now);
             return;
         }
-        int owner = layout.actorOfCell[knownCell[slotCell[s]]];
+        Discs local = slots.local;
+        int owner = cells.ownerOf(slots.slotCell[s]);
         workSent++;
-        send(owner, new Kick(id, discId[s], globalStamp[s], now, local.x[s], local.y[s], local.vx[s], local.vy[s],
-                local.vx[s] - vx0, local.vy[s] - vy0), Kind.KICK);
+        send(owner, new Kick(id, slots.discId[s], slots.globalStamp[s], now, local.x[s], local.y[s], local.vx[s],
+                local.vy[s], local.vx[s] - vx0, local.vy[s] - vy0), Kind.KICK);
         // The owner bumps its stamp when it applies the kick; its echo then matches this copy.
-        globalStamp[s]++;
-        localStamp[s]++;
-        repredict(s, now);
+        slots.globalStamp[s]++;
+        slots.localStamp[s]++;
+        potentials.repredict(s, now);
     }
 
     private void ownChanged(int s, double now) {
-        localStamp[s]++;
-        globalStamp[s]++;
+        Discs local = slots.local;
+        slots.localStamp[s]++;
+        slots.globalStamp[s]++;
         double speed = Math.sqrt(local.vx[s] * local.vx[s] + local.vy[s] * local.vy[s]);
-        if (frame.overruns(discId[s], local.x[s], local.y[s], speed, now)) {
+        if (frame.overruns(slots.discId[s], local.x[s], local.y[s], speed, now)) {
             worker.overruns++;
         }
-        repredict(s, now);
+        potentials.repredict(s, now);
         changedOwn[changedOwnCount++] = s;
-    }
-
-    private void repredict(int s, double now) {
-        if (s < ownCount) {
-            predictWalls(s, now);
-        }
-        int l = slotCell[s];
-        for (int p = pairStart[l]; p < pairStart[l + 1]; p++) {
-            int other = pairList[p];
-            for (int r = cellItemStart[other]; r < cellItemStart[other + 1]; r++) {
-                int j = cellItems[r];
-                if (j != s) {
-                    predictPair(s, j, now);
-                }
-            }
-        }
-    }
-
-    private void predictPair(int i, int j, double now) {
-        double t = now + flight.timeToContact(local, i, j, now, stepEnd, boundary);
-        if (t <= stepEnd) {
-            heap.add(t, i, j, localStamp[i], localStamp[j]);
-            worker.predictions++;
-        }
-    }
-
-    private void predictWalls(int i, double now) {
-        if (walls == null || local.invMass[i] == 0) {
-            return;
-        }
-        for (int wall = 0; wall < 4; wall++) {
-            double t = now + flight.timeToWall(local, i, wall, now, walls);
-            if (t <= stepEnd) {
-                heap.add(t, i, -1 - wall, localStamp[i], 0);
-                worker.predictions++;
-            }
-        }
     }
 
     /** One Update per holder with the changed own discs it holds. */
     private void sendUpdates() {
         for (int k = 0; k < changedOwnCount; k++) {
             int s = changedOwn[k];
-            int cell = knownCell[slotCell[s]];
+            int cell = cells.knownCell[slots.slotCell[s]];
             for (int h = layout.holderStart[cell]; h < layout.holderStart[cell + 1]; h++) {
                 int holder = layout.holderList[h];
-                if (k == 1 && layout.isHolder(knownCell[slotCell[changedOwn[0]]], holder)) {
+                if (k == 1 && layout.isHolder(cells.knownCell[slots.slotCell[changedOwn[0]]], holder)) {
                     continue; // already sent both discs to this holder
                 }
                 int size = push(0, s);
-                if (k == 0 && changedOwnCount == 2 && layout.isHolder(knownCell[slotCell[changedOwn[1]]], holder)) {
+                if (k == 0 && changedOwnCount == 2 && layout.isHolder(cells.knownCell[slots.slotCell[changedOwn[1]]], holder)) {
                     size = push(size, changedOwn[1]);
                 }
                 workSent++;
-                send(holder, new Update(id, copies(scratch, size)), Kind.UPDATE);
+                send(holder, new Update(id, slots.copies(scratch, size)), Kind.UPDATE);
             }
         }
         changedOwnCount = 0;
@@ -720,38 +356,28 @@ public final class BlockActor {
     private void onUpdate(Update m) {
         workReceived++;
         DiscCopies copies = m.discs();
-        double[] st = copies.state();
         for (int k = 0; k < copies.size(); k++) {
-            int s = slotOf(copies.ids()[k]);
-            if (s < ownCount) {
-                throw new IllegalStateException(layout.describe(id) + " got an update of its own disc " + discId[s]);
+            int s = slots.slotOf(copies.ids()[k]);
+            if (s < slots.ownCount) {
+                throw new IllegalStateException(layout.describe(id) + " got an update of its own disc " + slots.discId[s]);
             }
-            int o = k * DiscCopies.STRIDE;
-            boolean echo = globalStamp[s] == copies.stamps()[k] && local.x[s] == st[o] && local.y[s] == st[o + 1]
-                    && local.vx[s] == st[o + 2] && local.vy[s] == st[o + 3] && local.t[s] == st[o + 4];
-            if (echo) {
+            if (slots.isEcho(s, copies, k)) {
                 continue; // the owner confirms a kick of ours: nothing new
             }
-            local.x[s] = st[o];
-            local.y[s] = st[o + 1];
-            local.vx[s] = st[o + 2];
-            local.vy[s] = st[o + 3];
-            local.t[s] = st[o + 4];
-            restitution.collided(s, st[o + 5]);
-            globalStamp[s] = copies.stamps()[k];
-            localStamp[s]++;
-            repredict(s, local.t[s]);
+            slots.takeCopy(s, copies, k);
+            potentials.repredict(s, slots.local.t[s]);
         }
         afterHandling();
     }
 
     private void onKick(Kick m) {
         workReceived++;
-        int s = slotOf(m.disc());
-        if (s >= ownCount) {
+        int s = slots.slotOf(m.disc());
+        if (s >= slots.ownCount) {
             throw new IllegalStateException(layout.describe(id) + " got a kick for disc " + m.disc() + ", which it does not own");
         }
-        if (globalStamp[s] != m.basisStamp()) {
+        Discs local = slots.local;
+        if (slots.globalStamp[s] != m.basisStamp()) {
             // The kicker's copy is out of date: this disc collided meanwhile. Keep momentum, count it.
             worker.violations++;
             CausalityViolationEvent.emit(epoch + m.time(), m.disc(), -1, Math.max(0, local.t[s] - m.time()));
@@ -765,7 +391,7 @@ public final class BlockActor {
             local.vy[s] = m.vy();
             local.t[s] = m.time();
         }
-        restitution.collided(s, epoch + m.time());
+        slots.restitution.collided(s, epoch + m.time());
         changedOwnCount = 0;
         ownChanged(s, local.t[s]);
         sendUpdates();
@@ -780,22 +406,13 @@ public final class BlockActor {
     }
 
     private void onEndStep() {
-        Discs d = frame.d;
-        for (int s = 0; s < ownCount; s++) {
-            int i = discId[s];
-            d.x[i] = local.x[s];
-            d.y[i] = local.y[s];
-            d.vx[i] = local.vx[s];
-            d.vy[i] = local.vy[s];
-            d.t[i] = local.t[s];
-            restitutionTemplate.collided(i, restitution.lastCollision(s));
-        }
+        slots.writeBackOwn(frame.d);
         begun = false;
         potentialsFound = false;
         processing = false;
         particlesReceived = 0;
-        count = 0;
-        heap.clear();
+        slots.clear();
+        potentials.clear();
         sendToGrid(new StepDone(id), Kind.STEP_DONE);
     }
 

@@ -14,7 +14,8 @@ import java.util.BitSet;
  * <p>A pair of discs in neighbouring cells is owned by the cell with the lower index (above, or to
  * the left: the thesis's "top" neighbour), so an actor "holds" copies of the discs of every foreign
  * cell next to one of its cells with a lower index. Flat CSR arrays throughout: the thesis's
- * workload reaches millions of actors.
+ * workload reaches millions of actors. Each actor's own part of the layout, numbered locally, is its
+ * {@link BlockNeighbourhood}.
  */
 public final class BlockLayout {
     public final CellGrid grid;

@@ -4,7 +4,6 @@ import carom.core.BadInputException;
 import carom.core.engine.RunResult;
 import carom.core.grid.CellGrid;
 import carom.core.grid.CellLists;
-import carom.core.grid.StepGrid;
 import carom.core.observe.Observables;
 import carom.core.observe.Pressure;
 import carom.core.observe.VirialAccumulator;

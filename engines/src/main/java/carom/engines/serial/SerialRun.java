@@ -7,7 +7,6 @@ import carom.core.engine.Contacts;
 import carom.core.engine.StallGuard;
 import carom.core.grid.CellGrid;
 import carom.core.grid.CellLists;
-import carom.core.grid.StepGrid;
 import carom.core.observe.EnergyAudit;
 import carom.core.observe.Observables;
 import carom.core.observe.Pressure;
@@ -18,9 +17,10 @@ import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
 import carom.core.physics.Physics;
 import carom.core.physics.Restitution;
-import carom.core.queue.ThreadedBucketQueue;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
+import carom.engines.cells.StepGrid;
+import carom.engines.cells.ThreadedBucketQueue;
 import java.util.Map;
 
 /**

@@ -25,7 +25,7 @@ final class StateErrors {
      */
     static double deepestOverlap(Discs d, Box box) {
         double[] deepest = {box.periodic() ? 0 : deepestWallOverlap(d, box)};
-        NeighbourPairs.forEach(d, box, (i, j, dx, dy) -> {
+        NeighbourPairs.forEach(d, box.width(), box.height(), box.periodic(), (i, j, dx, dy) -> {
             double sigma = d.radius[i] + d.radius[j];
             deepest[0] = Math.max(deepest[0], (sigma - Math.sqrt(dx * dx + dy * dy)) / sigma);
         });

@@ -1,4 +1,4 @@
-package carom.core.queue;
+package carom.engines.cells;
 
 import java.util.Arrays;
 

@@ -1,5 +1,6 @@
-package carom.core.grid;
+package carom.engines.cells;
 
+import carom.core.grid.CellGrid;
 import carom.core.scene.Box;
 
 /**
