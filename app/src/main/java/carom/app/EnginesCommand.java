@@ -1,8 +1,8 @@
 package carom.app;
 
-import carom.core.BadInputException;
 import carom.core.Quoted;
 import carom.core.engine.Engine;
+import carom.core.engine.Tunable;
 import carom.engines.EngineCatalog;
 import java.io.PrintWriter;
 import java.util.concurrent.Callable;
@@ -11,14 +11,17 @@ import picocli.CommandLine.IDefaultValueProvider;
 import picocli.CommandLine.Model.ArgSpec;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Model.OptionSpec;
+import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code carom engines}: one line per engine, {@code NAME exact|relaxed DESCRIPTION}. Also how every
- * command that runs an engine finds it by name and fills in the one default engine.
+ * {@code carom engines}: one line per engine, {@code NAME exact|relaxed DESCRIPTION}, the description
+ * ending with the engine's settings and their defaults; with {@code --tunables}, every setting's type,
+ * range, unit and meaning below its engine. Also how every command that runs an engine finds it by
+ * name and fills in the one default engine.
  */
 @Command(name = "engines", mixinStandardHelpOptions = true,
-        description = "List the engines, one per line: NAME exact|relaxed DESCRIPTION.")
+        description = "List the engines, one per line: NAME exact|relaxed DESCRIPTION (settings: NAME=DEFAULT, ...).")
 public final class EnginesCommand implements Callable<Integer> {
     /**
      * Most worker threads a run may ask for: far beyond any machine's cores, and far below what breaks
@@ -29,12 +32,23 @@ public final class EnginesCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
+    @Option(names = "--tunables", description = "Also list each engine's settings (--option NAME=VALUE): "
+            + "default, type and range, unit and meaning.")
+    boolean tunables;
+
     @Override
     public Integer call() {
         PrintWriter out = spec.commandLine().getOut();
         for (Engine e : EngineCatalog.all()) {
             // Single spaces, so that scripts can split each line into three fields.
-            out.println(e.name() + " " + (e.exact() ? "exact" : "relaxed") + " " + e.description());
+            String settings = e.tunables().isEmpty() ? "" : " (settings: " + String.join(", ",
+                    e.tunables().stream().map(t -> t.name() + "=" + t.defaultText()).toList()) + ")";
+            out.println(e.name() + " " + (e.exact() ? "exact" : "relaxed") + " " + e.description() + settings);
+            if (tunables) {
+                for (Tunable<?> t : e.tunables()) {
+                    out.println("    " + t.describe());
+                }
+            }
         }
         out.flush();
         return 0;
@@ -48,13 +62,7 @@ public final class EnginesCommand implements Callable<Integer> {
         if (name == null) {
             return EngineCatalog.defaultEngine();
         }
-        for (Engine e : EngineCatalog.all()) {
-            if (e.name().equals(name)) {
-                return e;
-            }
-        }
-        throw new BadInputException("unknown engine " + Quoted.of(name) + " (known: "
-                + String.join(", ", EngineCatalog.all().stream().map(Engine::name).toList()) + ")");
+        return EngineCatalog.byName(name);
     }
 
     /**

@@ -5,6 +5,7 @@ import carom.core.Quoted;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
+import carom.core.engine.Tunables;
 import carom.core.observe.Energy;
 import carom.core.observe.jfr.CaromRecording;
 import carom.core.scene.Scene;
@@ -21,7 +22,6 @@ import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.Set;
-import java.util.TreeSet;
 import java.util.concurrent.Callable;
 import java.util.function.Supplier;
 import jdk.jfr.Recording;
@@ -44,9 +44,6 @@ import picocli.CommandLine.Spec;
         defaultValueProvider = EnginesCommand.DefaultEngine.class,
         description = "Simulate a scene to its end time. Without --out or --summary, print a readable summary.")
 final class SimulateCommand implements Callable<Integer> {
-    /** Engines that run on the calling thread alone and ignore {@code --threads}. */
-    private static final Set<String> SINGLE_THREADED = Set.of("serial", "fast", "stepped");
-
     @Spec
     CommandSpec spec;
 
@@ -141,7 +138,7 @@ final class SimulateCommand implements Callable<Integer> {
                 recording.stop();
                 files.stageFile(jfr, recording::dump);
             }
-            int used = threadsUsed(result, workers);
+            int used = result.threadsUsed(engine.threadsFor(workers));
             Energy energy = Energy.of(scene, result);
             if (out == null && summary == null) {
                 ReadableSummary.print(scene.name(), scene.size(), used, result, energy, spec.commandLine().getOut(),
@@ -158,22 +155,6 @@ final class SimulateCommand implements Callable<Integer> {
             files.commit();
         }
         return 0;
-    }
-
-    /**
-     * The threads the run really used: the engine's own count where it reports one (the virtual-thread
-     * carriers it got, akka's dispatcher, the actors' threads, slab domains), 1 for the engines that run
-     * on one thread, else the threads it was given.
-     */
-    static int threadsUsed(RunResult result, int given) {
-        Map<String, Long> counters = result.counters() == null ? Map.of() : result.counters();
-        for (String key : new String[] {"carrierThreads", "dispatcherThreads", "threads", "domains"}) {
-            Long reported = counters.get(key);
-            if (reported != null) {
-                return reported.intValue();
-            }
-        }
-        return SINGLE_THREADED.contains(result.engine()) ? 1 : given;
     }
 
     private Path scenePath() {
@@ -198,15 +179,9 @@ final class SimulateCommand implements Callable<Integer> {
         return k;
     }
 
-    /** An option key the engine does not know is a typo, never silently ignored. */
+    /** An option key the engine does not know, or a value that does not parse, is bad input before anything runs. */
     private void checkTunables(Engine engine) {
-        for (String key : tunables.keySet()) {
-            if (!engine.tunables().contains(key)) {
-                String known = engine.tunables().isEmpty() ? "none" : String.join(", ", new TreeSet<>(engine.tunables()));
-                throw new BadInputException("--option " + Quoted.bare(key) + ": engine " + engine.name()
-                        + " has no such option (known: " + known + ")");
-            }
-        }
+        Tunables.check(engine.name(), engine.tunables(), tunables);
     }
 
     /** --every and what samples need: a positive finite interval, and an engine that can stop at given times. */

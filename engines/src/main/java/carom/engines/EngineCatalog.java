@@ -40,7 +40,7 @@ public final class EngineCatalog {
                 return e;
             }
         }
-        throw new BadInputException("unknown engine '" + name + "' (known: "
+        throw new BadInputException("unknown engine " + carom.core.Quoted.of(name) + " (known: "
                 + String.join(", ", ENGINES.stream().map(Engine::name).toList()) + ")");
     }
 }

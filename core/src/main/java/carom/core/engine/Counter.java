@@ -19,6 +19,8 @@ public enum Counter {
 
     // Step-grid engines (serial, stripes, the actor engines).
     STEPS("steps", "time steps of the grid"),
+    EARLY_STEP_ENDS("earlyStepEnds", "steps ended early because a disc became faster than the step allows (serial)"),
+    ROUNDS("rounds", "phase rounds of the stripes (three per step)"),
     OVERRUNS("overruns", "discs that outran the grid within a step (stepFactor above 1)"),
     PREEMPTED("preempted", "stale events that a later collision may have pre-empted (relaxed engines)"),
     THREADS("threads", "worker threads the engine ran on"),

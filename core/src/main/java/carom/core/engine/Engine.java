@@ -27,11 +27,12 @@ public interface Engine {
     }
 
     /**
-     * The engine options ({@code --option key=value}) this engine understands; any other key is bad
-     * input, so that a typo never silently changes a run.
+     * The settings ({@code --option key=value}) this engine understands, each declared once with its
+     * type, default, range and meaning; any other key, and any value that does not parse, is bad input
+     * ({@link Tunables#check}), so that a typo never silently changes a run.
      */
-    default java.util.Set<String> tunables() {
-        return java.util.Set.of();
+    default java.util.List<Tunable<?>> tunables() {
+        return java.util.List.of();
     }
 
     /**
@@ -40,6 +41,11 @@ public interface Engine {
      */
     default boolean samples() {
         return false;
+    }
+
+    /** The threads this engine runs on when given {@code requested} (single-threaded engines: 1). */
+    default int threadsFor(int requested) {
+        return requested;
     }
 
     RunResult run(Scene scene, RunOptions options);

@@ -52,16 +52,4 @@ public record RunOptions(double until, int threads, ProgressListener progress, M
         m.put(key, value);
         return new RunOptions(until, threads, progress, m, every, sampler);
     }
-
-    public double tunable(String key, double fallback) {
-        String v = tunables.get(key);
-        if (v == null) {
-            return fallback;
-        }
-        try {
-            return Double.parseDouble(v);
-        } catch (NumberFormatException e) {
-            throw new carom.core.BadInputException("engine option " + key + ": not a number: " + v);
-        }
-    }
 }

@@ -50,6 +50,20 @@ public record RunResult(String engine, boolean exact, Discs finalState, double u
         return v == null ? fallback : v;
     }
 
+    /**
+     * The threads the run really had as the engine reports them (the virtual-thread carriers it got,
+     * which are fixed per JVM; akka's dispatcher; the actors' threads; slab domains), else
+     * {@code fallback}: what the engine says it uses for the request ({@link Engine#threadsFor}).
+     */
+    public int threadsUsed(int fallback) {
+        for (Counter c : new Counter[] {Counter.CARRIER_THREADS, Counter.DISPATCHER_THREADS, Counter.THREADS, Counter.DOMAINS}) {
+            if (has(c)) {
+                return Math.toIntExact(counter(c, fallback));
+            }
+        }
+        return fallback;
+    }
+
     /** Whether the engine reports {@code counter}. */
     public boolean has(Counter counter) {
         return counters != null && counters.containsKey(counter.key);

@@ -47,18 +47,28 @@ public sealed interface Tunable<T> permits Tunable.Real, Tunable.Whole, Tunable.
     }
 
     /**
-     * A real number in [min, max].
+     * A real number in [min, max], or in (min, max] when {@code openBelow}.
      *
-     * @param fallback the default; {@code NaN} when the engine computes it from the scene, which
-     *                 {@code autoDefault} then describes
+     * @param fallback    the default; {@code NaN} when the engine computes it, which {@code autoDefault}
+     *                    then describes (else null)
      */
-    record Real(String name, double fallback, double min, double max, String unit, String meaning,
+    record Real(String name, double fallback, double min, boolean openBelow, double max, String unit, String meaning,
                 String autoDefault) implements Tunable<Double> {
         private static final Pattern DECIMAL = Pattern.compile("[-+]?(\\d+(\\.\\d*)?|\\.\\d+)([eE][-+]?\\d+)?");
 
-        /** A setting with a fixed default. */
-        public Real(String name, double fallback, double min, double max, String unit, String meaning) {
-            this(name, fallback, min, max, unit, meaning, null);
+        /** A finite number >= {@code min}. */
+        public static Real atLeast(String name, double fallback, double min, String unit, String meaning) {
+            return new Real(name, fallback, min, false, Double.MAX_VALUE, unit, meaning, null);
+        }
+
+        /** A finite number > {@code min}. */
+        public static Real above(String name, double fallback, double min, String unit, String meaning) {
+            return new Real(name, fallback, min, true, Double.MAX_VALUE, unit, meaning, null);
+        }
+
+        /** The same setting with a default the engine computes (described by {@code how}). */
+        public Real computedByDefault(String how) {
+            return new Real(name, Double.NaN, min, openBelow, max, unit, meaning, how);
         }
 
         /** The given value, or {@link #fallback()} ({@code NaN} for a computed default). */
@@ -73,7 +83,8 @@ public sealed interface Tunable<T> permits Tunable.Real, Tunable.Whole, Tunable.
                 throw new BadInputException("--option " + name + ": not a number: " + Quoted.of(text));
             }
             double v = Double.parseDouble(text);
-            if (!(v >= min && v <= max)) {
+            boolean aboveMin = openBelow ? v > min : v >= min;
+            if (!(aboveMin && v <= max)) {
                 throw new BadInputException("--option " + name + ": must be " + rangeText() + ", got " + text);
             }
             return v;
@@ -90,10 +101,10 @@ public sealed interface Tunable<T> permits Tunable.Real, Tunable.Whole, Tunable.
         }
 
         private String rangeText() {
-            if (max == Double.MAX_VALUE || max == Double.POSITIVE_INFINITY) {
-                return min == Double.MIN_VALUE ? "> 0" : ">= " + number(min);
+            if (max == Double.MAX_VALUE) {
+                return (openBelow ? "> " : ">= ") + number(min);
             }
-            return "in [" + number(min) + ", " + number(max) + "]";
+            return "in " + (openBelow ? "(" : "[") + number(min) + ", " + number(max) + "]";
         }
     }
 

@@ -9,6 +9,10 @@ import carom.core.state.Discs;
  * for small scenes in tests ({@code auditEnergy=true} engine option).
  */
 public final class EnergyAudit {
+    /** The test-mode setting that turns the audit on, for every exact engine that offers it. */
+    public static final carom.core.engine.Tunable.Flag AUDIT_ENERGY = new carom.core.engine.Tunable.Flag("auditEnergy",
+            false, "test mode: check after every event (slabs: at every barrier) that the energy did not grow; O(N) each");
+
     private static final double TOLERANCE = 1e-9;
     private double previous = Double.NaN;
 
@@ -21,7 +25,7 @@ public final class EnergyAudit {
      */
     public static EnergyAudit forScene(carom.core.scene.Scene scene) {
         if (scene.box().periodic() && scene.effects().hasGravity()) {
-            throw new carom.core.BadInputException("engine option auditEnergy: needs a walled box when there is "
+            throw new carom.core.BadInputException("--option auditEnergy: needs a walled box when there is "
                     + "gravity (in a periodic box a falling disc's potential energy has no bound)");
         }
         return new EnergyAudit();

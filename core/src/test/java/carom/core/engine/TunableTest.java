@@ -11,8 +11,9 @@ import org.junit.jupiter.params.provider.ValueSource;
 import org.junit.jupiter.api.Test;
 
 class TunableTest {
-    private static final Tunable.Real CELL = new Tunable.Real("cellFactor", 2, 1, Double.MAX_VALUE, "diameters",
+    private static final Tunable.Real CELL = Tunable.Real.atLeast("cellFactor", 2, 1, "diameters",
             "cell side over the largest diameter");
+    private static final Tunable.Real STEP = Tunable.Real.above("stepFactor", 1, 0, "", "step over the guaranteed one");
     private static final Tunable.Whole SPINS = new Tunable.Whole("spins", 2048, 0, 1 << 30, "iterations",
             "busy-wait iterations", "from N and processors");
     private static final Tunable.Flag AUDIT = new Tunable.Flag("auditEnergy", false, "check energy after every event");
@@ -71,6 +72,16 @@ class TunableTest {
                 .isInstanceOf(BadInputException.class)
                 .hasMessage("--option cellfactor: engine fast has no such option (known: cellFactor, auditEnergy)");
         Tunables.check("fast", List.of(CELL, AUDIT), Map.of("cellFactor", "2", "auditEnergy", "false"));
+    }
+
+    @Test
+    void anOpenLowerBoundExcludesTheBound() {
+        assertThat(STEP.of(with("stepFactor", "1e-300"))).isEqualTo(1e-300);
+        assertThatThrownBy(() -> STEP.of(with("stepFactor", "0"))).isInstanceOf(BadInputException.class)
+                .hasMessage("--option stepFactor: must be > 0, got 0");
+        assertThat(STEP.describe()).isEqualTo("stepFactor=1 (real > 0): step over the guaranteed one");
+        assertThat(STEP.computedByDefault("from the scene").describe())
+                .isEqualTo("stepFactor=auto (from the scene) (real > 0): step over the guaranteed one");
     }
 
     @Test

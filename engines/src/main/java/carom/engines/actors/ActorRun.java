@@ -1,10 +1,13 @@
 package carom.engines.actors;
 
+import carom.core.engine.Counter;
+import carom.engines.cells.StepGridTunables;
+import carom.core.engine.Tunable;
 import carom.core.BadInputException;
 import carom.core.engine.EngineFailure;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
-import carom.core.observe.jfr.ActorMailboxEvent;
+import carom.core.observe.jfr.EngineEvents;
 import carom.core.scene.Scene;
 import carom.engines.actors.Protocol.Kind;
 import carom.engines.actors.Protocol.ToCell;
@@ -33,8 +36,17 @@ import java.util.concurrent.atomic.LongAdder;
  * subclass's {@link #shutdown} runs before {@link #run} returns.
  */
 public abstract class ActorRun implements BlockActor.Outbox {
-    /** Engine options every actor engine understands. */
-    public static final Set<String> TUNABLES = Set.of("cellFactor", "stepFactor", "cellsPerActor", "stallSeconds", "relayMinimums");
+    public static final Tunable.Whole CELLS_PER_ACTOR = new Tunable.Whole("cellsPerActor", 1, 1, Integer.MAX_VALUE, "cells",
+            "grid cells per block actor (1 is the thesis; cells over threads gives one actor per core; "
+                    + "a block is a rectangle as square as possible, whole rows once it reaches a row)");
+    public static final Tunable.Real STALL_SECONDS = Tunable.Real.above("stallSeconds", 60, 0, "seconds",
+            "a run in which no message is handled for this long is stopped with error: saying where it was");
+    public static final Tunable.Flag RELAY_MINIMUMS = new Tunable.Flag("relayMinimums", true,
+            "minimum messages also carry the earliest event among the sender's other neighbours (false: the "
+                    + "thesis's neighbours-only rule, which lets actors two blocks apart collide one disc at once)");
+    /** The settings every actor engine understands. */
+    public static final List<Tunable<?>> TUNABLES = List.of(StepGridTunables.CELL_FACTOR, StepGridTunables.STEP_FACTOR,
+            CELLS_PER_ACTOR, STALL_SECONDS, RELAY_MINIMUMS);
 
     private final String engineName;
     protected final StepFrame frame;
@@ -52,24 +64,13 @@ public abstract class ActorRun implements BlockActor.Outbox {
     protected ActorRun(String engineName, Scene scene, RunOptions options, BlockActor.FaultInjection faults) {
         this.engineName = engineName;
         this.threads = Math.max(1, options.threads());
-        this.frame = new StepFrame(scene, options.until(), options.tunable("cellFactor", 2.0),
-                options.tunable("stepFactor", 1.0));
-        double cellsPerActor = options.tunable("cellsPerActor", 1.0);
-        if (!(cellsPerActor >= 1) || cellsPerActor != Math.rint(cellsPerActor) || cellsPerActor > Integer.MAX_VALUE) {
-            throw new BadInputException("engine option cellsPerActor: must be a whole number >= 1, got " + cellsPerActor);
-        }
-        this.stallSeconds = options.tunable("stallSeconds", 60.0);
-        if (!(stallSeconds > 0) || Double.isInfinite(stallSeconds)) {
-            throw new BadInputException("engine option stallSeconds: must be a finite number > 0, got " + stallSeconds);
-        }
-        double relay = options.tunable("relayMinimums", 1.0);
-        if (relay != 0 && relay != 1) {
-            throw new BadInputException("engine option relayMinimums: must be 1 (on) or 0 (the thesis's rule), got " + relay);
-        }
-        this.relayMinimums = relay == 1;
-        this.layout = new BlockLayout(frame.grid, (int) cellsPerActor);
+        this.frame = StepGridTunables.frame(scene, options);
+        int cellsPerActor = CELLS_PER_ACTOR.intOf(options);
+        this.stallSeconds = STALL_SECONDS.of(options);
+        this.relayMinimums = RELAY_MINIMUMS.of(options);
+        this.layout = new BlockLayout(frame.grid, cellsPerActor);
         this.actors = new BlockActor[layout.actors];
-        this.timed = new ActorMailboxEvent().isEnabled();
+        this.timed = EngineEvents.mailboxesRecorded();
         for (int a = 0; a < actors.length; a++) {
             actors[a] = new BlockActor(a, frame, layout, this, relayMinimums, faults, heartbeat, timed);
         }
@@ -116,22 +117,22 @@ public abstract class ActorRun implements BlockActor.Outbox {
         if (timed) {
             for (BlockActor a : actors) {
                 long out = java.util.Arrays.stream(a.sentByKind).sum();
-                ActorMailboxEvent.emit(engineName, describe(a.id), a.messagesIn, out, -1, a.busyNanos);
+                EngineEvents.actorMailbox(engineName, describe(a.id), a.messagesIn, out, -1, a.busyNanos);
             }
         }
         Map<String, Long> counters = new HashMap<>(engineCounters());
         long total = 0;
         for (Kind kind : Kind.values()) {
-            counters.put("messages." + kind.counterName, messages[kind.ordinal()]);
+            counters.put(Counter.messagesOf(kind.counterName), messages[kind.ordinal()]);
             total += messages[kind.ordinal()];
         }
-        counters.put("messages", total);
-        counters.put("actors", (long) layout.actors);
-        counters.put("cellsPerActor", (long) layout.blockCols * layout.blockRows);
-        counters.put("steps", grid.steps);
-        counters.put("probeWaves", grid.probeWaves);
-        counters.put("threads", (long) threads);
-        counters.put("relayMinimums", relayMinimums ? 1L : 0L);
+        counters.put(Counter.MESSAGES.key, total);
+        counters.put(Counter.ACTORS.key, (long) layout.actors);
+        counters.put(Counter.CELLS_PER_ACTOR.key, (long) layout.blockCols * layout.blockRows);
+        counters.put(Counter.STEPS.key, grid.steps);
+        counters.put(Counter.PROBE_WAVES.key, grid.probeWaves);
+        counters.put(Counter.THREADS.key, (long) threads);
+        counters.put(Counter.RELAY_MINIMUMS.key, relayMinimums ? 1L : 0L);
         return frame.result(engineName, workers, seconds, counters);
     }
 

@@ -1,7 +1,7 @@
 package carom.engines.actors;
 
 import carom.core.engine.Contacts;
-import carom.core.observe.jfr.CausalityViolationEvent;
+import carom.core.observe.jfr.EngineEvents;
 import carom.core.physics.Flight;
 import carom.core.state.Discs;
 import carom.engines.actors.Protocol.BeginProcessing;
@@ -263,7 +263,7 @@ public final class BlockActor {
         int[] discId = slots.discId;
         if (local.t[a] > now || (b >= 0 && local.t[b] > now)) {
             worker.violations++;
-            CausalityViolationEvent.emit(epoch + now, discId[a], b >= 0 ? discId[b] : b,
+            EngineEvents.causalityViolation(epoch + now, discId[a], b >= 0 ? discId[b] : b,
                     Math.max(local.t[a], b >= 0 ? local.t[b] : now) - now);
         }
         worker.stallGuard.event(epoch + now, discId[a], b >= 0 ? discId[b] : b);
@@ -380,7 +380,7 @@ public final class BlockActor {
         if (slots.globalStamp[s] != m.basisStamp()) {
             // The kicker's copy is out of date: this disc collided meanwhile. Keep momentum, count it.
             worker.violations++;
-            CausalityViolationEvent.emit(epoch + m.time(), m.disc(), -1, Math.max(0, local.t[s] - m.time()));
+            EngineEvents.causalityViolation(epoch + m.time(), m.disc(), -1, Math.max(0, local.t[s] - m.time()));
             flight.advance(local, s, m.time());
             local.vx[s] += m.dvx();
             local.vy[s] += m.dvy();

@@ -41,7 +41,7 @@ public final class BlockLayout {
 
     public BlockLayout(CellGrid grid, int cellsPerActor) {
         if (cellsPerActor < 1) {
-            throw new BadInputException("engine option cellsPerActor: must be a whole number >= 1, got " + cellsPerActor);
+            throw new BadInputException("--option cellsPerActor: must be a whole number >= 1, got " + cellsPerActor);
         }
         this.grid = grid;
         int k = (int) Math.min(cellsPerActor, (long) grid.cellCount());

@@ -1,7 +1,7 @@
 package carom.engines.actors;
 
 import carom.core.engine.ProgressListener;
-import carom.core.observe.jfr.TimeStepEvent;
+import carom.core.observe.jfr.EngineEvents;
 import carom.engines.actors.Protocol.BeginProcessing;
 import carom.engines.actors.Protocol.BeginStep;
 import carom.engines.actors.Protocol.EndStep;
@@ -36,7 +36,8 @@ public final class GridCoordinator {
     private final String engine;
     private final LongSupplier collisions;
     private final StepFrame frame;
-    private TimeStepEvent stepEvent;
+    /** The current step's JFR span ({@link EngineEvents}), null without a recorder. */
+    private Object stepEvent;
     private long collisionsBefore;
     private final BlockLayout layout;
     private final int actors;
@@ -108,7 +109,7 @@ public final class GridCoordinator {
     }
 
     private void beginStep() {
-        stepEvent = TimeStepEvent.start();
+        stepEvent = EngineEvents.stepStarted();
         remaining = frame.until - epoch;
         length = frame.beginStep(epoch, remaining);
         steps++;
@@ -196,9 +197,9 @@ public final class GridCoordinator {
             return;
         }
         frame.endStep();
-        if (stepEvent.isEnabled()) {
+        if (stepEvent != null) {
             long sum = collisions.getAsLong();
-            stepEvent.finish(engine, steps, epoch, epoch + length, sum - collisionsBefore);
+            EngineEvents.stepFinished(stepEvent, engine, steps, epoch, epoch + length, sum - collisionsBefore);
             collisionsBefore = sum;
         }
         epoch = length >= remaining ? frame.until : epoch + length;

@@ -1,5 +1,8 @@
 package carom.engines.akka;
 
+import java.util.List;
+import java.util.ArrayList;
+import carom.core.engine.Tunable;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
@@ -39,10 +42,10 @@ public final class AkkaEngine implements Engine {
     }
 
     @Override
-    public Set<String> tunables() {
-        Set<String> keys = new HashSet<>(ActorRun.TUNABLES);
-        keys.add("throughput");
-        return Set.copyOf(keys);
+    public List<Tunable<?>> tunables() {
+        List<Tunable<?>> all = new ArrayList<>(ActorRun.TUNABLES);
+        all.add(AkkaRun.THROUGHPUT);
+        return List.copyOf(all);
     }
 
     @Override

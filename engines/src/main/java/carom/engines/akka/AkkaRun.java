@@ -1,5 +1,7 @@
 package carom.engines.akka;
 
+import carom.core.engine.Counter;
+import carom.core.engine.Tunable;
 import akka.actor.typed.ActorRef;
 import akka.actor.typed.ActorSystem;
 import akka.actor.typed.Behavior;
@@ -32,6 +34,8 @@ final class AkkaRun extends ActorRun {
      * within the run-to-run noise of the shared 2-core VM (docs/measurements/jmh/README.md).
      */
     static final int DEFAULT_THROUGHPUT = 5;
+    static final Tunable.Whole THROUGHPUT = new Tunable.Whole("throughput", DEFAULT_THROUGHPUT, 1, 1_000_000, "messages",
+            "messages an actor handles before it yields its thread (Akka's dispatcher throughput)");
 
     private final int throughput;
     private ActorSystem<ToGrid> system;
@@ -41,11 +45,7 @@ final class AkkaRun extends ActorRun {
 
     AkkaRun(Scene scene, RunOptions options, BlockActor.FaultInjection faults) {
         super("akka", scene, options, faults);
-        double t = options.tunable("throughput", DEFAULT_THROUGHPUT);
-        if (!(t >= 1) || t != Math.rint(t) || t > 1_000_000) {
-            throw new BadInputException("engine option throughput: must be a whole number from 1 to 1000000, got " + t);
-        }
-        this.throughput = (int) t;
+        this.throughput = THROUGHPUT.intOf(options);
     }
 
     static Config config(int threads, int throughput) {
@@ -153,6 +153,6 @@ final class AkkaRun extends ActorRun {
 
     @Override
     protected Map<String, Long> engineCounters() {
-        return Map.of("dispatcherThreads", (long) threads, "throughput", (long) throughput);
+        return Map.of(Counter.DISPATCHER_THREADS.key, (long) threads, Counter.THROUGHPUT.key, (long) throughput);
     }
 }

@@ -3,7 +3,7 @@ package carom.engines.cells;
 import carom.core.engine.RunResult;
 import carom.core.grid.CellGrid;
 import carom.core.grid.CellLists;
-import carom.core.observe.jfr.CausalityViolationEvent;
+import carom.core.observe.jfr.EngineEvents;
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
 import carom.core.physics.Restitution;
@@ -192,7 +192,7 @@ public final class CellStepWork {
         h.removeMin();
         if (d.t[a] > now || (b >= 0 && d.t[b] > now)) {
             w.violations++;
-            CausalityViolationEvent.emit(epoch + now, a, b, Math.max(d.t[a], b >= 0 ? d.t[b] : now) - now);
+            EngineEvents.causalityViolation(epoch + now, a, b, Math.max(d.t[a], b >= 0 ? d.t[b] : now) - now);
         }
         w.stallGuard.event(epoch + now, a, b);
         int band = c / grid.cols;

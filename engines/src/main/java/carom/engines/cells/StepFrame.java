@@ -1,5 +1,6 @@
 package carom.engines.cells;
 
+import carom.core.engine.Counter;
 import carom.core.BadInputException;
 import carom.core.engine.RunResult;
 import carom.core.grid.CellGrid;
@@ -61,10 +62,10 @@ public final class StepFrame {
      */
     public StepFrame(Scene scene, double until, double cellFactor, double stepFactor) {
         if (!(cellFactor > 1)) {
-            throw new BadInputException("engine option cellFactor: must be > 1, got " + cellFactor);
+            throw new BadInputException("--option cellFactor: must be > 1, got " + cellFactor);
         }
         if (!(stepFactor > 0) || Double.isInfinite(stepFactor)) {
-            throw new BadInputException("engine option stepFactor: must be a finite number > 0, got " + stepFactor);
+            throw new BadInputException("--option stepFactor: must be a finite number > 0, got " + stepFactor);
         }
         this.stepFactor = stepFactor;
         this.scene = scene;
@@ -160,10 +161,10 @@ public final class StepFrame {
         double energyEnd = Observables.kineticEnergy(d);
         Pressure pressure = VirialAccumulator.pressureOf(virial, scene, d, energyStart, energyEnd);
         Map<String, Long> counters = new HashMap<>(extraCounters);
-        counters.put("staleEvents", stale);
-        counters.put("overruns", overruns);
-        counters.put("preempted", preempted);
-        counters.put("predictions", predictions);
+        counters.put(Counter.STALE_EVENTS.key, stale);
+        counters.put(Counter.OVERRUNS.key, overruns);
+        counters.put(Counter.PREEMPTED.key, preempted);
+        counters.put(Counter.PREDICTIONS.key, predictions);
         return new RunResult(engine, false, d, until, pairs, wallHits, pairs + wallHits, energyStart, energyEnd,
                 momentumStart, Observables.momentum(d), pressure, violations, seconds, counters);
     }

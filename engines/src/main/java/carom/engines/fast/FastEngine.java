@@ -1,10 +1,13 @@
 package carom.engines.fast;
 
+import carom.engines.kernel.KernelTunables;
+import carom.core.observe.EnergyAudit;
+import carom.core.engine.Tunable;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
-import java.util.Set;
+import java.util.List;
 
 /**
  * A state-of-the-art exact single-thread engine: one scheduled event per disc (its earliest pair
@@ -37,13 +40,18 @@ public final class FastEngine implements Engine {
     }
 
     @Override
-    public Set<String> tunables() {
-        return Set.of("cellFactor", "auditEnergy");
+    public List<Tunable<?>> tunables() {
+        return List.of(KernelTunables.CELL_FACTOR, EnergyAudit.AUDIT_ENERGY);
     }
 
     @Override
     public boolean samples() {
         return true;
+    }
+
+    @Override
+    public int threadsFor(int requested) {
+        return 1;
     }
 
     @Override

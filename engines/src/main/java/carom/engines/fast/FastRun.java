@@ -1,5 +1,7 @@
 package carom.engines.fast;
 
+import carom.core.engine.Counter;
+import carom.engines.kernel.KernelTunables;
 import static carom.engines.kernel.DiscTable.HIT;
 import static carom.engines.kernel.DiscTable.RECHECK;
 import static carom.engines.kernel.DiscTable.RESYNC_SPANS;
@@ -13,7 +15,7 @@ import carom.core.observe.EnergyAudit;
 import carom.core.observe.Observables;
 import carom.core.observe.Pressure;
 import carom.core.observe.VirialAccumulator;
-import carom.core.observe.jfr.QueueRebuildEvent;
+import carom.core.observe.jfr.EngineEvents;
 import carom.core.physics.Flight;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
@@ -74,12 +76,12 @@ final class FastRun {
         this.until = options.until();
         // The initial discs are needed only here: the run holds its records, not a second copy.
         Discs src = scene.newDiscs();
-        this.table = new DiscTable(scene, src, options.tunable("cellFactor", 1.0));
+        this.table = new DiscTable(scene, src, KernelTunables.CELL_FACTOR.of(options));
         this.n = table.n;
         this.motion = new DiscMotion(table);
         this.p = new CellPredictor(motion);
         this.flight = table.flight;
-        this.audit = Boolean.parseBoolean(options.tunables().getOrDefault("auditEnergy", "false")) ? EnergyAudit.forScene(scene) : null;
+        this.audit = EnergyAudit.AUDIT_ENERGY.of(options) ? EnergyAudit.forScene(scene) : null;
         this.virial = VirialAccumulator.forRun(until);
         this.progress = options.progress();
         this.stallGuard = new StallGuard(scene, table::sceneId);
@@ -107,13 +109,13 @@ final class FastRun {
         double energyEnd = Observables.kineticEnergy(out);
         Pressure pressure = VirialAccumulator.pressureOf(virial, scene, out, energyStart, energyEnd);
         Map<String, Long> counters = new HashMap<>();
-        counters.put("events", events);
-        counters.put("cellCrossings", crossings);
-        counters.put("staleEvents", staleEvents);
-        counters.put("predictions", p.predictions());
-        counters.put("resyncs", resyncs);
-        counters.put("bytes", bytes());
-        counters.put("bytesPerDisc", n == 0 ? 0 : Math.round((double) bytes() / n));
+        counters.put(Counter.EVENTS.key, events);
+        counters.put(Counter.CELL_CROSSINGS.key, crossings);
+        counters.put(Counter.STALE_EVENTS.key, staleEvents);
+        counters.put(Counter.PREDICTIONS.key, p.predictions());
+        counters.put(Counter.RESYNCS.key, resyncs);
+        counters.put(Counter.BYTES.key, bytes());
+        counters.put(Counter.BYTES_PER_DISC.key, n == 0 ? 0 : Math.round((double) bytes() / n));
         return new RunResult("fast", true, out, until, pairCollisions, wallCollisions, events,
                 energyStart, energyEnd, momentumStart, Observables.momentum(out), pressure, 0, seconds,
                 Map.copyOf(counters));
@@ -245,10 +247,10 @@ final class FastRun {
 
     /** Sizes the calendar from the mean event delay (trimmed of far outliers) and rebuilds it. */
     private void replan(double now) {
-        QueueRebuildEvent rebuild = QueueRebuildEvent.start();
+        Object rebuild = EngineEvents.rebuildStarted();
         double span = table.planCalendar(queue, null, n, now, untilLocal);
         resyncAt = now + RESYNC_SPANS * span;
-        rebuild.finish("fast", n, queue.size());
+        EngineEvents.rebuildFinished(rebuild, "fast", n, queue.size());
     }
 
     /** Every disc at {@code until}, in original id order, periodic positions wrapped into the box. */

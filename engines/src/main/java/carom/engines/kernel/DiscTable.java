@@ -127,7 +127,7 @@ public final class DiscTable {
         this.restitution = physics.restitution;
         this.acceleration = flight.maxAcceleration();
         if (!(cellFactor >= 1) || Double.isInfinite(cellFactor)) {
-            throw new BadInputException("engine option cellFactor: must be >= 1, got " + cellFactor);
+            throw new BadInputException("--option cellFactor: must be >= 1, got " + cellFactor);
         }
         this.width = scene.box().width();
         this.height = scene.box().height();

@@ -1,10 +1,13 @@
 package carom.engines.serial;
 
+import carom.engines.cells.StepGridTunables;
+import carom.core.observe.EnergyAudit;
+import carom.core.engine.Tunable;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
-import java.util.Set;
+import java.util.List;
 
 /**
  * The thesis's single-thread algorithm, made exact: time steps over a grid whose cells no disc can
@@ -31,8 +34,13 @@ public final class SerialEngine implements Engine {
     }
 
     @Override
-    public Set<String> tunables() {
-        return Set.of("cellFactor", "auditEnergy");
+    public List<Tunable<?>> tunables() {
+        return List.of(StepGridTunables.CELL_FACTOR, EnergyAudit.AUDIT_ENERGY);
+    }
+
+    @Override
+    public int threadsFor(int requested) {
+        return 1;
     }
 
     @Override

@@ -1,5 +1,7 @@
 package carom.engines.serial;
 
+import carom.core.engine.Counter;
+import carom.engines.cells.StepGridTunables;
 import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
@@ -11,8 +13,7 @@ import carom.core.observe.EnergyAudit;
 import carom.core.observe.Observables;
 import carom.core.observe.Pressure;
 import carom.core.observe.VirialAccumulator;
-import carom.core.observe.jfr.QueueRebuildEvent;
-import carom.core.observe.jfr.TimeStepEvent;
+import carom.core.observe.jfr.EngineEvents;
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
 import carom.core.physics.Physics;
@@ -85,12 +86,9 @@ final class SerialRun {
         this.walls = boundary instanceof Boundary.Walls w ? w : null;
         this.restitution = physics.restitution;
         this.acceleration = flight.maxAcceleration();
-        this.audit = Boolean.parseBoolean(options.tunables().getOrDefault("auditEnergy", "false"))
+        this.audit = EnergyAudit.AUDIT_ENERGY.of(options)
                 ? EnergyAudit.forScene(scene) : null;
-        double cellFactor = options.tunable("cellFactor", 2.0);
-        if (!(cellFactor > 1)) {
-            throw new carom.core.BadInputException("engine option cellFactor: must be > 1, got " + cellFactor);
-        }
+        double cellFactor = StepGridTunables.CELL_FACTOR.of(options);
         this.stepGrid = StepGrid.plan(scene.box(), 2 * d.maxRadius(), cellFactor, n);
         this.grid = stepGrid.grid;
         this.startX = new double[n];
@@ -120,26 +118,26 @@ final class SerialRun {
         Pressure pressure = VirialAccumulator.pressureOf(virial, scene, d, energyStart, energyEnd);
         return new RunResult("serial", true, d, until, pairCollisions, wallCollisions, pairCollisions + wallCollisions,
                 energyStart, energyEnd, momentumStart, Observables.momentum(d), pressure, 0, seconds,
-                Map.of("steps", steps, "predictions", predictions, "earlyStepEnds", earlyStepEnds));
+                Map.of(Counter.STEPS.key, steps, Counter.PREDICTIONS.key, predictions, Counter.EARLY_STEP_ENDS.key, earlyStepEnds));
     }
 
     /** Runs one step from local time 0 (absolute {@code epoch}); returns its length. */
     private double step(double epoch, double remaining) {
         steps++;
-        TimeStepEvent stepEvent = TimeStepEvent.start();
+        Object stepEvent = EngineEvents.stepStarted();
         long collisionsBefore = pairCollisions + wallCollisions;
         stepEnd = stepGrid.stepLength(d.maxSpeed(), acceleration, remaining);
-        QueueRebuildEvent rebuild = QueueRebuildEvent.start();
+        Object rebuild = EngineEvents.rebuildStarted();
         long predictionsBefore = predictions;
         cells.rebuild(grid, d.x, d.y, n);
         System.arraycopy(d.x, 0, startX, 0, n);
         System.arraycopy(d.y, 0, startY, 0, n);
         queue.reset(n, stepEnd, Math.max(16, n));
         findStepPotentials();
-        rebuild.finish("serial", n, predictions - predictionsBefore);
+        EngineEvents.rebuildFinished(rebuild, "serial", n, predictions - predictionsBefore);
         processUntilStepEnd(epoch);
         double end = stepEnd;
-        stepEvent.finish("serial", steps, epoch, epoch + end, pairCollisions + wallCollisions - collisionsBefore);
+        EngineEvents.stepFinished(stepEvent, "serial", steps, epoch, epoch + end, pairCollisions + wallCollisions - collisionsBefore);
         for (int i = 0; i < n; i++) {
             flight.advance(d, i, end);
             d.x[i] = boundary.wrapX(d.x[i]);

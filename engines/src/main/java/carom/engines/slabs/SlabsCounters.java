@@ -1,5 +1,6 @@
 package carom.engines.slabs;
 
+import carom.core.engine.Counter;
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
 import java.util.HashMap;
@@ -87,37 +88,37 @@ final class SlabsCounters {
         }
         int domainCount = domains.length;
         Map<String, Long> counters = new HashMap<>();
-        counters.put("domains", (long) domainCount);
-        counters.put("events", events(domains));
-        counters.put("cellCrossings", crossings);
-        counters.put("staleEvents", stale);
-        counters.put("predictions", predictions);
-        counters.put("resyncs", resyncs);
-        counters.put("windows", windows);
-        counters.put("commits", commits);
-        counters.put("rollbacks", rollbacks);
-        counters.put("undoneEvents", undoneEvents);
-        counters.put("crossDomainEvents", crossDomainEvents);
-        counters.put("migrations", migrations);
-        counters.put("crossPredictions", crossPredictions);
-        counters.put("serialNanos", serialNanos);
-        counters.put("windowNanos", windowNanos);
-        counters.put("setupNanos", setupNanos);
-        counters.put("startNanos", startNanos);
-        counters.put("finalNanos", finalNanos);
-        counters.put("serialCpuNanos", serialCpuNanos);
-        counters.put("criticalCpuNanos", criticalCpuNanos);
+        counters.put(Counter.DOMAINS.key, (long) domainCount);
+        counters.put(Counter.EVENTS.key, events(domains));
+        counters.put(Counter.CELL_CROSSINGS.key, crossings);
+        counters.put(Counter.STALE_EVENTS.key, stale);
+        counters.put(Counter.PREDICTIONS.key, predictions);
+        counters.put(Counter.RESYNCS.key, resyncs);
+        counters.put(Counter.WINDOWS.key, windows);
+        counters.put(Counter.COMMITS.key, commits);
+        counters.put(Counter.ROLLBACKS.key, rollbacks);
+        counters.put(Counter.UNDONE_EVENTS.key, undoneEvents);
+        counters.put(Counter.CROSS_DOMAIN_EVENTS.key, crossDomainEvents);
+        counters.put(Counter.MIGRATIONS.key, migrations);
+        counters.put(Counter.CROSS_PREDICTIONS.key, crossPredictions);
+        counters.put(Counter.SERIAL_NANOS.key, serialNanos);
+        counters.put(Counter.WINDOW_NANOS.key, windowNanos);
+        counters.put(Counter.SETUP_NANOS.key, setupNanos);
+        counters.put(Counter.START_NANOS.key, startNanos);
+        counters.put(Counter.FINAL_NANOS.key, finalNanos);
+        counters.put(Counter.SERIAL_CPU_NANOS.key, serialCpuNanos);
+        counters.put(Counter.CRITICAL_CPU_NANOS.key, criticalCpuNanos);
         long windowCpu = 0;
         for (Domain d : domains) {
             windowCpu += d.windowCpuNanos;
             if (domainCount > 1) {
                 // Per slab, to tell a systematic imbalance (one slab always heavier) from noise.
-                counters.put("slab" + d.id + ".events", d.events);
-                counters.put("slab" + d.id + ".windowCpuNanos", d.windowCpuNanos);
+                counters.put(Counter.perSlab(d.id, Counter.EVENTS), d.events);
+                counters.put(Counter.perSlab(d.id, Counter.WINDOW_CPU_NANOS), d.windowCpuNanos);
             }
         }
-        counters.put("windowCpuNanos", windowCpu);
-        counters.put("barrierSpins", (long) spins);
+        counters.put(Counter.WINDOW_CPU_NANOS.key, windowCpu);
+        counters.put(Counter.BARRIER_SPINS.key, (long) spins);
         return Map.copyOf(counters);
     }
 }

@@ -1,10 +1,13 @@
 package carom.engines.slabs;
 
+import carom.engines.kernel.KernelTunables;
+import carom.core.observe.EnergyAudit;
+import carom.core.engine.Tunable;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
-import java.util.Set;
+import java.util.List;
 
 /**
  * An exact parallel engine: the box is cut into {@code --threads} vertical slabs of cell columns, one
@@ -38,8 +41,8 @@ public final class SlabsEngine implements Engine {
     }
 
     @Override
-    public Set<String> tunables() {
-        return Set.of("cellFactor", "auditEnergy", "sequential", "spins");
+    public List<Tunable<?>> tunables() {
+        return List.of(KernelTunables.CELL_FACTOR, EnergyAudit.AUDIT_ENERGY, SlabsRun.SEQUENTIAL, SpinPolicy.SPINS);
     }
 
     @Override

@@ -1,5 +1,7 @@
 package carom.engines.slabs;
 
+import carom.core.engine.Tunable;
+import carom.engines.kernel.KernelTunables;
 import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
@@ -37,6 +39,8 @@ import carom.engines.kernel.DiscTable;
  * <p>Counters: {@link SlabsCounters}.
  */
 final class SlabsRun {
+    static final Tunable.Flag SEQUENTIAL = new Tunable.Flag("sequential", false,
+            "measurement mode: every domain's window runs on the calling thread, one after another (same bits)");
     private static final double INF = Double.POSITIVE_INFINITY;
 
     private final Scene scene;
@@ -80,9 +84,9 @@ final class SlabsRun {
         this.until = options.until();
         // The initial discs are needed only here: the run holds its records, not a second copy.
         Discs src = scene.newDiscs();
-        this.table = new DiscTable(scene, src, options.tunable("cellFactor", 1.0));
+        this.table = new DiscTable(scene, src, KernelTunables.CELL_FACTOR.of(options));
         this.n = table.n;
-        this.audit = Boolean.parseBoolean(options.tunables().getOrDefault("auditEnergy", "false")) ? EnergyAudit.forScene(scene) : null;
+        this.audit = EnergyAudit.AUDIT_ENERGY.of(options) ? EnergyAudit.forScene(scene) : null;
         this.progress = options.progress();
         this.serialVirial = VirialAccumulator.forRun(until);
         this.serialStall = new StallGuard(scene, table::sceneId);
@@ -93,8 +97,8 @@ final class SlabsRun {
         this.columns = new SlabColumns(table, options.threads());
         int k = columns.domains;
         this.domainCount = k;
-        this.sequential = Boolean.parseBoolean(options.tunables().getOrDefault("sequential", "false"));
-        this.spins = SpinPolicy.spinsOf(options, n, Runtime.getRuntime().availableProcessors());
+        this.sequential = SEQUENTIAL.of(options);
+        this.spins = SpinPolicy.spinsOf(options, n, Runtime.getRuntime().availableProcessors(), SpinPolicy.loadAverage());
         this.barrier = new SpinParkBarrier(k, spins);
         boolean many = k > 1;
         this.marks = many ? new DiscMarks(n) : null;

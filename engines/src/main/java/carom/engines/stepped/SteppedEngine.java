@@ -1,5 +1,6 @@
 package carom.engines.stepped;
 
+import carom.core.engine.Tunable;
 import carom.core.BadInputException;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
@@ -7,7 +8,7 @@ import carom.core.engine.RunResult;
 import carom.core.scene.Effects;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
-import java.util.Set;
+import java.util.List;
 
 /**
  * What game engines do: advance every disc by a fixed {@code dt}, then find the pairs that overlap and
@@ -28,10 +29,14 @@ import java.util.Set;
 public final class SteppedEngine implements Engine {
     /** Default step: the fastest disc moves this fraction of the smallest mobile radius. */
     public static final double DEFAULT_STEP_OVER_RADIUS = 0.05;
+    /** The accuracy knob. */
+    public static final Tunable.Real DT = Tunable.Real.above("dt", Double.NaN, 0, "time",
+            "time step: every disc moves by dt, then overlaps are resolved").computedByDefault(
+            "5% of the smallest radius per step at the fastest starting speed plus what a fall across the box adds");
     /** Counter: the deepest overlap seen, in parts per billion of the contact distance. */
-    public static final String DEEPEST_OVERLAP_PPB = "deepestOverlapPpb";
+    public static final String DEEPEST_OVERLAP_PPB = carom.core.engine.Counter.DEEPEST_OVERLAP_PPB.key;
     /** Counter: disc-steps in which a disc's centre was found outside a walled box before clamping. */
-    public static final String ESCAPES = "escapes";
+    public static final String ESCAPES = carom.core.engine.Counter.ESCAPES.key;
 
     @Override
     public String name() {
@@ -50,8 +55,13 @@ public final class SteppedEngine implements Engine {
     }
 
     @Override
-    public Set<String> tunables() {
-        return Set.of("dt");
+    public List<Tunable<?>> tunables() {
+        return List.of(DT);
+    }
+
+    @Override
+    public int threadsFor(int requested) {
+        return 1;
     }
 
     @Override
@@ -62,14 +72,7 @@ public final class SteppedEngine implements Engine {
 
     /** The {@code dt} option, or {@link #defaultDt}; bad input unless a finite number > 0. */
     public static double dtOf(Scene scene, RunOptions options) {
-        if (!options.tunables().containsKey("dt")) {
-            return defaultDt(scene, options.until());
-        }
-        double dt = options.tunable("dt", Double.NaN);
-        if (!(dt > 0 && dt < Double.POSITIVE_INFINITY)) {
-            throw new BadInputException("engine option dt: must be a finite number > 0, got " + dt);
-        }
-        return dt;
+        return DT.isGiven(options) ? DT.of(options) : defaultDt(scene, options.until());
     }
 
     /**

@@ -1,5 +1,6 @@
 package carom.engines.stepped;
 
+import carom.core.engine.Counter;
 import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
@@ -109,7 +110,7 @@ final class SteppedRun {
         Pressure pressure = VirialAccumulator.pressureOf(virial, scene, d, energyStart, energyEnd);
         return new RunResult("stepped", false, d, until, pairCollisions, wallCollisions, pairCollisions + wallCollisions,
                 energyStart, energyEnd, momentumStart, Observables.momentum(d), pressure, 0, seconds,
-                Map.of("steps", steps, SteppedEngine.ESCAPES, escapes,
+                Map.of(Counter.STEPS.key, steps, SteppedEngine.ESCAPES, escapes,
                         SteppedEngine.DEEPEST_OVERLAP_PPB, SteppedEngine.overlapPpb(deepestOverlap)));
     }
 

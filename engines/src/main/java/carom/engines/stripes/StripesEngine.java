@@ -1,10 +1,12 @@
 package carom.engines.stripes;
 
+import carom.engines.cells.StepGridTunables;
+import carom.core.engine.Tunable;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
-import java.util.Set;
+import java.util.List;
 
 /**
  * The thesis's non-actor parallel model (Schrock 2016, section 3.8): per step, potentials found in
@@ -35,8 +37,8 @@ public final class StripesEngine implements Engine {
     }
 
     @Override
-    public Set<String> tunables() {
-        return Set.of("cellFactor", "stepFactor");
+    public List<Tunable<?>> tunables() {
+        return List.of(StepGridTunables.CELL_FACTOR, StepGridTunables.STEP_FACTOR);
     }
 
     @Override

@@ -1,9 +1,11 @@
 package carom.engines.stripes;
 
+import carom.core.engine.Counter;
+import carom.engines.cells.StepGridTunables;
 import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
-import carom.core.observe.jfr.TimeStepEvent;
+import carom.core.observe.jfr.EngineEvents;
 import carom.engines.cells.CellStepWork;
 import carom.engines.cells.Worker;
 import carom.core.scene.Scene;
@@ -37,8 +39,8 @@ final class StripesRun {
     private final List<Worker> workers = new ArrayList<>();
 
     StripesRun(Scene scene, RunOptions options) {
-        this.work = new CellStepWork(scene, options.until(), options.tunable("cellFactor", 2.0),
-                options.tunable("stepFactor", 1.0));
+        this.work = new CellStepWork(scene, options.until(), StepGridTunables.CELL_FACTOR.of(options),
+                StepGridTunables.STEP_FACTOR.of(options));
         this.threads = Math.max(1, options.threads());
         this.progress = options.progress();
         int rows = work.grid.rows;
@@ -74,7 +76,7 @@ final class StripesRun {
             double epoch = 0;
             while (epoch < until) {
                 double remaining = until - epoch;
-                TimeStepEvent stepEvent = TimeStepEvent.start();
+                Object stepEvent = EngineEvents.stepStarted();
                 long stepCollisions = 0;
                 double length = work.beginStep(epoch, remaining);
                 steps++;
@@ -98,7 +100,7 @@ final class StripesRun {
                     stepCollisions += processed; // the round's events, each one collision
                 } while (processed > 0 || anyEventLeft());
                 work.endStep();
-                stepEvent.finish("stripes", steps, epoch, epoch + length, stepCollisions);
+                EngineEvents.stepFinished(stepEvent, "stripes", steps, epoch, epoch + length, stepCollisions);
                 epoch = length >= remaining ? until : epoch + length;
                 progress.simulatedTime(epoch);
             }
@@ -107,7 +109,7 @@ final class StripesRun {
             awaitQuietly(pool);
         }
         double seconds = (System.nanoTime() - started) * 1e-9;
-        return work.result("stripes", workers, seconds, Map.of("steps", steps, "rounds", rounds));
+        return work.result("stripes", workers, seconds, Map.of(Counter.STEPS.key, steps, Counter.ROUNDS.key, rounds));
     }
 
     /** No worker may outlive the run, also after a failure inside a task. */

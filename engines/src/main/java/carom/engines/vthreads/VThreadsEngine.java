@@ -1,5 +1,7 @@
 package carom.engines.vthreads;
 
+import java.util.List;
+import carom.core.engine.Tunable;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
@@ -35,7 +37,7 @@ public final class VThreadsEngine implements Engine {
     }
 
     @Override
-    public Set<String> tunables() {
+    public List<Tunable<?>> tunables() {
         return ActorRun.TUNABLES;
     }
 

@@ -1,5 +1,6 @@
 package carom.engines.vthreads;
 
+import carom.core.engine.Counter;
 import carom.core.engine.RunOptions;
 import carom.core.scene.Scene;
 import carom.engines.actors.ActorRun;
@@ -103,6 +104,6 @@ final class VThreadsRun extends ActorRun {
 
     @Override
     protected Map<String, Long> engineCounters() {
-        return Map.of("carrierThreads", (long) carriers);
+        return Map.of(Counter.CARRIER_THREADS.key, (long) carriers);
     }
 }

@@ -59,7 +59,8 @@ public abstract class ActorEngineContract {
     @Test
     void isRelaxedAndListsItsOptions() {
         assertThat(engine().exact()).isFalse();
-        assertThat(engine().tunables()).contains("cellsPerActor", "cellFactor", "stepFactor", "stallSeconds", "relayMinimums");
+        assertThat(engine().tunables()).extracting(carom.core.engine.Tunable::name)
+                .contains("cellsPerActor", "cellFactor", "stepFactor", "stallSeconds", "relayMinimums");
     }
 
     /** The foundation's small random scenes: few discs, few cells, so relaxed order cannot matter. */
@@ -129,7 +130,7 @@ public abstract class ActorEngineContract {
     void sixDiscChainCountsAViolationUnderTheThesisRule() {
         Scene scene = ChainScenes.alongX();
         RunResult r = run(scene, RunOptions.until(scene.until()).withThreads(2)
-                .withTunable("stepFactor", "5").withTunable("relayMinimums", "0"), chainWaitsForHeadOn(scene));
+                .withTunable("stepFactor", "5").withTunable("relayMinimums", "false"), chainWaitsForHeadOn(scene));
         assertThat(r.causalityViolations()).isGreaterThanOrEqualTo(1);
         assertChainInTrueOrderWithExactSteps(scene, 2);
     }
@@ -252,7 +253,8 @@ public abstract class ActorEngineContract {
     }
 
     @ParameterizedTest(name = "{0}={1}")
-    @CsvSource({"cellsPerActor, 0", "cellsPerActor, 1.5", "stallSeconds, 0", "relayMinimums, 2", "cellFactor, 1"})
+    @CsvSource({"cellsPerActor, 0", "cellsPerActor, 1.5", "stallSeconds, 0", "relayMinimums, 2", "relayMinimums, 1",
+        "relayMinimums, ture", "cellFactor, 1"})
     void badOptionsAreBadInput(String key, String value) {
         Scene scene = RandomScenes.small(1);
         assertThatThrownBy(() -> run(scene, 2, key, value))

@@ -1,10 +1,11 @@
 package carom.engines.slabs;
 
+import carom.core.engine.Tunable;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
-import java.util.Set;
+import java.util.List;
 
 /**
  * The slabs engine with a fixed domain count whatever {@code --threads} the caller passes: the shared
@@ -33,7 +34,7 @@ final class FixedDomains implements Engine {
     }
 
     @Override
-    public Set<String> tunables() {
+    public List<Tunable<?>> tunables() {
         return new SlabsEngine().tunables();
     }
 

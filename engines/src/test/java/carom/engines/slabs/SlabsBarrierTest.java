@@ -18,31 +18,40 @@ class SlabsBarrierTest {
 
     @Test
     void largeScenesWithAProcessorPerThreadSpinLong() {
-        assertThat(SpinPolicy.spinsOf(TWO_THREADS, SpinPolicy.LONG_SPIN_DISCS, 2)).isEqualTo(SpinPolicy.SPINS_LONG);
+        assertThat(SpinPolicy.spinsOf(TWO_THREADS, SpinPolicy.LONG_SPIN_DISCS, 2, 0.1)).isEqualTo(SpinPolicy.SPINS_LONG);
     }
 
     @Test
     void smallScenesSpinShortSoThatTheJitKeepsACore() {
-        assertThat(SpinPolicy.spinsOf(TWO_THREADS, SpinPolicy.LONG_SPIN_DISCS - 1, 2)).isEqualTo(SpinPolicy.SPINS_SHORT);
+        assertThat(SpinPolicy.spinsOf(TWO_THREADS, SpinPolicy.LONG_SPIN_DISCS - 1, 2, 0)).isEqualTo(SpinPolicy.SPINS_SHORT);
     }
 
     @Test
     void moreThreadsThanProcessorsSpinShortEvenOnLargeScenes() {
-        assertThat(SpinPolicy.spinsOf(TWO_THREADS.withThreads(4), 2_000_000, 2)).isEqualTo(SpinPolicy.SPINS_SHORT);
+        assertThat(SpinPolicy.spinsOf(TWO_THREADS.withThreads(4), 2_000_000, 2, 0)).isEqualTo(SpinPolicy.SPINS_SHORT);
+    }
+
+    @Test
+    void aLoadedMachineParksSoonEvenOnLargeScenes() {
+        // Another process keeps one of two cores busy: a spinning slab would fight it for the core.
+        assertThat(SpinPolicy.spinsOf(TWO_THREADS, 2_000_000, 2, 1.2)).isEqualTo(SpinPolicy.SPINS_SHORT);
+        assertThat(SpinPolicy.spinsOf(TWO_THREADS, 2_000_000, 4, 1.8)).isEqualTo(SpinPolicy.SPINS_LONG);
+        assertThat(SpinPolicy.spinsOf(TWO_THREADS, 2_000_000, 2, -1)).as("no load average reported")
+                .isEqualTo(SpinPolicy.SPINS_LONG);
     }
 
     @Test
     void theTunableOverridesTheDefault() {
-        assertThat(SpinPolicy.spinsOf(TWO_THREADS.withTunable("spins", "0"), 2_000_000, 2)).isZero();
-        assertThat(SpinPolicy.spinsOf(TWO_THREADS.withTunable("spins", "12345"), 10, 2)).isEqualTo(12345);
+        assertThat(SpinPolicy.spinsOf(TWO_THREADS.withTunable("spins", "0"), 2_000_000, 2, 0)).isZero();
+        assertThat(SpinPolicy.spinsOf(TWO_THREADS.withTunable("spins", "12345"), 10, 2, 0)).isEqualTo(12345);
     }
 
     @ParameterizedTest(name = "spins={0}")
     @ValueSource(strings = {"-1", "1.5", "NaN", "Infinity", "2147483648", "abc"})
     void aSpinCountThatIsNotAWholeNumberInRangeIsBadInput(String value) {
-        assertThatThrownBy(() -> SpinPolicy.spinsOf(TWO_THREADS.withTunable("spins", value), 10, 2))
+        assertThatThrownBy(() -> SpinPolicy.spinsOf(TWO_THREADS.withTunable("spins", value), 10, 2, 0))
                 .isInstanceOf(BadInputException.class)
-                .hasMessageStartingWith("engine option spins: ");
+                .hasMessageStartingWith("--option spins: ");
     }
 
     @Test

@@ -1,5 +1,7 @@
 package carom.lab.bench;
 
+import carom.engines.cells.StepGridTunables;
+import carom.engines.actors.ActorRun;
 import carom.core.BadInputException;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
@@ -20,8 +22,6 @@ import carom.lab.run.Carriers;
 record EngineSetup(Engine engine, RunOptions options) {
     /** {@code cellsPerActor} value meaning one block of whole rows per thread: cells / threads. */
     static final String PER_THREAD = "perThread";
-    /** The actor engines' default cell side over the largest diameter (ActorRun's fallback). */
-    private static final double DEFAULT_CELL_FACTOR = 2.0;
 
     /**
      * @param cellsPerActor "" for the engine's default, a whole number, or {@link #PER_THREAD};
@@ -32,7 +32,7 @@ record EngineSetup(Engine engine, RunOptions options) {
     static EngineSetup of(String engineName, Scene scene, int threads, String cellsPerActor, String tunables) {
         Engine engine = EngineCatalog.byName(engineName);
         RunOptions options = Tunables.apply(engine, RunOptions.until(scene.until()).withThreads(threads), tunables);
-        if (!cellsPerActor.isBlank() && engine.tunables().contains("cellsPerActor")) {
+        if (!cellsPerActor.isBlank() && carom.core.engine.Tunables.declares(engine.tunables(), ActorRun.CELLS_PER_ACTOR.name())) {
             if (options.tunables().containsKey("cellsPerActor")) {
                 throw new BadInputException("cellsPerActor given twice: as the parameter and in tunables");
             }
@@ -53,8 +53,7 @@ record EngineSetup(Engine engine, RunOptions options) {
      * into blocks of whole rows once a block reaches a row.
      */
     static int cellsPerThread(Scene scene, RunOptions options, int threads) {
-        StepFrame frame = new StepFrame(scene, scene.until(), options.tunable("cellFactor", DEFAULT_CELL_FACTOR),
-                options.tunable("stepFactor", 1.0));
+        StepFrame frame = StepGridTunables.frame(scene, options);
         return Math.ceilDiv(frame.grid.cellCount(), Math.max(1, threads));
     }
 

@@ -103,7 +103,7 @@ public final class GasBench implements Callable<Integer> {
             }
         }
         Stats s = Stats.of(rates);
-        Long bytes = last.counters().get("bytes");
+        Long bytes = last.counters().get(carom.core.engine.Counter.BYTES.key);
         String perDiscBytes = bytes == null ? "n/a" : String.format(Locale.ROOT, "%.1f", (double) bytes / n);
         out.printf(Locale.ROOT, "%s,%d,%s,%.0f,%.0f,%.3f,%s,%d%n", engine.name(), n, phi, s.mean(), repeats > 1 ? s.sd() : 0,
                 (double) last.events() / last.collisions(), perDiscBytes, last.collisions());

@@ -3,7 +3,6 @@ package carom.lab.bench;
 import carom.core.BadInputException;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
-import java.util.TreeSet;
 
 /** Parses a benchmark's {@code key=value;key=value} engine tunables parameter. */
 final class Tunables {
@@ -25,14 +24,9 @@ final class Tunables {
             if (eq < 0) {
                 throw new BadInputException("tunable without '=': " + pair);
             }
-            String key = pair.substring(0, eq).trim();
-            if (!engine.tunables().contains(key)) {
-                String known = engine.tunables().isEmpty() ? "none" : String.join(", ", new TreeSet<>(engine.tunables()));
-                throw new BadInputException("tunable " + key + ": engine " + engine.name()
-                        + " has no such option (known: " + known + ")");
-            }
-            result = result.withTunable(key, pair.substring(eq + 1).trim());
+            result = result.withTunable(pair.substring(0, eq).trim(), pair.substring(eq + 1).trim());
         }
+        carom.core.engine.Tunables.check(engine.name(), engine.tunables(), result.tunables());
         return result;
     }
 }

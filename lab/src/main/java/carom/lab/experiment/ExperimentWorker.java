@@ -61,7 +61,7 @@ public final class ExperimentWorker implements Callable<Integer> {
                 record = skipped(plan, run, doesNotFit.get(run.tunables()));
             } else {
                 try {
-                    record = TrialRecord.measured(plan.engine(), SCENE, run.discs(), run.seed(), run.trial(), run.tunables(),
+                    record = TrialRecord.measured(engine, SCENE, run.discs(), run.seed(), run.trial(), run.tunables(),
                             plan.threads(), runOnce(engine, run, plan.threads()));
                 } catch (Throwable e) {
                     String reason = whyItDoesNotFit(e, run.discs());

@@ -1,5 +1,7 @@
 package carom.lab.experiment;
 
+import carom.engines.actors.ActorRun;
+import carom.core.engine.Tunables;
 import carom.core.engine.Engine;
 import carom.engines.EngineCatalog;
 import java.util.ArrayList;
@@ -64,7 +66,7 @@ record ThesisSettings(List<Integer> sizes, int trials, List<Integer> largeSizes,
     }
 
     static boolean hasActors(Engine engine) {
-        return engine.tunables().contains("cellsPerActor");
+        return Tunables.declares(engine.tunables(), ActorRun.CELLS_PER_ACTOR.name());
     }
 
     /** Engines of Table 4.4: the parallel ones, if it has sizes at all. */

@@ -1,12 +1,13 @@
 package carom.lab.peer;
 
+import java.util.List;
+import carom.core.engine.Tunable;
 import carom.core.BadInputException;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
 import carom.engines.stepped.SteppedEngine;
-import java.util.Set;
 
 /**
  * The library a Java user would reach for, as a peer of carom's engines in the accuracy study: dyn4j
@@ -55,8 +56,13 @@ public final class Dyn4jPeer implements Engine {
     }
 
     @Override
-    public Set<String> tunables() {
-        return Set.of("dt");
+    public List<Tunable<?>> tunables() {
+        return List.of(SteppedEngine.DT);
+    }
+
+    @Override
+    public int threadsFor(int requested) {
+        return 1;
     }
 
     @Override

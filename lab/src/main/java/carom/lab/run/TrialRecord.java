@@ -1,5 +1,7 @@
 package carom.lab.run;
 
+import carom.core.engine.Engine;
+import carom.core.engine.Counter;
 import carom.core.engine.RunResult;
 import java.util.Map;
 import java.util.Objects;
@@ -31,7 +33,7 @@ public record TrialRecord(String engine, String scene, int discs, long seed, int
                           int threadsRequested, int threadsUsed, double wallSeconds, long collisions, long events,
                           double violationsPerMillion, Map<String, Long> counters, Accuracy accuracy, String skipped) {
     /** Counter of the virtual-thread engine: the carriers its scheduler really had. */
-    public static final String CARRIER_THREADS = "carrierThreads";
+    public static final String CARRIER_THREADS = Counter.CARRIER_THREADS.key;
 
     public TrialRecord {
         tunables = Map.copyOf(tunables);
@@ -57,11 +59,11 @@ public record TrialRecord(String engine, String scene, int discs, long seed, int
     }
 
     /** The record of run {@code r} of {@code engine} on {@code discs} discs, which asked for {@code threadsRequested} threads. */
-    public static TrialRecord measured(String engine, String scene, int discs, long seed, int trial, Map<String, String> tunables,
+    public static TrialRecord measured(Engine engine, String scene, int discs, long seed, int trial, Map<String, String> tunables,
                                        int threadsRequested, RunResult r) {
         Map<String, Long> counters = r.counters() == null ? Map.of() : r.counters();
-        return new TrialRecord(engine, scene, discs, seed, trial, tunables, threadsRequested,
-                threadsUsed(counters, threadsRequested), r.wallSeconds(), r.collisions(), r.events(),
+        return new TrialRecord(engine.name(), scene, discs, seed, trial, tunables, threadsRequested,
+                r.threadsUsed(engine.threadsFor(threadsRequested)), r.wallSeconds(), r.collisions(), r.events(),
                 r.violationsPerMillionCollisions(), counters, null, null);
     }
 
@@ -74,20 +76,6 @@ public record TrialRecord(String engine, String scene, int discs, long seed, int
     public TrialRecord withAccuracy(Accuracy a) {
         return new TrialRecord(engine, scene, discs, seed, trial, tunables, threadsRequested, threadsUsed, wallSeconds,
                 collisions, events, violationsPerMillion, counters, a, skipped);
-    }
-
-    /**
-     * The threads the run had as the engine itself reports them: the vthreads carrier count is fixed
-     * per JVM and may differ from the request; akka reports its dispatcher's threads.
-     */
-    private static int threadsUsed(Map<String, Long> counters, int requested) {
-        for (String key : new String[] {CARRIER_THREADS, "dispatcherThreads", "threads"}) {
-            Long v = counters.get(key);
-            if (v != null) {
-                return Math.toIntExact(v);
-            }
-        }
-        return requested;
     }
 
     public boolean measured() {
@@ -104,7 +92,7 @@ public record TrialRecord(String engine, String scene, int discs, long seed, int
 
     /** Messages an actor engine sent, null for engines that send none. */
     public Long messages() {
-        return counters.get("messages");
+        return counters.get(Counter.MESSAGES.key);
     }
 
     /** Messages per collision, null for engines that send none (as {@link RunResult#messagesPerCollision}). */
@@ -115,12 +103,12 @@ public record TrialRecord(String engine, String scene, int discs, long seed, int
 
     /** Actors of an actor engine, else null. */
     public Long actors() {
-        return counters.get("actors");
+        return counters.get(Counter.ACTORS.key);
     }
 
     /** Cells per actor as the actor engine laid them out, else null. */
     public Long cellsPerActor() {
-        return counters.get("cellsPerActor");
+        return counters.get(Counter.CELLS_PER_ACTOR.key);
     }
 
     /** Virtual-thread carriers the run got, -1 for engines without. */

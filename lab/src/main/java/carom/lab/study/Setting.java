@@ -1,5 +1,7 @@
 package carom.lab.study;
 
+import carom.engines.stepped.SteppedEngine;
+import carom.core.engine.Tunables;
 import carom.core.engine.Engine;
 import carom.engines.EngineCatalog;
 import carom.lab.peer.Dyn4jPeer;
@@ -47,7 +49,7 @@ record Setting(String engine, int threads, double dtFactor) {
         List<Setting> settings = new ArrayList<>();
         for (String name : engines) {
             Engine engine = engineNamed(name);
-            if (engine.tunables().contains("dt")) {
+            if (Tunables.declares(engine.tunables(), SteppedEngine.DT.name())) {
                 dtFactors.forEach(f -> settings.add(new Setting(name, 1, f)));
             } else if (SINGLE_THREADED.contains(name)) {
                 settings.add(new Setting(name, 1, Double.NaN));

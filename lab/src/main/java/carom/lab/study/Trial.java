@@ -31,7 +31,7 @@ record Trial(StudyScene studyScene, Setting setting, double until, double shortU
         RunResult atShort = engine.run(shortScene, options(shortUntil));
         for (int i = 0; i < reps; i++) {
             RunResult r = engine.run(full, options(until));
-            TrialRecord record = TrialRecord.measured(setting.engine(), studyScene.key(), studyScene.discs(), studyScene.seed(),
+            TrialRecord record = TrialRecord.measured(engine, studyScene.key(), studyScene.discs(), studyScene.seed(),
                     i + 1, tunables(), setting.threads(), r);
             records.accept(i == 0 ? record.withAccuracy(accuracy(full, r, atShort)) : record);
         }
