@@ -32,7 +32,8 @@ import org.junit.jupiter.api.Test;
  *     slope near 1) at lags of many collision times.</li>
  * <li>|ψ6| of the fluid is small.</li>
  * </ul>
- * About 10 s in all (most of it 160 engine runs of N = 4000). The measured numbers are printed for the record.
+ * 3 to 10 s in all, by the load of the machine (most of it 160 engine runs of N = 4000). The measured numbers
+ * are printed for the record.
  */
 class ObservablesAgainstEnginesTest {
     private static final Engine FAST = EngineCatalog.byName("fast");

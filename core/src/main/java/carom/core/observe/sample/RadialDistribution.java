@@ -36,7 +36,8 @@ public final class RadialDistribution implements SampledObservable {
     private final double rangeInContacts;
     private final int binsPerContact;
     private final NeighbourScan scan = new NeighbourScan();
-    private final PairVisitorImpl binner = new PairVisitorImpl();
+    /** One sample's pair counts per bin (scratch). */
+    private int[] sampleCounts = new int[0];
 
     // Geometry, fixed by the first sample.
     private int discs = -1;
@@ -82,9 +83,9 @@ public final class RadialDistribution implements SampledObservable {
             samples++;
             return;
         }
-        java.util.Arrays.fill(binner.sampleCounts, 0);
-        scan.scan(s, bins * binWidth, binner);
-        int[] c = binner.sampleCounts;
+        java.util.Arrays.fill(sampleCounts, 0);
+        scan.histogram(s, bins * binWidth, 1 / binWidth, sampleCounts);
+        int[] c = sampleCounts;
         for (int k = 0; k < bins; k++) {
             counts[k] += c[k];
             double g = c[k] / idealPairs[k];
@@ -92,20 +93,6 @@ public final class RadialDistribution implements SampledObservable {
             sumG2[k] += g * g;
         }
         samples++;
-    }
-
-    /** Bins the pairs of one sample; its own class so that the scan's call site sees few types. */
-    private final class PairVisitorImpl implements NeighbourScan.PairVisitor {
-        int[] sampleCounts = new int[0];
-        double perWidth;
-
-        @Override
-        public void pair(int i, int j, double dx, double dy, double r2) {
-            int k = (int) (Math.sqrt(r2) * perWidth);
-            if (k < sampleCounts.length) {
-                sampleCounts[k]++;
-            }
-        }
     }
 
     private void setUp(int n, double w, double h, boolean isPeriodic, double contact, double smallestRadius) {
@@ -137,8 +124,7 @@ public final class RadialDistribution implements SampledObservable {
             sumG = new double[bins];
             sumG2 = new double[bins];
         }
-        binner.sampleCounts = new int[bins];
-        binner.perWidth = 1 / binWidth;
+        sampleCounts = new int[bins];
     }
 
     /** F(r): W'H' times the probability that two uniform points of a W' x H' rectangle are closer than r. */

@@ -16,6 +16,7 @@ import java.io.StringWriter;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
 /** g(r): its normalisation against the ideal gas, hard cores, the cell-grid scan against all pairs. */
@@ -95,12 +96,16 @@ class RadialDistributionTest {
         assertThat(g[RadialDistribution.DEFAULT_BINS_PER_CONTACT]).isGreaterThan(1.2);
     }
 
-    /** The cell grid finds exactly the pairs an all-pairs loop finds, in small periodic boxes of 2 x 2 cells too. */
-    @ParameterizedTest(name = "side {0}")
-    @ValueSource(doubles = {37.0, 8.0, 5.0})
-    void cellScanCountsWhatAllPairsCount(double side) {
-        Box box = TestSamples.box(side, side * 1.1, true);
-        int n = 700;
+    /**
+     * The cell grid finds exactly the pairs an all-pairs loop finds, and each bin is normalised as the
+     * class comment says: large boxes, small periodic boxes whose 4 x 4 cells meet a cell at two
+     * offsets, walls, and a long narrow box whose few discs make the grid coarsen to the 3 x 3 path.
+     */
+    @ParameterizedTest(name = "{0} x {1}, periodic {2}, {3} discs")
+    @CsvSource({"37, 40.7, true, 700", "37, 40.7, false, 700", "12.5, 13.75, true, 700", "8, 8.8, true, 700",
+            "5, 5.5, true, 700", "9, 9.9, false, 700", "1000, 10, true, 300"})
+    void cellScanCountsWhatAllPairsCount(double side, double height, boolean periodic, int n) {
+        Box box = TestSamples.box(side, height, periodic);
         Sample s = TestSamples.idealGas(0, box, n, RADIUS, new SplittableRandom(5));
         RadialDistribution gr = new RadialDistribution();
         gr.accept(s);
@@ -111,19 +116,34 @@ class RadialDistributionTest {
             for (int j = i + 1; j < n; j++) {
                 double dx = s.x(j) - s.x(i);
                 double dy = s.y(j) - s.y(i);
-                dx -= box.width() * Math.rint(dx / box.width());
-                dy -= box.height() * Math.rint(dy / box.height());
+                if (periodic) {
+                    dx -= box.width() * Math.rint(dx / box.width());
+                    dy -= box.height() * Math.rint(dy / box.height());
+                }
                 int k = (int) (Math.sqrt(dx * dx + dy * dy) / w);
                 if (k < counts.length) {
                     counts[k]++;
                 }
             }
         }
-        assertThat(g.length).isEqualTo(Math.min(250, (int) Math.floor(0.5 * side / w)));
+        // Centres reach the whole periodic box, or the box less a radius at each wall.
+        double reachW = periodic ? side : side - 2 * RADIUS;
+        double reachH = periodic ? height : height - 2 * RADIUS;
+        assertThat(g.length).isEqualTo(Math.min(250, (int) Math.floor(0.5 * Math.min(reachW, reachH) / w)));
+        double pairs = 0.5 * n * (n - 1.0);
         for (int k = 0; k < g.length; k++) {
-            double ideal = 0.5 * n * (n - 1.0) * Math.PI * ((k + 1) * (k + 1) - k * k) * w * w / box.area();
-            assertThat(g[k]).as("bin %d", k).isCloseTo(counts[k] / ideal, within(1e-12 * (1 + g[k])));
+            double r1 = k * w;
+            double r2 = (k + 1) * w;
+            double ideal = periodic
+                    ? pairs * Math.PI * (r2 * r2 - r1 * r1) / (reachW * reachH)
+                    : pairs * (rectangle(r2, reachW, reachH) - rectangle(r1, reachW, reachH)) / Math.pow(reachW * reachH, 2);
+            assertThat(g[k]).as("bin %d", k).isCloseTo(counts[k] / ideal, within(1e-9 * (1 + g[k])));
         }
+    }
+
+    /** W'H' times the probability that two uniform points of a W' x H' rectangle are closer than r. */
+    private static double rectangle(double r, double w, double h) {
+        return Math.PI * w * h * r * r - 4.0 / 3.0 * (w + h) * Math.pow(r, 3) + Math.pow(r, 4) / 2;
     }
 
     @Test
