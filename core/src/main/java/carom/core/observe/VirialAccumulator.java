@@ -72,7 +72,7 @@ public final class VirialAccumulator {
         double mean = 0;
         double[] z = new double[k];
         for (int b = 0; b < k; b++) {
-            z[b] = 1 + sums[b] / (2 * blockLength * kineticEnergy);
+            z[b] = compressibility(sums[b], blockLength, kineticEnergy);
             mean += z[b];
         }
         mean /= k;
@@ -83,6 +83,14 @@ public final class VirialAccumulator {
         double error = k > 1 ? Math.sqrt(var / (k - 1) / k) : Double.NaN;
         double toPressure = mobileDiscs * kT / area;
         return new Pressure(mean, error, mean * toPressure, error * toPressure, k);
+    }
+
+    /**
+     * Z = PA/(NkT) over an interval: 1 + W / (2 t KE), with W the collision virial sum(J |r|) over the
+     * interval, t its duration and KE = N kT the kinetic energy of the mobile discs (2D).
+     */
+    public static double compressibility(double virialSum, double duration, double kineticEnergy) {
+        return 1 + virialSum / (2 * duration * kineticEnergy);
     }
 
     /**

@@ -1,0 +1,204 @@
+package carom.app.report;
+
+import carom.core.observe.sample.BondOrder;
+import carom.core.observe.sample.MeanSquaredDisplacement;
+import carom.core.observe.sample.PressureSeries;
+import carom.core.observe.sample.RadialDistribution;
+import carom.core.observe.sample.SampledObservable;
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Font;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.knowm.xchart.BitmapEncoder;
+import org.knowm.xchart.XYChart;
+import org.knowm.xchart.XYChartBuilder;
+import org.knowm.xchart.XYSeries;
+import org.knowm.xchart.style.XYStyler;
+import org.knowm.xchart.style.markers.SeriesMarkers;
+
+/**
+ * One PNG plot per sampled observable ({@code KEY.png}, next to {@code KEY.csv}), drawn headless with
+ * XChart: white background, axis titles with carom's units (lengths in the scene's length unit, times in
+ * its time unit, σ the contact distance), log axes for the mean squared displacement.
+ *
+ * <ul>
+ * <li>{@code gr.png}: g(r) against r/σ, with the ideal gas's g = 1 for reference.</li>
+ * <li>{@code msd.png}: MSD against lag on log-log axes, with guides ∝ t² (ballistic) through the first
+ *     point and ∝ t (diffusive) through the last.</li>
+ * <li>{@code psi6.png}: |ψ6| against time, on [0, 1].</li>
+ * <li>{@code pressure.png}: Z of each sample interval at the interval's midpoint, with the mean.</li>
+ * </ul>
+ * An observable without data yet still gets a plot that says so.
+ */
+public final class ObservablePlots {
+    public static final int WIDTH = 900;
+    public static final int HEIGHT = 600;
+    private static final Color DATA = new Color(31, 119, 180);
+    private static final Color GUIDE = new Color(150, 150, 150);
+
+    private ObservablePlots() {
+    }
+
+    /** Writes {@code dir/KEY.png} and returns its path. */
+    public static Path write(SampledObservable observable, Path dir) throws IOException {
+        Path file = dir.resolve(observable.key() + ".png");
+        Files.write(file, png(observable));
+        return file;
+    }
+
+    /** The observable's plot as PNG bytes. */
+    public static byte[] png(SampledObservable observable) throws IOException {
+        XYChart chart = switch (observable) {
+            case RadialDistribution gr -> radialDistribution(gr);
+            case MeanSquaredDisplacement msd -> meanSquaredDisplacement(msd);
+            case BondOrder psi6 -> bondOrder(psi6);
+            case PressureSeries pressure -> pressure(pressure);
+        };
+        return BitmapEncoder.getBitmapBytes(chart, BitmapEncoder.BitmapFormat.PNG);
+    }
+
+    static XYChart radialDistribution(RadialDistribution gr) {
+        double sigma = gr.contactDistance();
+        XYChart chart = chart(Double.isNaN(sigma)
+                        ? "Radial distribution function g(r)"
+                        : String.format("Radial distribution function g(r), σ = %s, %d samples", number(sigma), gr.samples()),
+                "r / σ   (σ = contact distance, in the scene's length unit)", "g(r)");
+        double[] r = gr.r();
+        double[] g = gr.g();
+        double[] x = new double[r.length];
+        for (int k = 0; k < r.length; k++) {
+            x[k] = r[k] / sigma;
+        }
+        if (x.length > 0) {
+            guide(chart, "ideal gas, g = 1", new double[] {0, x[x.length - 1]}, new double[] {1, 1});
+            line(chart, "g(r)", x, g, false);
+        }
+        return finish(chart);
+    }
+
+    static XYChart meanSquaredDisplacement(MeanSquaredDisplacement msd) {
+        XYChart chart = chart("Mean squared displacement",
+                "lag t (scene time unit)", "MSD (scene length unit²)");
+        chart.getStyler().setXAxisLogarithmic(true);
+        chart.getStyler().setYAxisLogarithmic(true);
+        chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideNW); // data rise to the right
+        List<double[]> points = new ArrayList<>();
+        double[] lags = msd.lags();
+        double[] values = msd.values();
+        for (int k = 0; k < lags.length; k++) {
+            if (lags[k] > 0 && values[k] > 0 && Double.isFinite(values[k])) {
+                points.add(new double[] {lags[k], values[k]});
+            }
+        }
+        if (points.size() >= 2) {
+            double[] first = points.get(0);
+            double[] last = points.get(points.size() - 1);
+            double span = Math.min(last[0], first[0] * 10);
+            guide(chart, "∝ t² (ballistic)", new double[] {first[0], span},
+                    new double[] {first[1], first[1] * (span / first[0]) * (span / first[0])});
+            double from = Math.max(first[0], last[0] / 10);
+            guide(chart, "∝ t (diffusive)", new double[] {from, last[0]}, new double[] {last[1] * from / last[0], last[1]});
+        }
+        if (!points.isEmpty()) {
+            line(chart, "MSD", column(points, 0), column(points, 1), true);
+        }
+        return finish(chart);
+    }
+
+    static XYChart bondOrder(BondOrder psi6) {
+        XYChart chart = chart("Bond-orientational order |ψ6| (neighbours within 1.4 contact distances)",
+                "time t (scene time unit)", "|ψ6|");
+        chart.getStyler().setYAxisMin(0.0);
+        chart.getStyler().setYAxisMax(1.0);
+        double[] t = psi6.times();
+        if (t.length > 0) {
+            line(chart, "|ψ6|", t, psi6.values(), t.length <= 60);
+        }
+        return finish(chart);
+    }
+
+    static XYChart pressure(PressureSeries pressure) {
+        double[] t0 = pressure.intervalStarts();
+        double[] t1 = pressure.intervalEnds();
+        double[] z = pressure.compressibilities();
+        List<double[]> points = new ArrayList<>();
+        double sum = 0;
+        for (int k = 0; k < z.length; k++) {
+            if (Double.isFinite(z[k])) {
+                points.add(new double[] {0.5 * (t0[k] + t1[k]), z[k]});
+                sum += z[k];
+            }
+        }
+        String title = points.isEmpty() ? "Compressibility Z = PA/(NkT) per sample interval"
+                : String.format("Compressibility Z = PA/(NkT) per sample interval, mean %s", number(sum / points.size()));
+        XYChart chart = chart(title, "time t, middle of each interval (scene time unit)", "Z");
+        if (!points.isEmpty()) {
+            double[] x = column(points, 0);
+            double mean = sum / points.size();
+            guide(chart, "mean", new double[] {t0[0], t1[t1.length - 1]}, new double[] {mean, mean});
+            line(chart, "Z", x, column(points, 1), points.size() <= 60);
+        }
+        return finish(chart);
+    }
+
+    private static XYChart chart(String title, String xTitle, String yTitle) {
+        if (System.getProperty("java.awt.headless") == null) {
+            System.setProperty("java.awt.headless", "true"); // a server has no display, and none is needed
+        }
+        XYChart chart = new XYChartBuilder().width(WIDTH).height(HEIGHT).title(title)
+                .xAxisTitle(xTitle).yAxisTitle(yTitle).build();
+        XYStyler s = chart.getStyler();
+        s.setChartBackgroundColor(Color.WHITE);
+        s.setPlotBackgroundColor(Color.WHITE);
+        s.setPlotBorderColor(new Color(120, 120, 120));
+        s.setPlotGridLinesColor(new Color(225, 225, 225));
+        s.setLegendBorderColor(new Color(200, 200, 200));
+        s.setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideNE);
+        s.setChartTitleFont(new Font(Font.SANS_SERIF, Font.BOLD, 17));
+        s.setAxisTitleFont(new Font(Font.SANS_SERIF, Font.PLAIN, 15));
+        s.setAxisTickLabelsFont(new Font(Font.SANS_SERIF, Font.PLAIN, 13));
+        s.setLegendFont(new Font(Font.SANS_SERIF, Font.PLAIN, 13));
+        s.setChartTitleBoxVisible(false);
+        s.setDecimalPattern("#,##0.###");
+        return chart;
+    }
+
+    private static void line(XYChart chart, String name, double[] x, double[] y, boolean markers) {
+        XYSeries s = chart.addSeries(name, x, y);
+        s.setLineColor(DATA);
+        s.setMarkerColor(DATA);
+        s.setLineStyle(new BasicStroke(2f));
+        s.setMarker(markers ? SeriesMarkers.CIRCLE : SeriesMarkers.NONE);
+    }
+
+    private static void guide(XYChart chart, String name, double[] x, double[] y) {
+        XYSeries s = chart.addSeries(name, x, y);
+        s.setLineColor(GUIDE);
+        s.setLineStyle(new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {6f, 4f}, 0f));
+        s.setMarker(SeriesMarkers.NONE);
+    }
+
+    /** A plot without data says so; XChart cannot lay out axes without a series, so it gets an invisible point. */
+    private static XYChart finish(XYChart chart) {
+        if (chart.getSeriesMap().isEmpty()) {
+            chart.setTitle(chart.getTitle() + " (no samples yet)");
+            boolean log = chart.getStyler().isXAxisLogarithmic();
+            XYSeries s = chart.addSeries(" ", new double[] {1}, new double[] {log ? 1 : 0});
+            s.setMarker(SeriesMarkers.NONE);
+            chart.getStyler().setLegendVisible(false);
+        }
+        return chart;
+    }
+
+    private static double[] column(List<double[]> points, int c) {
+        return points.stream().mapToDouble(p -> p[c]).toArray();
+    }
+
+    private static String number(double v) {
+        return String.format("%.4g", v);
+    }
+}
