@@ -5,9 +5,11 @@ import carom.core.Quoted;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
+import carom.core.engine.Sampler;
 import carom.core.engine.Tunables;
 import carom.core.observe.Energy;
 import carom.core.observe.jfr.CaromRecording;
+import carom.app.report.Observing;
 import carom.core.scene.Scene;
 import carom.core.scene.SceneReader;
 import carom.engines.EngineCatalog;
@@ -70,8 +72,16 @@ final class SimulateCommand implements Callable<Integer> {
     Path summary;
 
     @Option(names = "--every", paramLabel = "DT",
-            description = "Sample interval for --trajectory: samples at t = 0, DT, 2 DT, ... up to the end time.")
+            description = "Sample interval for --trajectory and --observe: samples at t = 0, DT, 2 DT, ... up to the end time.")
     Double every;
+
+    @Option(names = "--observe", paramLabel = "LIST",
+            description = "Observables computed at every sample, comma-separated: gr, msd, psi6, pressure; needs --every and --report.")
+    String observe;
+
+    @Option(names = "--report", paramLabel = "DIR",
+            description = "Folder (new or empty) for the observables: KEY.csv and KEY.png each; it appears whole or not at all.")
+    Path report;
 
     @Option(names = "--trajectory", paramLabel = "FRAMES.xyz",
             description = "Write every sample as a frame of extended XYZ (OVITO, ASE); needs --every.")
@@ -115,6 +125,7 @@ final class SimulateCommand implements Callable<Integer> {
         if (trajectory != null) {
             TrajectoryXyz.checkNames(scene);
         }
+        Observing observing = observe == null ? null : Observing.of(scene, observe, every);
 
         // The recording covers the run only, not reading the scene; it closes (and its repository goes) in any case.
         try (Recording recording = jfr == null ? null : CaromRecording.create();
@@ -126,8 +137,9 @@ final class SimulateCommand implements Callable<Integer> {
             try (ProgressBar bar = ProgressBar.forRun(err, scene.until());
                  Writer frames = trajectory == null ? null : files.stream(trajectory)) {
                 RunOptions options = new RunOptions(scene.until(), workers, bar, tunables);
-                if (frames != null) {
-                    options = options.withSamples(every, new TrajectoryXyz(scene, frames));
+                Sampler sampler = Observing.both(frames == null ? null : new TrajectoryXyz(scene, frames), observing);
+                if (sampler != null) {
+                    options = options.withSamples(every, sampler);
                 }
                 RunOptions chosen = options;
                 result = aboutScene(() -> engine.run(scene, chosen));
@@ -143,6 +155,9 @@ final class SimulateCommand implements Callable<Integer> {
             if (out == null && summary == null) {
                 ReadableSummary.print(scene.name(), scene.size(), used, result, energy, spec.commandLine().getOut(),
                         stdoutCharset);
+            }
+            if (observing != null) {
+                files.stageFolder(report, observing::writeInto);
             }
             if (out != null) {
                 files.stage(out, w -> FinalStateCsv.write(result.finalState(), w));
@@ -186,9 +201,16 @@ final class SimulateCommand implements Callable<Integer> {
 
     /** --every and what samples need: a positive finite interval, and an engine that can stop at given times. */
     private void checkSampling(Engine engine) {
+        if ((observe == null) != (report == null)) {
+            throw new BadInputException(observe == null ? "--report needs --observe LIST (what to put in it)"
+                    : "--observe needs --report DIR (where its tables and plots go)");
+        }
         if (every == null) {
             if (trajectory != null) {
                 throw new BadInputException("--trajectory needs --every DT (the time between frames)");
+            }
+            if (observe != null) {
+                throw new BadInputException("--observe needs --every DT (the time between samples)");
             }
             return;
         }
@@ -208,6 +230,13 @@ final class SimulateCommand implements Callable<Integer> {
         checkOutput(summary, "--summary", named);
         checkOutput(jfr, "--jfr", named);
         checkOutput(trajectory, "--trajectory", named);
+        if (report != null) {
+            String earlier = named.putIfAbsent(report.toAbsolutePath().normalize(), "--report");
+            if (earlier != null) {
+                throw new BadInputException(earlier + " and --report name the same path " + Quoted.fileName(report.toString()));
+            }
+            AtomicOutput.checkFolderWritable(report, "--report");
+        }
     }
 
     /** {@code file} must be writable and not named by another output option already in {@code named}. */
