@@ -2,7 +2,7 @@ package carom.app;
 
 import carom.core.Quoted;
 import carom.core.engine.RunResult;
-import carom.core.observe.Energy;
+import carom.core.engine.Energy;
 import carom.core.observe.Pressure;
 import java.io.PrintWriter;
 import java.nio.charset.Charset;

@@ -7,7 +7,7 @@ import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.engine.Sampler;
 import carom.core.engine.Tunables;
-import carom.core.observe.Energy;
+import carom.core.engine.Energy;
 import carom.core.observe.jfr.CaromRecording;
 import carom.app.report.Observing;
 import carom.core.scene.Scene;

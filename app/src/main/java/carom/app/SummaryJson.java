@@ -1,7 +1,7 @@
 package carom.app;
 
 import carom.core.engine.RunResult;
-import carom.core.observe.Energy;
+import carom.core.engine.Energy;
 import carom.core.observe.Pressure;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;

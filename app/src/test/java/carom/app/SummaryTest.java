@@ -3,7 +3,7 @@ package carom.app;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import carom.core.engine.RunResult;
-import carom.core.observe.Energy;
+import carom.core.engine.Energy;
 import carom.core.observe.Pressure;
 import carom.core.state.Discs;
 import com.fasterxml.jackson.databind.JsonNode;

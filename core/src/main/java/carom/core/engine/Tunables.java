@@ -8,6 +8,10 @@ import java.util.stream.Collectors;
 
 /** Checks a run's {@code --option} settings against what an engine declares, before the run starts. */
 public final class Tunables {
+    /** The test-mode setting that turns on {@link carom.core.observe.EnergyAudit}, for every exact engine that offers it. */
+    public static final Tunable.Flag AUDIT_ENERGY = new Tunable.Flag("auditEnergy", false,
+            "test mode: check after every event (slabs: at every barrier) that the energy did not grow; O(N) each");
+
     private Tunables() {
     }
 

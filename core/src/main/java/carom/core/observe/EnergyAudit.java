@@ -9,9 +9,6 @@ import carom.core.state.Discs;
  * for small scenes in tests ({@code auditEnergy=true} engine option).
  */
 public final class EnergyAudit {
-    /** The test-mode setting that turns the audit on, for every exact engine that offers it. */
-    public static final carom.core.engine.Tunable.Flag AUDIT_ENERGY = new carom.core.engine.Tunable.Flag("auditEnergy",
-            false, "test mode: check after every event (slabs: at every barrier) that the energy did not grow; O(N) each");
 
     private static final double TOLERANCE = 1e-9;
     private double previous = Double.NaN;

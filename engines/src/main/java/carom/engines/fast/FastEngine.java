@@ -1,7 +1,7 @@
 package carom.engines.fast;
 
+import carom.core.engine.Tunables;
 import carom.engines.kernel.KernelTunables;
-import carom.core.observe.EnergyAudit;
 import carom.core.engine.Tunable;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
@@ -41,7 +41,7 @@ public final class FastEngine implements Engine {
 
     @Override
     public List<Tunable<?>> tunables() {
-        return List.of(KernelTunables.CELL_FACTOR, EnergyAudit.AUDIT_ENERGY);
+        return List.of(KernelTunables.CELL_FACTOR, Tunables.AUDIT_ENERGY);
     }
 
     @Override

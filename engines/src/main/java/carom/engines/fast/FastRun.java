@@ -1,5 +1,6 @@
 package carom.engines.fast;
 
+import carom.core.engine.Tunables;
 import carom.core.engine.Counter;
 import carom.engines.kernel.KernelTunables;
 import static carom.engines.kernel.DiscTable.HIT;
@@ -81,7 +82,7 @@ final class FastRun {
         this.motion = new DiscMotion(table);
         this.p = new CellPredictor(motion);
         this.flight = table.flight;
-        this.audit = EnergyAudit.AUDIT_ENERGY.of(options) ? EnergyAudit.forScene(scene) : null;
+        this.audit = Tunables.AUDIT_ENERGY.of(options) ? EnergyAudit.forScene(scene) : null;
         this.virial = VirialAccumulator.forRun(until);
         this.progress = options.progress();
         this.stallGuard = new StallGuard(scene, table::sceneId);

@@ -1,7 +1,7 @@
 package carom.engines.serial;
 
+import carom.core.engine.Tunables;
 import carom.engines.cells.StepGridTunables;
-import carom.core.observe.EnergyAudit;
 import carom.core.engine.Tunable;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
@@ -35,7 +35,7 @@ public final class SerialEngine implements Engine {
 
     @Override
     public List<Tunable<?>> tunables() {
-        return List.of(StepGridTunables.CELL_FACTOR, EnergyAudit.AUDIT_ENERGY);
+        return List.of(StepGridTunables.CELL_FACTOR, Tunables.AUDIT_ENERGY);
     }
 
     @Override

@@ -1,5 +1,6 @@
 package carom.engines.serial;
 
+import carom.core.engine.Tunables;
 import carom.core.engine.Counter;
 import carom.engines.cells.StepGridTunables;
 import carom.core.engine.ProgressListener;
@@ -86,7 +87,7 @@ final class SerialRun {
         this.walls = boundary instanceof Boundary.Walls w ? w : null;
         this.restitution = physics.restitution;
         this.acceleration = flight.maxAcceleration();
-        this.audit = EnergyAudit.AUDIT_ENERGY.of(options)
+        this.audit = Tunables.AUDIT_ENERGY.of(options)
                 ? EnergyAudit.forScene(scene) : null;
         double cellFactor = StepGridTunables.CELL_FACTOR.of(options);
         this.stepGrid = StepGrid.plan(scene.box(), 2 * d.maxRadius(), cellFactor, n);

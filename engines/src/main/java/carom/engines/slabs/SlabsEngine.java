@@ -1,7 +1,7 @@
 package carom.engines.slabs;
 
+import carom.core.engine.Tunables;
 import carom.engines.kernel.KernelTunables;
-import carom.core.observe.EnergyAudit;
 import carom.core.engine.Tunable;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
@@ -42,7 +42,7 @@ public final class SlabsEngine implements Engine {
 
     @Override
     public List<Tunable<?>> tunables() {
-        return List.of(KernelTunables.CELL_FACTOR, EnergyAudit.AUDIT_ENERGY, SlabsRun.SEQUENTIAL, SpinPolicy.SPINS);
+        return List.of(KernelTunables.CELL_FACTOR, Tunables.AUDIT_ENERGY, SlabsRun.SEQUENTIAL, SpinPolicy.SPINS);
     }
 
     @Override

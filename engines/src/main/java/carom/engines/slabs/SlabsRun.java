@@ -1,5 +1,6 @@
 package carom.engines.slabs;
 
+import carom.core.engine.Tunables;
 import carom.core.engine.Tunable;
 import carom.engines.kernel.KernelTunables;
 import carom.core.engine.ProgressListener;
@@ -86,7 +87,7 @@ final class SlabsRun {
         Discs src = scene.newDiscs();
         this.table = new DiscTable(scene, src, KernelTunables.CELL_FACTOR.of(options));
         this.n = table.n;
-        this.audit = EnergyAudit.AUDIT_ENERGY.of(options) ? EnergyAudit.forScene(scene) : null;
+        this.audit = Tunables.AUDIT_ENERGY.of(options) ? EnergyAudit.forScene(scene) : null;
         this.progress = options.progress();
         this.serialVirial = VirialAccumulator.forRun(until);
         this.serialStall = new StallGuard(scene, table::sceneId);

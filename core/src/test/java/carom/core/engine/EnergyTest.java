@@ -1,9 +1,8 @@
-package carom.core.observe;
+package carom.core.engine;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
-import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
 import carom.core.scene.SceneReader;
 import carom.core.state.Discs;

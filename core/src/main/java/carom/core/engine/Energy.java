@@ -1,6 +1,5 @@
-package carom.core.observe;
+package carom.core.engine;
 
-import carom.core.engine.RunResult;
 import carom.core.scene.Effects;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
