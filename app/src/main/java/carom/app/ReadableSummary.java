@@ -24,8 +24,8 @@ final class ReadableSummary {
     private ReadableSummary() {
     }
 
-    static void print(String sceneName, int particles, int threads, RunResult r, Energy energy, PrintWriter out,
-                      Charset charset) {
+    static void print(String sceneName, int particles, int threads, RunResult r, Energy energy, FinalChecks checks,
+                      PrintWriter out, Charset charset) {
         String plusMinus = charset.newEncoder().canEncode('\u00b1') ? " \u00b1 " : " +/- ";
         // The name comes from the scene file: no control characters reach the terminal.
         line(out, "scene", Quoted.bare(sceneName, NAME_CHARS));
@@ -50,6 +50,11 @@ final class ReadableSummary {
             line(out, "pressure Z", String.format(Locale.ROOT, "%.6g%s%.2g  (P = %.6g%s%.2g, %d blocks)",
                     p.compressibility(), plusMinus, p.compressibilityError(),
                     p.pressure(), plusMinus, p.pressureError(), p.blocks()));
+        }
+        line(out, "deepest overlap", String.format(Locale.ROOT, "%.3g of a contact distance%s", checks.deepestOverlap(),
+                r.exact() ? "" : " (relaxed engines can leave overlaps)"));
+        if (checks.escapes() > 0) {
+            line(out, "discs outside walls", Integer.toString(checks.escapes()));
         }
         line(out, "causality violations", Long.toString(r.causalityViolations()));
         if (!r.exact()) {

@@ -152,8 +152,9 @@ final class SimulateCommand implements Callable<Integer> {
             }
             int used = result.threadsUsed(engine.threadsFor(workers));
             Energy energy = Energy.of(scene, result);
+            FinalChecks checks = FinalChecks.of(scene, result.finalState());
             if (out == null && summary == null) {
-                ReadableSummary.print(scene.name(), scene.size(), used, result, energy, spec.commandLine().getOut(),
+                ReadableSummary.print(scene.name(), scene.size(), used, result, energy, checks, spec.commandLine().getOut(),
                         stdoutCharset);
             }
             if (observing != null) {
@@ -164,7 +165,7 @@ final class SimulateCommand implements Callable<Integer> {
             }
             if (summary != null) {
                 // Staged last, so renamed last: a summary on disk means the files it describes are there too.
-                ObjectNode json = SummaryJson.toJson(scene.name(), scene.size(), used, result, energy);
+                ObjectNode json = SummaryJson.toJson(scene.name(), scene.size(), used, result, energy, checks);
                 files.stage(summary, w -> SummaryJson.write(json, w));
             }
             files.commit();

@@ -26,7 +26,7 @@ final class SummaryJson {
     private SummaryJson() {
     }
 
-    static ObjectNode toJson(String sceneName, int particles, int threads, RunResult r, Energy total) {
+    static ObjectNode toJson(String sceneName, int particles, int threads, RunResult r, Energy total, FinalChecks checks) {
         ObjectNode root = MAPPER.createObjectNode();
         root.put("scene", sceneName);
         root.put("engine", r.engine());
@@ -54,6 +54,9 @@ final class SummaryJson {
         vector(momentum.putArray("initial"), r.momentumStart());
         vector(momentum.putArray("final"), r.momentumEnd());
 
+        ObjectNode state = root.putObject("finalState");
+        state.put("deepestOverlap", checks.deepestOverlap());
+        state.put("discsOutsideWalls", checks.escapes());
         root.put("causalityViolations", r.causalityViolations());
         Pressure p = r.pressure();
         if (p != null) {

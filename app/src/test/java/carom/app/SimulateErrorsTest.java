@@ -163,7 +163,7 @@ class SimulateErrorsTest {
     void slabsBarrierSpinsMustBeAWholeNumber() {
         Path scene = Scenes.write(dir, "head-on.json", Scenes.headOn());
         assertRejected(simulate(scene, "--engine", "slabs", "--threads", "2", "--option", "spins=-5"),
-                "error: " + scene + ": engine option spins: must be a whole number from 0 to 2^30, got -5",
+                "error: --option spins: must be in [0, 1073741824], got -5",
                 "head-on.json");
     }
 

@@ -17,6 +17,8 @@ import org.junit.jupiter.api.Test;
 
 /** The JSON and readable summaries of a hand-made result. */
 class SummaryTest {
+    private static final FinalChecks NO_OVERLAP = new FinalChecks(0, 0);
+
     /** The energy of {@link #result} without gravity: its kinetic energy. */
     private static final Energy KINETIC_ONLY = new Energy(3.0, 2.7);
 
@@ -29,7 +31,7 @@ class SummaryTest {
     @Test
     void jsonCarriesEveryField() throws IOException {
         StringWriter w = new StringWriter();
-        SummaryJson.write(SummaryJson.toJson("gas", 3, 8, result(new Pressure(1.25, 0.01, 0.4, 0.003, 12)), KINETIC_ONLY), w);
+        SummaryJson.write(SummaryJson.toJson("gas", 3, 8, result(new Pressure(1.25, 0.01, 0.4, 0.003, 12)), KINETIC_ONLY, NO_OVERLAP), w);
         JsonNode s = new ObjectMapper().readTree(w.toString());
 
         assertThat(s.get("engine").asText()).isEqualTo("fast");
@@ -62,7 +64,7 @@ class SummaryTest {
     @Test
     void nonFiniteNumbersBecomeNullSoTheJsonStaysValid() throws IOException {
         StringWriter w = new StringWriter();
-        SummaryJson.write(SummaryJson.toJson("gas", 3, 1, result(new Pressure(1.25, Double.NaN, 0.4, Double.NaN, 1)), KINETIC_ONLY), w);
+        SummaryJson.write(SummaryJson.toJson("gas", 3, 1, result(new Pressure(1.25, Double.NaN, 0.4, Double.NaN, 1)), KINETIC_ONLY, NO_OVERLAP), w);
         JsonNode s = new ObjectMapper().readTree(w.toString());
         assertThat(s.at("/pressure/Zerror").isNull()).isTrue();
         assertThat(s.at("/pressure/Z").asDouble()).isEqualTo(1.25);
@@ -71,7 +73,7 @@ class SummaryTest {
     @Test
     void readableSummaryShowsPressureAndCounters() {
         StringWriter w = new StringWriter();
-        ReadableSummary.print("gas", 3, 8, result(new Pressure(1.25, 0.01, 0.4, 0.003, 12)), KINETIC_ONLY, new PrintWriter(w),
+        ReadableSummary.print("gas", 3, 8, result(new Pressure(1.25, 0.01, 0.4, 0.003, 12)), KINETIC_ONLY, NO_OVERLAP, new PrintWriter(w),
                 StandardCharsets.UTF_8);
         assertThat(w.toString()).containsPattern("(?m)^engine +fast \\(relaxed\\)$")
                 .containsPattern("(?m)^pressure Z +1\\.25000 \u00b1 0\\.010 ")
@@ -85,7 +87,7 @@ class SummaryTest {
     @Test
     void readableSummaryAvoidsCharactersTheConsoleCannotShow() {
         StringWriter w = new StringWriter();
-        ReadableSummary.print("gas", 3, 8, result(new Pressure(1.25, 0.01, 0.4, 0.003, 12)), KINETIC_ONLY, new PrintWriter(w),
+        ReadableSummary.print("gas", 3, 8, result(new Pressure(1.25, 0.01, 0.4, 0.003, 12)), KINETIC_ONLY, NO_OVERLAP, new PrintWriter(w),
                 StandardCharsets.US_ASCII);
         assertThat(w.toString()).contains("1.25000 +/- 0.010").doesNotContain("\u00b1");
     }
@@ -95,7 +97,7 @@ class SummaryTest {
         // Kinetic energy fell from 3 to 2.7 while the total stayed at 10: nothing was lost.
         Energy total = new Energy(10.0, 10.0);
         StringWriter w = new StringWriter();
-        SummaryJson.write(SummaryJson.toJson("pile", 3, 1, result(null), total), w);
+        SummaryJson.write(SummaryJson.toJson("pile", 3, 1, result(null), total, NO_OVERLAP), w);
         JsonNode s = new ObjectMapper().readTree(w.toString());
         assertThat(s.at("/energy/initial").asDouble()).isEqualTo(10.0);
         assertThat(s.at("/energy/final").asDouble()).isEqualTo(10.0);
@@ -103,7 +105,7 @@ class SummaryTest {
         assertThat(s.get("energyDrift").asDouble()).isZero();
 
         StringWriter text = new StringWriter();
-        ReadableSummary.print("pile", 3, 1, result(null), total, new PrintWriter(text), StandardCharsets.UTF_8);
+        ReadableSummary.print("pile", 3, 1, result(null), total, NO_OVERLAP, new PrintWriter(text), StandardCharsets.UTF_8);
         assertThat(text.toString()).containsPattern("(?m)^energy initial +10\\.0  \\(kinetic 3\\.0\\)$")
                 .containsPattern("(?m)^energy final +10\\.0  \\(kinetic 2\\.7\\)$")
                 .containsPattern("(?m)^energy drift +0\\.000e\\+00$");
@@ -113,20 +115,48 @@ class SummaryTest {
     void anUndefinedEnergyIsNullAndSaysWhy() throws IOException {
         Energy undefined = new Energy(Double.NaN, Double.NaN);
         StringWriter w = new StringWriter();
-        SummaryJson.write(SummaryJson.toJson("falling gas", 3, 1, result(null), undefined), w);
+        SummaryJson.write(SummaryJson.toJson("falling gas", 3, 1, result(null), undefined, NO_OVERLAP), w);
         JsonNode s = new ObjectMapper().readTree(w.toString());
         assertThat(s.at("/energy/initial").isNull()).isTrue();
         assertThat(s.get("energyDrift").isNull()).isTrue();
         StringWriter text = new StringWriter();
-        ReadableSummary.print("falling gas", 3, 1, result(null), undefined, new PrintWriter(text), StandardCharsets.UTF_8);
+        ReadableSummary.print("falling gas", 3, 1, result(null), undefined, NO_OVERLAP, new PrintWriter(text), StandardCharsets.UTF_8);
         assertThat(text.toString()).containsPattern("(?m)^energy drift +undefined \\(gravity in a periodic box\\)$");
     }
 
     @Test
     void aSceneNameCannotWriteControlCharactersToTheTerminal() {
         StringWriter text = new StringWriter();
-        ReadableSummary.print("gas\n\u001b[2J", 3, 1, result(null), KINETIC_ONLY, new PrintWriter(text),
+        ReadableSummary.print("gas\n\u001b[2J", 3, 1, result(null), KINETIC_ONLY, NO_OVERLAP, new PrintWriter(text),
                 StandardCharsets.UTF_8);
         assertThat(text.toString()).contains("gas\\n\\u001b[2J" + System.lineSeparator()).doesNotContain("\u001b");
+    }
+
+    @org.junit.jupiter.api.io.TempDir
+    java.nio.file.Path dir;
+
+    @Test
+    void theSummarySaysHowDeepTheFinalStateOverlaps() throws Exception {
+        java.nio.file.Path scene = dir.resolve("dense.json");
+        java.nio.file.Files.writeString(scene, """
+                { "name": "dense", "box": { "width": 20, "height": 20, "boundary": "periodic" },
+                  "species": [ { "name": "d", "radius": 0.5, "mass": 1 } ],
+                  "generate": [ { "species": "d", "count": 324, "layout": "triangular", "jitter": 0.5,
+                                  "velocity": { "distribution": "maxwell", "temperature": 1 }, "seed": 2 } ],
+                  "until": 1 }""");
+        double[] overlaps = new double[2];
+        String[] engines = {"fast", "stepped"};
+        for (int k = 0; k < 2; k++) {
+            java.nio.file.Path summary = dir.resolve(engines[k] + ".json");
+            String[] args = k == 0 ? new String[] {"simulate", scene.toString(), "--engine", "fast", "--summary", summary.toString()}
+                    : new String[] {"simulate", scene.toString(), "--engine", "stepped", "--option", "dt=0.05", "--summary", summary.toString()};
+            Cli r = Cli.run(args);
+            assertThat(r.status()).as(r.err()).isZero();
+            var json = new com.fasterxml.jackson.databind.ObjectMapper().readTree(summary.toFile());
+            overlaps[k] = json.get("finalState").get("deepestOverlap").asDouble();
+            assertThat(json.get("finalState").get("discsOutsideWalls").asInt()).isZero();
+        }
+        assertThat(overlaps[0]).as("exact: rounding only").isLessThan(1e-12);
+        assertThat(overlaps[1]).as("stepped at a coarse dt overlaps").isGreaterThan(1e-4);
     }
 }

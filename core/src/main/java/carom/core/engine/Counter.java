@@ -56,7 +56,7 @@ public enum Counter {
     FINAL_NANOS("finalNanos", "wall nanoseconds writing the final state"),
     WINDOW_CPU_NANOS("windowCpuNanos", "CPU nanoseconds of all slabs' threads inside windows"),
     SERIAL_CPU_NANOS("serialCpuNanos", "CPU nanoseconds of the serial phases"),
-    CRITICAL_CPU_NANOS("criticalCpuNanos", "CPU nanoseconds on the critical path (slowest slab per window plus serial)");
+    CRITICAL_CPU_NANOS("criticalCpuNanos", "CPU nanoseconds of the slowest slab in each window, summed over windows");
 
     /** The key in the counters map and in the summary's JSON. */
     public final String key;

@@ -1,6 +1,6 @@
 package carom.lab.study;
 
-import carom.core.grid.NeighbourPairs;
+import carom.core.observe.StateChecks;
 import carom.core.physics.Boundary;
 import carom.core.scene.Box;
 import carom.core.state.Discs;
@@ -18,46 +18,14 @@ final class StateErrors {
     record Deviation(double rms, double max) {
     }
 
-    /**
-     * The deepest overlap as a fraction of the contact distance: Ri + Rj for a pair, R for a wall (a disc
-     * whose centre is closer than its radius to a wall); 0 if nothing overlaps. A disc whose centre left
-     * the box counts as a full wall overlap of 1 or more.
-     */
+    /** {@link StateChecks#deepestOverlap}: the summary's measure, so the study and a run say the same. */
     static double deepestOverlap(Discs d, Box box) {
-        double[] deepest = {box.periodic() ? 0 : deepestWallOverlap(d, box)};
-        NeighbourPairs.forEach(d, box.width(), box.height(), box.periodic(), (i, j, dx, dy) -> {
-            double sigma = d.radius[i] + d.radius[j];
-            deepest[0] = Math.max(deepest[0], (sigma - Math.sqrt(dx * dx + dy * dy)) / sigma);
-        });
-        return deepest[0];
+        return StateChecks.deepestOverlap(d, box);
     }
 
-    private static double deepestWallOverlap(Discs d, Box box) {
-        double deepest = 0;
-        for (int i = 0; i < d.n; i++) {
-            double r = d.radius[i];
-            double nearest = Math.min(Math.min(d.x[i], box.width() - d.x[i]), Math.min(d.y[i], box.height() - d.y[i]));
-            deepest = Math.max(deepest, (r - nearest) / r);
-        }
-        return deepest;
-    }
-
-    /**
-     * Discs whose centre lies outside a walled box (or is not a number): discs that tunnelled through a
-     * wall. A periodic box wraps every disc back in, so nothing escapes it.
-     */
+    /** {@link StateChecks#escapes}. */
     static int escapes(Discs d, Box box) {
-        if (box.periodic()) {
-            return 0;
-        }
-        int out = 0;
-        for (int i = 0; i < d.n; i++) {
-            boolean inside = d.x[i] >= 0 && d.x[i] <= box.width() && d.y[i] >= 0 && d.y[i] <= box.height();
-            if (!inside) {
-                out++;
-            }
-        }
-        return out;
+        return StateChecks.escapes(d, box);
     }
 
     /** RMS and largest distance between each disc and the same disc in {@code reference}. */
