@@ -68,6 +68,12 @@ public final class ProgressBar implements ProgressListener, AutoCloseable {
         time = t;
     }
 
+    /** A time bar's note after the time and the time left (for simulate: the collisions expected). */
+    public ProgressBar withStatus(String note) {
+        status = note;
+        return this;
+    }
+
     /** For a counting bar: {@code done} units are finished, and {@code now} is what runs next. */
     public void completed(long done, String now) {
         status = now;
@@ -76,9 +82,11 @@ public final class ProgressBar implements ProgressListener, AutoCloseable {
 
     private void paint() {
         try {
+            long started = System.nanoTime();
             Thread.sleep(DELAY_MILLIS);
             while (!Thread.currentThread().isInterrupted()) {
-                draw(unit == null ? render(time, until) : renderCount((long) time, (long) until, unit, status));
+                double elapsed = (System.nanoTime() - started) * 1e-9;
+                draw(unit == null ? render(time, until, elapsed, status) : renderCount((long) time, (long) until, unit, status));
                 Thread.sleep(PERIOD_MILLIS);
             }
         } catch (InterruptedException e) {
@@ -98,6 +106,29 @@ public final class ProgressBar implements ProgressListener, AutoCloseable {
 
     static String render(double t, double until) {
         return bar(t, until) + "t=" + compact(t) + "/" + compact(until);
+    }
+
+    /** {@link #render(double, double)}, the time left at the pace so far, and {@code note}. */
+    static String render(double t, double until, double elapsedSeconds, String note) {
+        String s = render(t, until);
+        if (t > 0 && t < until) {
+            s += "  ~" + duration(elapsedSeconds * (until - t) / t) + " left";
+        }
+        return note.isEmpty() ? s : s + "  " + note;
+    }
+
+    /** Seconds as a person reads them: 42 s, 7 min, 3.5 h, 12 days. */
+    static String duration(double seconds) {
+        if (seconds < 90) {
+            return Math.round(seconds) + " s";
+        }
+        if (seconds < 90 * 60) {
+            return Math.round(seconds / 60) + " min";
+        }
+        if (seconds < 48 * 3600) {
+            return String.format(java.util.Locale.ROOT, "%.1f h", seconds / 3600);
+        }
+        return Math.round(seconds / 86400) + " days";
     }
 
     static String renderCount(long done, long total, String unit, String status) {

@@ -7,6 +7,7 @@ import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.engine.Sampler;
 import carom.core.engine.Tunables;
+import carom.core.engine.WorkEstimate;
 import carom.core.engine.Energy;
 import carom.core.observe.jfr.CaromRecording;
 import carom.app.report.Observing;
@@ -46,6 +47,9 @@ import picocli.CommandLine.Spec;
         defaultValueProvider = EnginesCommand.DefaultEngine.class,
         description = "Simulate a scene to its end time. Without --out or --summary, print a readable summary.")
 final class SimulateCommand implements Callable<Integer> {
+    /** Collisions above which a run is refused without --allow-long: a day at a million a second is 8.6e10. */
+    static final double LONG_RUN_COLLISIONS = 1e11;
+
     @Spec
     CommandSpec spec;
 
@@ -92,6 +96,10 @@ final class SimulateCommand implements Callable<Integer> {
                     + "into this file; read it with 'carom analyze'.")
     Path jfr;
 
+    @Option(names = "--allow-long", description = "Run even when the scene would take more than "
+            + "about 1e11 collisions (days at a million a second), which is otherwise refused as a likely mistake.")
+    boolean allowLong;
+
     @Option(names = "--option", paramLabel = "KEY=VALUE",
             description = "Engine tunable, for example cellFactor=2; may be repeated.")
     Map<String, String> tunables = new LinkedHashMap<>();
@@ -125,6 +133,12 @@ final class SimulateCommand implements Callable<Integer> {
         if (trajectory != null) {
             TrajectoryXyz.checkNames(scene);
         }
+        double expected = WorkEstimate.collisions(scene, scene.until());
+        if (expected > LONG_RUN_COLLISIONS && !allowLong) {
+            throw new BadInputException(String.format(java.util.Locale.ROOT, "%s: about %.2g collisions to reach t = %s, "
+                    + "days or more at a million a second; shorten until, check the speeds and gravity, or pass --allow-long",
+                    Quoted.fileName(sceneFile), expected, scene.until()));
+        }
         Observing observing = observe == null ? null : Observing.of(scene, observe, every);
 
         // The recording covers the run only, not reading the scene; it closes (and its repository goes) in any case.
@@ -134,7 +148,8 @@ final class SimulateCommand implements Callable<Integer> {
                 recording.start();
             }
             RunResult result;
-            try (ProgressBar bar = ProgressBar.forRun(err, scene.until());
+            try (ProgressBar bar = ProgressBar.forRun(err, scene.until())
+                    .withStatus(String.format(java.util.Locale.ROOT, "about %.2g collisions expected", expected));
                  Writer frames = trajectory == null ? null : files.stream(trajectory)) {
                 RunOptions options = new RunOptions(scene.until(), workers, bar, tunables);
                 Sampler sampler = Observing.both(frames == null ? null : new TrajectoryXyz(scene, frames), observing);
