@@ -27,7 +27,8 @@ public final class EngineCatalog {
      * The engine used when none is named: SPEC asks for the exact serial reference. {@code fast} is
      * exact and single-threaded, passes every test {@code serial} passes (the shared exact-engine
      * contracts: analytic cases, brute-force judge with and without effects, dense scenes) and gives
-     * its final state to rounding, at two to four times its speed; {@code serial}, the thesis's
+     * its final state to rounding, several times faster ({@code lab/notes/single-thread-throughput/});
+     * {@code serial}, the thesis's
      * algorithm made exact, stays the named reference the tests compare against.
      */
     public static Engine defaultEngine() {

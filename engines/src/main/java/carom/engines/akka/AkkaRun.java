@@ -29,9 +29,8 @@ import java.util.concurrent.TimeUnit;
 final class AkkaRun extends ActorRun {
     /**
      * Messages an actor handles before it yields its thread (Akka's dispatcher "throughput"). 5 is
-     * Akka's own default and was kept: at N = 1e5, packing fraction 0.5, 2 threads, with one actor per
-     * thread or 16 cells per actor, none of 1, 20 and 100 measurably beat it; every difference stayed
-     * within the run-to-run noise of the shared 2-core VM (docs/measurements/jmh/README.md).
+     * Akka's own default and was kept: no other value measurably beat it
+     * ({@code lab/notes/jmh-thread-sweep/}).
      */
     static final int DEFAULT_THROUGHPUT = 5;
     static final Tunable.Whole THROUGHPUT = new Tunable.Whole("throughput", DEFAULT_THROUGHPUT, 1, 1_000_000, "messages",

@@ -31,10 +31,8 @@ import java.util.Arrays;
  *
  * <p>Bucket lists are doubly linked (two links per disc besides the time), so removing a disc from a
  * bucket writes its neighbours' links without reading them first. With one link, removal walked the
- * list from its head to the predecessor, a cache miss a step at N = 1e6: 15% of {@code fast}'s time
- * there in a JFR profile, and the back link took it from 0.51 to 0.59 M collisions/s (1.15x in 10
- * paired rounds, {@code docs/measurements/fast-layout/}). Removal from the heap searches it (a slice's
- * few events).
+ * list from its head to the predecessor, a cache miss a step at large N; what the back link bought is
+ * in {@code lab/notes/fast-layout-variants/}. Removal from the heap searches it (a slice's few events).
  */
 public final class CalendarQueue {
     private static final long MAX_SLICE = 1L << 60;

@@ -42,9 +42,8 @@ import java.util.Map;
  *
  * <p>Pressure: the impulse virial J |r| of each collision as {@link PairLaw#collide}
  * returns it, at the overlapped separation. The pushes also do virial work (mu * depth * the pair's
- * separating normal speed) that this leaves out: measured on N 1024, phi 0.5, it would add 0.4% to Z at
- * dt 0.01 and less at smaller dt, against a 3.3% deficit of Z there (with 2.6% fewer collisions than the
- * exact engine's).
+ * separating normal speed) that this leaves out; it is small beside the deficit of Z that dt itself
+ * causes ({@code lab/notes/accuracy-study/} measures Z against the exact engines at every dt).
  *
  * <p>Hot loop: primitive arrays of {@link Discs} and {@link CellLists}; no allocation per step.
  */
