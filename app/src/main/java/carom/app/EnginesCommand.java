@@ -42,7 +42,7 @@ public final class EnginesCommand implements Callable<Integer> {
         for (Engine e : EngineCatalog.all()) {
             // Single spaces, so that scripts can split each line into three fields.
             String settings = e.tunables().isEmpty() ? "" : " (settings: " + String.join(", ",
-                    e.tunables().stream().map(t -> t.name() + "=" + t.defaultText()).toList()) + ")";
+                    e.tunables().stream().map(t -> t.name() + "=" + (t.computedDefault() ? "auto" : t.defaultText())).toList()) + ")";
             out.println(e.name() + " " + (e.exact() ? "exact" : "relaxed") + " " + e.description() + settings);
             if (tunables) {
                 for (Tunable<?> t : e.tunables()) {

@@ -34,6 +34,11 @@ public sealed interface Tunable<T> permits Tunable.Real, Tunable.Whole, Tunable.
     /** The default as {@code carom engines} shows it. */
     String defaultText();
 
+    /** Whether the engine computes the default from the run (then {@link #defaultText()} says how). */
+    default boolean computedDefault() {
+        return false;
+    }
+
     /** Whether the run's options name this setting (else the default holds). */
     default boolean isGiven(RunOptions options) {
         return options.tunables().containsKey(name());
@@ -100,6 +105,11 @@ public sealed interface Tunable<T> permits Tunable.Real, Tunable.Whole, Tunable.
             return autoDefault != null ? "auto (" + autoDefault + ")" : number(fallback);
         }
 
+        @Override
+        public boolean computedDefault() {
+            return autoDefault != null;
+        }
+
         private String rangeText() {
             if (max == Double.MAX_VALUE) {
                 return (openBelow ? "> " : ">= ") + number(min);
@@ -149,6 +159,11 @@ public sealed interface Tunable<T> permits Tunable.Real, Tunable.Whole, Tunable.
         @Override
         public String defaultText() {
             return autoDefault != null ? "auto (" + autoDefault + ")" : Long.toString(fallback);
+        }
+
+        @Override
+        public boolean computedDefault() {
+            return autoDefault != null;
         }
 
         private String rangeText() {
