@@ -24,10 +24,8 @@ public final class WorkEstimate {
         int mobile = 0;
         double mass = 0;
         double twiceKinetic = 0;
-        double discArea = 0;
         double radii = 0;
         for (int i = 0; i < d.n; i++) {
-            discArea += Math.PI * d.radius[i] * d.radius[i];
             radii += d.radius[i];
             if (d.invMass[i] > 0) {
                 double m = 1 / d.invMass[i];
@@ -47,7 +45,7 @@ public final class WorkEstimate {
             speed = scene.box().periodic() ? speed + g * until : Math.sqrt(speed * speed + 2 * g * Math.max(w, h));
         }
         double area = w * h;
-        double phi = Math.min(discArea / area, 0.99);
+        double phi = Math.min(scene.packingFraction(), 0.99);
         double chi = Math.min(1 / ((1 - phi) * (1 - phi)), MAX_CONTACT_VALUE);
         double sigma = 2 * radii / d.n;
         double pairRate = d.n / area * sigma * Math.sqrt(2) * speed * chi;

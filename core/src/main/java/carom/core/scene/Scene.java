@@ -51,6 +51,15 @@ public final class Scene {
         return initial.n;
     }
 
+    /** The share of the box the discs cover: the sum of their areas over the box's area. */
+    public double packingFraction() {
+        double area = 0;
+        for (int i = 0; i < initial.n; i++) {
+            area += Math.PI * initial.radius[i] * initial.radius[i];
+        }
+        return area / box.area();
+    }
+
     public boolean hasFixedDiscs() {
         return species.stream().anyMatch(Species::fixed);
     }

@@ -36,15 +36,6 @@ class ExampleScenesTest {
         return SceneReader.read(examples().resolve(name));
     }
 
-    private static double packingFraction(Scene scene) {
-        Discs d = scene.newDiscs();
-        double area = 0;
-        for (int i = 0; i < d.n; i++) {
-            area += Math.PI * d.radius[i] * d.radius[i];
-        }
-        return area / scene.box().area();
-    }
-
     @ParameterizedTest
     @MethodSource("exampleFiles")
     void everyExampleLoadsIsNamedAfterItsFileAndIsListedInTheReadme(Path file) throws IOException {
@@ -103,7 +94,7 @@ class ExampleScenesTest {
         Scene scene = load("gas.json");
         assertThat(scene.size()).isEqualTo(2500);
         assertThat(scene.box().periodic()).isTrue();
-        assertThat(packingFraction(scene)).isCloseTo(0.5, within(1e-12));
+        assertThat(scene.packingFraction()).isCloseTo(0.5, within(1e-12));
         Discs d = scene.newDiscs();
         double kinetic = 0;
         for (int i = 0; i < d.n; i++) {
@@ -119,7 +110,7 @@ class ExampleScenesTest {
         Scene standard = StandardScenes.thesis(100_000, 42);
         assertThat(scene.size()).isEqualTo(100_000);
         assertThat(scene.box().periodic()).isFalse();
-        assertThat(packingFraction(scene)).isCloseTo(0.04 * Math.PI, within(1e-12));
+        assertThat(scene.packingFraction()).isCloseTo(0.04 * Math.PI, within(1e-12));
         assertThat(scene.newDiscs().maxSpeed()).isLessThanOrEqualTo(Math.sqrt(2));
         assertThat(scene.until()).isEqualTo(StandardScenes.THESIS_UNTIL);
         Discs a = scene.newDiscs();

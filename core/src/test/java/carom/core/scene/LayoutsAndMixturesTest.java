@@ -28,15 +28,6 @@ class LayoutsAndMixturesTest {
                   "until": 1 }""".formatted(side, side, BIDISPERSE_SPECIES, count, layout, seed);
     }
 
-    private static double packingFraction(Scene scene) {
-        Discs d = scene.newDiscs();
-        double area = 0;
-        for (int i = 0; i < d.n; i++) {
-            area += Math.PI * d.radius[i] * d.radius[i];
-        }
-        return area / scene.box().area();
-    }
-
     @ParameterizedTest
     @CsvSource({"random, 400, 0.3, 1", "random, 1000, 0.45, 2", "triangular, 400, 0.6, 3", "lattice, 400, 0.5, 4",
         "triangular, 1000, 0.65, 5"})
@@ -47,7 +38,7 @@ class LayoutsAndMixturesTest {
         assertThat(d.n).isEqualTo(count);
         long small = java.util.stream.IntStream.range(0, d.n).filter(i -> d.species[i] == 0).count();
         assertThat(small).isEqualTo(count / 2);
-        assertThat(packingFraction(scene)).isCloseTo(phi, within(1e-9));
+        assertThat(scene.packingFraction()).isCloseTo(phi, within(1e-9));
         double px = 0;
         double py = 0;
         double kinetic = 0;
