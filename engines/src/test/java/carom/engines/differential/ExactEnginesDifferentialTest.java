@@ -29,8 +29,9 @@ import org.junit.jupiter.params.provider.MethodSource;
  * judge and so against each other. Hard discs amplify any difference, rounding included, at every
  * collision, so each scene is compared at its own horizon before chaos: the last of eight times up to
  * its end at which the judge's own run, nudged by 1e-13 in one coordinate, still agrees with the
- * unnudged one to 1e-10: an amplification below 1,000, so the rounding of each engine's own arithmetic
- * stays well below the 1e-9 compared. A scene the judge stops as stuck (a dissipative disc coming to
+ * unnudged one to 1e-10: an amplification below 1,000. Rounding differs from engine to engine at every
+ * event and in every disc, not once in one coordinate, so the states are compared to 1e-8 (2,000 seeds
+ * showed differences up to 5e-9 at such horizons, always with the same collisions). A scene the judge stops as stuck (a dissipative disc coming to
  * rest without the TC model) must stop every engine the same way. The seed is in each case's name, so a failure
  * reproduces with {@code -Dtest=ExactEnginesDifferentialTest}.
  *
@@ -41,7 +42,7 @@ class ExactEnginesDifferentialTest {
     /** How far the nudged judge may drift before the comparison is left to chaos. */
     private static final double SENSITIVE = 1e-10;
     /** The engines against the judge at a horizon where a 1e-13 nudge moved nothing by 1e-10. */
-    private static final double SAME = 1e-9;
+    private static final double SAME = 1e-8;
 
     private static final List<Engine> ENGINES = List.of(new SerialEngine(), new FastEngine(), new SlabsEngine());
     private static final int[] SLAB_THREADS = {1, 2, 3};
