@@ -5,8 +5,9 @@ import java.io.PrintStream;
 import java.util.Locale;
 
 /**
- * A progress bar on an interactive stderr, {@code [=====     ]  42%  t=4.2/10}, redrawn by a daemon
- * thread from the latest simulated time the engine reported. The engine's side is one volatile write,
+ * A progress bar on an interactive stderr, {@code [=====     ]  42%  t=4.2/10  ~12s left}, redrawn by a
+ * daemon thread from the latest simulated time the engine reported; the time left is the wall time so
+ * far scaled by the fraction still to go. The engine's side is one volatile write,
  * so reporting costs it nothing measurable. Short runs never show a bar: it appears only after
  * {@link #DELAY_MILLIS}, and it is erased when the run ends.
  *
@@ -25,6 +26,7 @@ public final class ProgressBar implements ProgressListener, AutoCloseable {
     private final Thread painter;
     private volatile double time;
     private volatile String status = "";
+    private final long startNanos = System.nanoTime();
     /** Length of what is on screen, to erase it; touched only by the painter until it has stopped. */
     private int drawn;
 
@@ -78,7 +80,8 @@ public final class ProgressBar implements ProgressListener, AutoCloseable {
         try {
             Thread.sleep(DELAY_MILLIS);
             while (!Thread.currentThread().isInterrupted()) {
-                draw(unit == null ? render(time, until) : renderCount((long) time, (long) until, unit, status));
+                String bar = unit == null ? render(time, until) : renderCount((long) time, (long) until, unit, status);
+                draw(bar + timeLeft(time / until, System.nanoTime() - startNanos));
                 Thread.sleep(PERIOD_MILLIS);
             }
         } catch (InterruptedException e) {
@@ -103,6 +106,21 @@ public final class ProgressBar implements ProgressListener, AutoCloseable {
     static String renderCount(long done, long total, String unit, String status) {
         String s = bar(done, total) + done + "/" + total + " " + unit;
         return status.isEmpty() ? s : s + "  " + status;
+    }
+
+    /**
+     * {@code   ~1m 05s left}: the wall time still to go if the rest goes as fast as what is done, or
+     * nothing while too little is done to say (under 1%).
+     */
+    static String timeLeft(double fraction, long elapsedNanos) {
+        if (!(fraction >= 0.01) || fraction >= 1) {
+            return "";
+        }
+        long seconds = Math.round(elapsedNanos * 1e-9 * (1 - fraction) / fraction);
+        String left = seconds < 60 ? seconds + "s"
+                : seconds < 3600 ? String.format(Locale.ROOT, "%dm %02ds", seconds / 60, seconds % 60)
+                : String.format(Locale.ROOT, "%dh %02dm", seconds / 3600, seconds % 3600 / 60);
+        return "  ~" + left + " left";
     }
 
     /** {@code [=====     ]  42%  }: the bar and percentage that every rendering starts with. */

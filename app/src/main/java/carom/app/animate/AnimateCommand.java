@@ -204,13 +204,16 @@ public final class AnimateCommand implements Callable<Integer> {
         }
         double step = frames > 1 ? new BigDecimal((last - first) / (frames - 1)).round(new MathContext(12)).doubleValue() : 1;
         double colourTop = topSpeed;
-        try (AtomicOutput files = new AtomicOutput()) {
+        long total = frames;
+        try (AtomicOutput files = new AtomicOutput();
+             ProgressBar bar = ProgressBar.forCount(err, total, "frames")) {
             files.stageFile(out, temp -> {
                 try (GifSequence gif = GifSequence.create(temp, delay, comment);
                      XyzFrames in = XyzFrames.open(trajectory, scene)) {
                     while (in.next()) {
                         Discs d = in.discs();
                         gif.add(SceneRenderer.draw(in.subject(), d, timeStamp(in.time(), step), mode, colourTop, size));
+                        bar.completed(gif.frames(), "");
                     }
                 }
             });
