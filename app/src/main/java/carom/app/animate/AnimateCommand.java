@@ -15,6 +15,7 @@ import carom.core.scene.Scene;
 import carom.core.scene.SceneReader;
 import carom.core.state.Discs;
 import carom.engines.EngineCatalog;
+import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.io.UncheckedIOException;
@@ -222,7 +223,7 @@ public final class AnimateCommand implements Callable<Integer> {
         return frames;
     }
 
-    private static void addFrame(GifSequence gif, java.awt.image.BufferedImage frame) {
+    private static void addFrame(GifSequence gif, BufferedImage frame) {
         try {
             gif.add(frame);
         } catch (IOException e) {
