@@ -100,7 +100,9 @@ final class ReportPage {
                 String about = gif.file().getFileName() + ": " + gif.frames() + (gif.frames() == 1 ? " frame" : " frames")
                         + (gif.delayCentiseconds() > 0 ? String.format(Locale.ROOT, ", %.3g frames per second",
                         100.0 / gif.delayCentiseconds()) : "");
-                figure(w, gif.file(), about + (gif.comment().isEmpty() ? "" : " \u2014 " + gif.comment().replace('\n', ';')));
+                // What made it, unless the section's head already says so.
+                boolean said = gif.comment().isEmpty() || gif.comment().split("\n")[0].equals(s.provenance().get("command"));
+                figure(w, gif.file(), about + (said ? "" : " \u2014 " + gif.comment().replace("\n", "; ")));
             }
         }
         List<Path> others = s.pngs().stream().filter(p -> !shown.contains(p)).toList();

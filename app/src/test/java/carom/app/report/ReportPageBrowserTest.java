@@ -23,19 +23,22 @@ import org.junit.jupiter.api.io.TempDir;
  * report's and an animation's folders, prints nothing on its console (the page has no script, so any
  * console line is an error) and decodes every image. A test copy of the page carries a few lines of
  * script that, after the load event, write into the DOM how many images there are and which did not
- * decode; the DOM is dumped after load. A screenshot of the page as the browser shows it is kept in
+ * decode, and how tall the page is; the DOM is dumped after load. A screenshot of the whole page as the browser shows it is kept in
  * {@code target/browser-check/report-page.png}. Outside the default suite: {@code ./mvnw -Pbrowser verify}.
  */
 @Tag("browser")
 class ReportPageBrowserTest {
     private static final long TIMEOUT_SECONDS = 180;
+    /** Pixels of the browser window's width. */
+    private static final int WIDTH = 1200;
     /** Injected into the test copy only: counts the images and names those without pixels once the page has loaded. */
     private static final String CHECK = "<script>window.addEventListener('load', function () {"
             + " var imgs = Array.prototype.slice.call(document.images);"
             + " var bad = imgs.filter(function (i) { return !i.complete || i.naturalWidth === 0; }).map(function (i) { return i.alt; });"
-            + " document.body.setAttribute('data-carom-check', 'images=' + imgs.length + ' undecoded=' + bad.length + ' ' + bad.join(','));"
+            + " document.body.setAttribute('data-carom-check', 'height=' + document.documentElement.scrollHeight"
+            + " + ' images=' + imgs.length + ' undecoded=' + bad.length + ' ' + bad.join(','));"
             + " });</script>";
-    private static final Pattern RESULT = Pattern.compile("data-carom-check=\"images=(\\d+) undecoded=(\\d+) ?([^\"]*)\"");
+    private static final Pattern RESULT = Pattern.compile("data-carom-check=\"height=(\\d+) images=(\\d+) undecoded=(\\d+) ?([^\"]*)\"");
 
     @TempDir
     Path dir;
@@ -55,22 +58,27 @@ class ReportPageBrowserTest {
         Files.writeString(checked, html.replace("</body>", CHECK + "</body>"), StandardCharsets.UTF_8);
 
         String chromium = chromium();
-        Browser dom = Browser.run(dir, chromium, "--virtual-time-budget=10000", "--dump-dom", checked.toUri().toString());
+        // The same width as the screenshot's, so that the page's height measured here is the one it shows.
+        Browser dom = Browser.run(dir, chromium, "--hide-scrollbars", "--window-size=" + WIDTH + ",1000",
+                "--virtual-time-budget=10000", "--dump-dom", checked.toUri().toString());
         Matcher m = RESULT.matcher(dom.out());
         assertThat(m.find()).as("the check ran after load; Chromium said:\n%s", dom.err()).isTrue();
-        assertThat(Integer.parseInt(m.group(1))).isEqualTo(7);
-        assertThat(Integer.parseInt(m.group(2))).as("images that did not decode: %s", m.group(3)).isZero();
+        int height = Integer.parseInt(m.group(1));
+        assertThat(Integer.parseInt(m.group(2))).isEqualTo(7);
+        assertThat(Integer.parseInt(m.group(3))).as("images that did not decode: %s", m.group(4)).isZero();
         assertThat(dom.err().lines().filter(l -> l.contains(":CONSOLE")).toList()).as("console messages").isEmpty();
 
         Path shots = Files.createDirectories(Path.of("target", "browser-check"));
         Path screenshot = shots.resolve("report-page.png").toAbsolutePath();
         Files.deleteIfExists(screenshot);
-        Browser shot = Browser.run(dir, chromium, "--hide-scrollbars", "--window-size=1200,2400",
+        // The whole page, as tall as the browser laid it out (within what a screenshot can hold).
+        Browser shot = Browser.run(dir, chromium, "--hide-scrollbars", "--window-size=" + WIDTH + "," + Math.min(height, 16_000),
                 "--screenshot=" + screenshot, page.toUri().toString());
         assertThat(shot.err().lines().filter(l -> l.contains(":CONSOLE")).toList()).isEmpty();
         BufferedImage image = ImageIO.read(screenshot.toFile());
         assertThat(image).isNotNull();
-        assertThat(image.getWidth()).isEqualTo(1200);
+        assertThat(image.getWidth()).isEqualTo(WIDTH);
+        assertThat(image.getHeight()).isEqualTo(Math.min(height, 16_000));
     }
 
     /** The browser, from tools/chromium-check (which installs it if missing). */
