@@ -16,6 +16,7 @@ import picocli.CommandLine.Spec;
         versionProvider = VersionProvider.class,
         description = "Exact event-driven simulation of hard discs in 2D.",
         subcommands = {SimulateCommand.class, EnginesCommand.class, carom.app.render.RenderCommand.class,
+                carom.app.animate.AnimateCommand.class, carom.app.report.ReportCommand.class,
                 carom.app.analyze.AnalyzeCommand.class},
         footer = {"", "Measurements are the lab's (lab/target/carom-lab.jar; ./carom runs it):",
                 "  carom experiment thesis|actors  the thesis's experiment; actors per core",
@@ -36,14 +37,14 @@ public final class Main implements Runnable {
 
     /** Runs one carom command line, writing to {@code out} and {@code err}; returns the exit status. */
     public static int run(PrintStream out, PrintStream err, String... args) {
-        // simulate draws its progress bar only on a real terminal, so it is told which streams these are.
+        // simulate, animate and report draw their progress bars only on a real terminal, so it is told which streams these are.
         return CommandRunner.run(new CommandLine(new Main(), new CommandFactory(out, err)), out, err, args);
     }
 
     /** {@code carom} alone: say which commands exist rather than doing nothing. */
     @Override
     public void run() {
-        throw new ParameterException(spec.commandLine(), "missing command: use 'carom simulate SCENE.json', 'carom render SCENE.json --at T1,T2 --out DIR', 'carom analyze FILE.jfr' or 'carom engines' (measurements: 'carom experiment thesis', 'carom study accuracy', 'carom bench')");
+        throw new ParameterException(spec.commandLine(), "missing command: use 'carom simulate SCENE.json', 'carom render SCENE.json --at T1,T2 --out DIR', 'carom animate SCENE.json --out movie.gif', 'carom report DIR... --out PAGE.html', 'carom analyze FILE.jfr' or 'carom engines' (measurements: 'carom experiment thesis', 'carom study accuracy', 'carom bench')");
     }
 
     /** Hands the raw streams to the command that needs to know what they are. */
@@ -52,6 +53,12 @@ public final class Main implements Runnable {
         public <K> K create(Class<K> cls) throws Exception {
             if (cls == SimulateCommand.class) {
                 return cls.cast(new SimulateCommand(out, err));
+            }
+            if (cls == carom.app.animate.AnimateCommand.class) {
+                return cls.cast(new carom.app.animate.AnimateCommand(err));
+            }
+            if (cls == carom.app.report.ReportCommand.class) {
+                return cls.cast(new carom.app.report.ReportCommand(err));
             }
             return CommandLine.defaultFactory().create(cls);
         }

@@ -5,8 +5,9 @@ import java.io.PrintStream;
 import java.util.Locale;
 
 /**
- * A progress bar on an interactive stderr, {@code [=====     ]  42%  t=4.2/10}, redrawn by a daemon
- * thread from the latest simulated time the engine reported. The engine's side is one volatile write,
+ * A progress bar on an interactive stderr, {@code [=====     ]  42%  t=4.2/10  ~12s left}, redrawn by a
+ * daemon thread from the latest simulated time the engine reported; the time left is the wall time so
+ * far scaled by the fraction still to go. The engine's side is one volatile write,
  * so reporting costs it nothing measurable. Short runs never show a bar: it appears only after
  * {@link #DELAY_MILLIS}, and it is erased when the run ends.
  *
@@ -25,6 +26,7 @@ public final class ProgressBar implements ProgressListener, AutoCloseable {
     private final Thread painter;
     private volatile double time;
     private volatile String status = "";
+    private final long startNanos = System.nanoTime();
     /** Length of what is on screen, to erase it; touched only by the painter until it has stopped. */
     private int drawn;
 
@@ -68,7 +70,7 @@ public final class ProgressBar implements ProgressListener, AutoCloseable {
         time = t;
     }
 
-    /** A time bar's note after the time and the time left (for simulate: the collisions expected). */
+    /** A time bar's note after the time left (for simulate: the collisions expected). */
     public ProgressBar withStatus(String note) {
         status = note;
         return this;
@@ -82,11 +84,11 @@ public final class ProgressBar implements ProgressListener, AutoCloseable {
 
     private void paint() {
         try {
-            long started = System.nanoTime();
             Thread.sleep(DELAY_MILLIS);
             while (!Thread.currentThread().isInterrupted()) {
-                double elapsed = (System.nanoTime() - started) * 1e-9;
-                draw(unit == null ? render(time, until, elapsed, status) : renderCount((long) time, (long) until, unit, status));
+                String bar = unit == null ? render(time, until) : renderCount((long) time, (long) until, unit, status);
+                String note = unit == null && !status.isEmpty() ? "  " + status : "";
+                draw(bar + timeLeft(time / until, System.nanoTime() - startNanos) + note);
                 Thread.sleep(PERIOD_MILLIS);
             }
         } catch (InterruptedException e) {
@@ -108,32 +110,24 @@ public final class ProgressBar implements ProgressListener, AutoCloseable {
         return bar(t, until) + "t=" + compact(t) + "/" + compact(until);
     }
 
-    /** {@link #render(double, double)}, the time left at the pace so far, and {@code note}. */
-    static String render(double t, double until, double elapsedSeconds, String note) {
-        String s = render(t, until);
-        if (t > 0 && t < until) {
-            s += "  ~" + duration(elapsedSeconds * (until - t) / t) + " left";
-        }
-        return note.isEmpty() ? s : s + "  " + note;
-    }
-
-    /** Seconds as a person reads them: 42 s, 7 min, 3.5 h, 12 days. */
-    static String duration(double seconds) {
-        if (seconds < 90) {
-            return Math.round(seconds) + " s";
-        }
-        if (seconds < 90 * 60) {
-            return Math.round(seconds / 60) + " min";
-        }
-        if (seconds < 48 * 3600) {
-            return String.format(java.util.Locale.ROOT, "%.1f h", seconds / 3600);
-        }
-        return Math.round(seconds / 86400) + " days";
-    }
-
     static String renderCount(long done, long total, String unit, String status) {
         String s = bar(done, total) + done + "/" + total + " " + unit;
         return status.isEmpty() ? s : s + "  " + status;
+    }
+
+    /**
+     * {@code   ~1m 05s left}: the wall time still to go if the rest goes as fast as what is done, or
+     * nothing while too little is done to say (under 1%).
+     */
+    static String timeLeft(double fraction, long elapsedNanos) {
+        if (!(fraction >= 0.01) || fraction >= 1) {
+            return "";
+        }
+        long seconds = Math.round(elapsedNanos * 1e-9 * (1 - fraction) / fraction);
+        String left = seconds < 60 ? seconds + "s"
+                : seconds < 3600 ? String.format(Locale.ROOT, "%dm %02ds", seconds / 60, seconds % 60)
+                : String.format(Locale.ROOT, "%dh %02dm", seconds / 3600, seconds % 3600 / 60);
+        return "  ~" + left + " left";
     }
 
     /** {@code [=====     ]  42%  }: the bar and percentage that every rendering starts with. */

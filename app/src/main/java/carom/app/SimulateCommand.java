@@ -11,6 +11,8 @@ import carom.core.engine.WorkEstimate;
 import carom.core.engine.Energy;
 import carom.core.observe.jfr.CaromRecording;
 import carom.app.report.Observing;
+import carom.app.report.Provenance;
+import carom.app.report.RunRecord;
 import carom.core.scene.Scene;
 import carom.core.scene.SceneReader;
 import carom.engines.EngineCatalog;
@@ -23,6 +25,7 @@ import java.nio.charset.Charset;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.Callable;
@@ -84,7 +87,7 @@ final class SimulateCommand implements Callable<Integer> {
     String observe;
 
     @Option(names = "--report", paramLabel = "DIR",
-            description = "Folder (new or empty) for the observables: KEY.csv and KEY.png each; it appears whole or not at all.")
+            description = "Folder (new or empty) for the observables: KEY.csv and KEY.png each, and run.json (what made them); it appears whole or not at all.")
     Path report;
 
     @Option(names = "--trajectory", paramLabel = "FRAMES.xyz",
@@ -173,7 +176,15 @@ final class SimulateCommand implements Callable<Integer> {
                         stdoutCharset);
             }
             if (observing != null) {
-                files.stageFolder(report, observing::writeInto);
+                // run.json says what made the folder, for 'carom report'.
+                RunRecord record = new RunRecord(Provenance.commandLine(
+                        spec.commandLine().getParseResult().originalArgs()), engine.name(), scene.name(), sceneFile,
+                        scene.size(), scene.until(), every, List.of(observe.split(",")).stream().map(String::strip).toList(),
+                        Provenance.machine());
+                files.stageFolder(report, folder -> {
+                    observing.writeInto(folder);
+                    record.writeInto(folder);
+                });
             }
             if (out != null) {
                 files.stage(out, w -> FinalStateCsv.write(result.finalState(), w));

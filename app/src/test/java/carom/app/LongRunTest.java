@@ -61,16 +61,6 @@ class LongRunTest {
         assertThat(r.status()).as(r.err()).isZero();
     }
 
-    @Test
-    void theProgressBarSaysTheTimeLeftAndTheExpectedWork() {
-        assertThat(ProgressBar.render(2.5, 10, 3.0, "about 1e+06 collisions expected"))
-                .endsWith("t=2.5/10  ~9 s left  about 1e+06 collisions expected");
-        assertThat(ProgressBar.duration(45)).isEqualTo("45 s");
-        assertThat(ProgressBar.duration(600)).isEqualTo("10 min");
-        assertThat(ProgressBar.duration(3 * 3600)).isEqualTo("3.0 h");
-        assertThat(ProgressBar.duration(5 * 86400)).isEqualTo("5 days");
-    }
-
     private static Path examples() {
         for (Path p = Path.of("").toAbsolutePath(); p != null; p = p.getParent()) {
             if (Files.isDirectory(p.resolve("examples"))) {

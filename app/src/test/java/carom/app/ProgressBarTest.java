@@ -22,6 +22,16 @@ class ProgressBarTest {
     }
 
     @Test
+    void timeLeftScalesTheWallTimeSoFarByWhatIsStillToGo() {
+        long tenSeconds = 10_000_000_000L;
+        assertThat(ProgressBar.timeLeft(0.5, tenSeconds)).isEqualTo("  ~10s left");
+        assertThat(ProgressBar.timeLeft(0.1, tenSeconds)).isEqualTo("  ~1m 30s left");
+        assertThat(ProgressBar.timeLeft(0.002, tenSeconds)).isEmpty(); // too little done to say
+        assertThat(ProgressBar.timeLeft(0.001 * 10, 360 * tenSeconds)).isEqualTo("  ~99h 00m left");
+        assertThat(ProgressBar.timeLeft(1, tenSeconds)).isEmpty();
+    }
+
+    @Test
     void compactNumbers() {
         assertThat(ProgressBar.compact(4.2)).isEqualTo("4.2");
         assertThat(ProgressBar.compact(10)).isEqualTo("10");

@@ -23,16 +23,17 @@ import java.util.Locale;
  * grey with a black outline, and above the box a caption (scene name, time) and a key (species colours
  * or the speed colour bar). In a periodic box a disc crossing an edge is drawn at its wrapped images too.
  */
-final class SceneRenderer {
+public final class SceneRenderer {
     /** How mobile discs are coloured. */
-    enum ColourMode {
+    public enum ColourMode {
         SPECIES, SPEED;
 
         String label() {
             return name().toLowerCase(Locale.ROOT);
         }
 
-        static ColourMode parse(String s) {
+        /** The mode named {@code s} ("species" or "speed"), or null. */
+        public static ColourMode parse(String s) {
             for (ColourMode m : values()) {
                 if (m.label().equals(s)) {
                     return m;
@@ -82,6 +83,20 @@ final class SceneRenderer {
         }
     }
 
+    /**
+     * What a picture shows besides the discs' state: the caption's name, the box, and the species (their
+     * order picks the palette colours, their names make the key).
+     */
+    public record Subject(String name, Box box, List<Species> species) {
+        public static Subject of(Scene scene) {
+            return new Subject(scene.name(), scene.box(), scene.species());
+        }
+
+        boolean hasFixedDiscs() {
+            return species.stream().anyMatch(Species::fixed);
+        }
+    }
+
     private SceneRenderer() {
     }
 
@@ -92,7 +107,12 @@ final class SceneRenderer {
      *                 picture of a series, so that they compare); ignored for species colours
      * @param timeLabel the time as the caption shows it
      */
-    static BufferedImage draw(Scene scene, Discs discs, String timeLabel, ColourMode mode, double topSpeed, int size) {
+    public static BufferedImage draw(Scene scene, Discs discs, String timeLabel, ColourMode mode, double topSpeed, int size) {
+        return draw(Subject.of(scene), discs, timeLabel, mode, topSpeed, size);
+    }
+
+    /** As {@link #draw(Scene, Discs, String, ColourMode, double, int)}, for a state that comes without its scene file (a trajectory). */
+    public static BufferedImage draw(Subject scene, Discs discs, String timeLabel, ColourMode mode, double topSpeed, int size) {
         Layout layout = Layout.of(scene.box(), size);
         BufferedImage image = new BufferedImage(layout.width(), layout.height(), BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();
@@ -118,7 +138,7 @@ final class SceneRenderer {
         return image;
     }
 
-    private static void drawDiscs(Graphics2D g, Scene scene, Discs d, Layout layout, ColourMode mode, double topSpeed) {
+    private static void drawDiscs(Graphics2D g, Subject scene, Discs d, Layout layout, ColourMode mode, double topSpeed) {
         Shape oldClip = g.getClip();
         Box box = scene.box();
         if (box.periodic()) {
@@ -210,7 +230,7 @@ final class SceneRenderer {
         g.draw(layout.boxRect());
     }
 
-    private static void drawCaption(Graphics2D g, Scene scene, Discs d, Layout layout, String timeLabel,
+    private static void drawCaption(Graphics2D g, Subject scene, Discs d, Layout layout, String timeLabel,
                                      ColourMode mode, double topSpeed) {
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, layout.fontPx()));
         FontMetrics fm = g.getFontMetrics();

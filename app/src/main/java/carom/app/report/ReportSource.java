@@ -1,0 +1,161 @@
+package carom.app.report;
+
+import carom.core.BadInputException;
+import carom.core.Quoted;
+import carom.core.observe.sample.SampledObservable;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Iterator;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+import javax.imageio.ImageIO;
+import javax.imageio.ImageReader;
+import javax.imageio.metadata.IIOMetadataNode;
+import javax.imageio.stream.ImageInputStream;
+import org.w3c.dom.NodeList;
+
+/**
+ * One input of {@code carom report}: a folder that {@code experiment} (report.md), {@code study accuracy}
+ * (accuracy.md), {@code simulate --report} (run.json, KEY.csv, KEY.png) or {@code animate} (a GIF) wrote,
+ * or one GIF that {@code animate} wrote; what it holds and what made it, as far as it records that. A
+ * folder with nothing of carom's in it is bad input.
+ */
+record ReportSource(Path path, String kind, Path markdown, Map<String, String> provenance, List<String> observables,
+                    List<Path> csvs, List<Path> pngs, List<Gif> gifs) {
+    /** An animation: its file, frames, delay per frame (hundredths of a second) and the comment animate wrote. */
+    record Gif(Path file, int frames, int delayCentiseconds, String comment) {
+    }
+
+    static final String EXPERIMENT_REPORT = "report.md";
+    static final String STUDY_REPORT = "accuracy.md";
+    private static final Pattern MD_MACHINE = Pattern.compile("(?m)^(?:\\| machine \\| (.*?) \\||- machine at start: (.*))$");
+    private static final Pattern MD_COMMAND = Pattern.compile("(?m)^```\\n(carom .*)$");
+
+    /** Reads what {@code path} holds; bad input if it is missing or holds nothing carom wrote. */
+    static ReportSource of(Path path) {
+        String shown = Quoted.fileName(path.toString());
+        if (Files.isRegularFile(path)) {
+            Gif gif = Html.imageType(path) != null && path.toString().toLowerCase(Locale.ROOT).endsWith(".gif") ? gif(path) : null;
+            if (gif == null || !gif.comment().startsWith("carom animate")) {
+                throw new BadInputException(shown + " is neither a folder nor a GIF that 'carom animate' wrote");
+            }
+            return new ReportSource(path, "animation", null, provenanceOf(gif), List.of(), List.of(), List.of(), List.of(gif));
+        }
+        if (!Files.isDirectory(path)) {
+            throw new BadInputException(shown + " does not exist");
+        }
+        List<Path> files = filesIn(path);
+        List<Path> csvs = new ArrayList<>();
+        List<Path> pngs = new ArrayList<>();
+        List<Gif> gifs = new ArrayList<>();
+        List<String> observables = new ArrayList<>();
+        for (Path f : files) {
+            String name = f.getFileName().toString();
+            String lower = name.toLowerCase(Locale.ROOT);
+            if (lower.endsWith(".csv")) {
+                csvs.add(f);
+                String key = name.substring(0, name.length() - 4);
+                if (SampledObservable.KEYS.contains(key)) {
+                    observables.add(key);
+                }
+            } else if (lower.endsWith(".png")) {
+                pngs.add(f);
+            } else if (lower.endsWith(".gif")) {
+                Gif gif = gif(f);
+                if (gif != null) {
+                    gifs.add(gif);
+                }
+            }
+        }
+        try {
+            if (Files.isRegularFile(path.resolve(EXPERIMENT_REPORT)) || Files.isRegularFile(path.resolve(STUDY_REPORT))) {
+                boolean experiment = Files.isRegularFile(path.resolve(EXPERIMENT_REPORT));
+                Path md = path.resolve(experiment ? EXPERIMENT_REPORT : STUDY_REPORT);
+                return new ReportSource(path, experiment ? "experiment" : "study accuracy", md,
+                        provenanceOf(Files.readString(md, StandardCharsets.UTF_8)), List.of(), csvs, pngs, gifs);
+            }
+            if (Files.isRegularFile(path.resolve(RunRecord.FILE)) || !observables.isEmpty()) {
+                Path run = path.resolve(RunRecord.FILE);
+                Map<String, String> provenance = Files.isRegularFile(run) ? RunRecord.read(run) : Map.of();
+                return new ReportSource(path, "simulate --report", null, provenance, observables, csvs, pngs, gifs);
+            }
+        } catch (IOException e) {
+            throw new BadInputException(shown + ": cannot read what carom wrote: " + Quoted.bare(String.valueOf(e.getMessage())));
+        }
+        List<Gif> ours = gifs.stream().filter(g -> g.comment().startsWith("carom animate")).toList();
+        if (ours.isEmpty()) {
+            throw new BadInputException(shown + " holds nothing carom wrote (report.md, accuracy.md, run.json, "
+                    + "observables' CSVs or a GIF of 'carom animate')");
+        }
+        Map<String, String> provenance = ours.size() == 1 ? provenanceOf(ours.getFirst()) : Map.of();
+        return new ReportSource(path, "animation", null, provenance, List.of(), csvs, pngs, gifs);
+    }
+
+    private static List<Path> filesIn(Path folder) {
+        try (Stream<Path> s = Files.list(folder)) {
+            return s.filter(Files::isRegularFile).filter(p -> !p.getFileName().toString().startsWith(".")).sorted().toList();
+        } catch (IOException e) {
+            throw new BadInputException("cannot read folder " + Quoted.fileName(folder.toString()) + ": "
+                    + Quoted.bare(String.valueOf(e.getMessage())));
+        }
+    }
+
+    /** The command (the report's fenced command line) and the machine (its table row or list item). */
+    static Map<String, String> provenanceOf(String markdown) {
+        Map<String, String> p = new LinkedHashMap<>();
+        Matcher command = MD_COMMAND.matcher(markdown);
+        p.put("command", command.find() ? command.group(1) : "");
+        Matcher machine = MD_MACHINE.matcher(markdown);
+        StringBuilder text = new StringBuilder(machine.find() ? (machine.group(1) != null ? machine.group(1) : machine.group(2)) : "");
+        // An experiment's table has the JVM and the OS on rows of their own.
+        for (String row : List.of("JVM", "OS")) {
+            Matcher m = Pattern.compile("(?m)^\\| " + row + " \\| (.*?) \\|$").matcher(markdown);
+            if (m.find() && !text.isEmpty()) {
+                text.append(", ").append(m.group(1));
+            }
+        }
+        p.put("machine", text.toString());
+        return p;
+    }
+
+    /** A GIF's comment from animate: the command line, then "machine: ...". */
+    private static Map<String, String> provenanceOf(Gif gif) {
+        Map<String, String> p = new LinkedHashMap<>();
+        String[] lines = gif.comment().split("\n", 2);
+        p.put("command", lines[0]);
+        p.put("machine", lines.length > 1 ? lines[1].replaceFirst("^machine: ", "") : "");
+        return p;
+    }
+
+    /** The GIF's frames, delay and comment, or null if it is not a GIF that can be read. */
+    static Gif gif(Path file) {
+        Iterator<ImageReader> readers = ImageIO.getImageReadersByFormatName("gif");
+        ImageReader reader = readers.next();
+        try (ImageInputStream in = ImageIO.createImageInputStream(file.toFile())) {
+            reader.setInput(in);
+            int frames = reader.getNumImages(true);
+            if (frames < 1) {
+                return null;
+            }
+            IIOMetadataNode root = (IIOMetadataNode) reader.getImageMetadata(0).getAsTree("javax_imageio_gif_image_1.0");
+            NodeList control = root.getElementsByTagName("GraphicControlExtension");
+            int delay = control.getLength() == 0 ? 0
+                    : Integer.parseInt(((IIOMetadataNode) control.item(0)).getAttribute("delayTime"));
+            NodeList comments = root.getElementsByTagName("CommentExtension");
+            String comment = comments.getLength() == 0 ? "" : ((IIOMetadataNode) comments.item(0)).getAttribute("value");
+            return new Gif(file, frames, delay, comment);
+        } catch (IOException | RuntimeException e) {
+            return null;
+        } finally {
+            reader.dispose();
+        }
+    }
+}
