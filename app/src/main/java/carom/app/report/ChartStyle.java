@@ -113,9 +113,10 @@ public final class ChartStyle {
      * not in the legend. On a log axis {@code low} must be positive: give the axis' minimum where the
      * mean less the deviation is not.
      */
-    public static void errorBar(XYChart chart, String name, double x, double low, double high, Color colour, boolean logX) {
-        double capLow = logX ? x / 1.04 : x - 0.008 * Math.abs(x);
-        double capHigh = logX ? x * 1.04 : x + 0.008 * Math.abs(x);
+    public static void errorBar(XYChart chart, String name, double x, double low, double high, Color colour, Axis xAxis) {
+        // caps about 1% of the axis wide either way
+        double capLow = xAxis.log() ? x * Math.pow(xAxis.max() / xAxis.min(), -0.008) : x - 0.008 * (xAxis.max() - xAxis.min());
+        double capHigh = xAxis.log() ? x * Math.pow(xAxis.max() / xAxis.min(), 0.008) : x + 0.008 * (xAxis.max() - xAxis.min());
         XYSeries s = chart.addSeries(name, new double[] {capLow, capHigh, x, x, capLow, capHigh},
                 new double[] {high, high, high, low, low, low});
         s.setMarker(SeriesMarkers.NONE).setLineColor(colour).setLineStyle(new BasicStroke(1.2f)).setShowInLegend(false);

@@ -134,7 +134,7 @@ public final class Charts {
                     double e = line.errors().get(k);
                     if (e > 0 && Double.isFinite(y)) {
                         double low = yAxis.log() && y - e <= 0 ? yAxis.min() : y - e;
-                        ChartStyle.errorBar(chart, line.name() + " sd " + k, line.x().get(k), low, y + e, c, xAxis.log());
+                        ChartStyle.errorBar(chart, line.name() + " sd " + k, line.x().get(k), low, y + e, c, xAxis);
                     }
                 }
             }
