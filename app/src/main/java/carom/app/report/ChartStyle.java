@@ -135,7 +135,7 @@ public final class ChartStyle {
     /** Panels of one size tiled left to right, {@code columns} to a row, as one PNG; white where none is. */
     public static byte[] png(List<? extends Chart<?, ?>> panels, int columns) {
         headless();
-        Tiling t = new Tiling(panels, columns);
+        Tiling t = Tiling.of(panels, columns);
         BufferedImage image = new BufferedImage(t.width(), t.height(), BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
@@ -156,7 +156,7 @@ public final class ChartStyle {
     /** Panels tiled as in {@link #png(List, int)}, as one SVG. */
     public static byte[] svg(List<? extends Chart<?, ?>> panels, int columns) {
         headless();
-        Tiling t = new Tiling(panels, columns);
+        Tiling t = Tiling.of(panels, columns);
         VectorGraphics2D g = new VectorGraphics2D();
         t.paint(g, panels);
         Document document = new SVGProcessor().getDocument(g.getCommands(), new PageSize(0, 0, t.width(), t.height()));
@@ -171,10 +171,10 @@ public final class ChartStyle {
 
     /** Where each panel goes: all panels have the first one's size. */
     private record Tiling(int across, int down, int panelWidth, int panelHeight) {
-        Tiling(List<? extends Chart<?, ?>> panels, int columns) {
-            this(Math.min(columns, Math.max(1, panels.size())),
-                    (Math.max(1, panels.size()) + Math.min(columns, Math.max(1, panels.size())) - 1)
-                            / Math.min(columns, Math.max(1, panels.size())),
+        static Tiling of(List<? extends Chart<?, ?>> panels, int columns) {
+            int count = Math.max(1, panels.size());
+            int across = Math.min(columns, count);
+            return new Tiling(across, (count + across - 1) / across,
                     panels.isEmpty() ? 400 : panels.get(0).getWidth(), panels.isEmpty() ? 300 : panels.get(0).getHeight());
         }
 

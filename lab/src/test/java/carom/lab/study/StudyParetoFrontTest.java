@@ -32,6 +32,25 @@ class StudyParetoFrontTest {
     }
 
     @Test
+    void serialIsTheReferenceLineNeitherAPointNorOnTheFrontAndAnExactZeroIsDrawnAtTheFoot() {
+        Row serial = row("serial", 0.05, 0);
+        Row fast = row("fast", 0.01, 0); // serial's trajectory to the bit
+        Row stripes = row("stripes", 0.03, 4e-15);
+        Row stepped = row("stepped", 0.005, 1e-2);
+
+        assertThat(ParetoPlot.plotted(List.of(serial, fast, stripes, stepped))).containsExactly(fast, stripes, stepped);
+        org.knowm.xchart.XYChart panel = ParetoPlot.panels(List.of(serial, fast, stripes, stepped)).get(0);
+        var series = panel.getSeriesMap();
+        assertThat(series).containsKeys("serial, the reference", "fast: deviation 0, drawn at the foot", "stripes (×1)", "stepped (×1)");
+        assertThat(series.get("serial, the reference").getXData()).containsOnly(0.05);
+        assertThat(series.get("Pareto front").getXData()).containsExactly(0.005, 0.01).doesNotContain(0.05);
+        double foot = series.get("fast: deviation 0, drawn at the foot").getYData()[0];
+        assertThat(foot).isPositive().isLessThan(4e-15);
+        assertThat(panel.getStyler().isYAxisLogarithmic()).isTrue();
+        assertThat(panel.getStyler().getYAxisMin()).isLessThanOrEqualTo(foot);
+    }
+
+    @Test
     void aSlowerRowThatIsClearlyMoreAccurateJoinsTheFront() {
         Row coarse = row("stepped", 0.1, 1e-2);
         Row finer = row("stepped", 1.0, 9e-3);
