@@ -153,7 +153,7 @@ public final class Charts {
 
     /**
      * One panel of a scatter plot on log axes: each series in its own colour and marker, {@code front}
-     * (null for none) as a grey line without markers, {@code reference} (null for none) as a dashed
+     * (null for none) as a grey staircase ({@link #staircase}), {@code reference} (null for none) as a dashed
      * vertical line at its one x; the legend on the right, so that the plot keeps its height for the decades.
      */
     public static XYChart scatter(String title, String xTitle, String yTitle, List<Points> series, Points front, Points reference,
@@ -187,8 +187,9 @@ public final class Charts {
         for (Points p : series) {
             chart.addSeries(p.name(), p.x(), p.y());
         }
-        if (front != null) {
-            XYSeries line = chart.addSeries(front.name(), front.x(), front.y());
+        if (front != null && front.x().length > 0) {
+            double[][] stairs = staircase(front, x.max(), y.max());
+            XYSeries line = chart.addSeries(front.name(), stairs[0], stairs[1]);
             line.setXYSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Line).setMarker(SeriesMarkers.NONE).setLineColor(Color.GRAY);
         }
         if (reference != null) {
@@ -201,6 +202,26 @@ public final class Charts {
             chart.addSeries(" ", new double[] {x.min()}, new double[] {y.min()}).setMarker(SeriesMarkers.NONE).setShowInLegend(false);
         }
         return chart;
+    }
+
+    /**
+     * The front's points (fastest first, each more accurate than the last) as the staircase that bounds
+     * what they dominate: up from the fastest to the top, across and down from point to point, and on to
+     * the right edge from the most accurate. A front of one point is an L around it.
+     */
+    static double[][] staircase(Points front, double right, double top) {
+        int n = front.x().length;
+        double[] xs = new double[2 * n + 1];
+        double[] ys = new double[2 * n + 1];
+        xs[0] = front.x()[0];
+        ys[0] = top;
+        for (int k = 0; k < n; k++) {
+            xs[2 * k + 1] = front.x()[k];
+            ys[2 * k + 1] = front.y()[k];
+            xs[2 * k + 2] = k + 1 < n ? front.x()[k + 1] : right;
+            ys[2 * k + 2] = front.y()[k];
+        }
+        return new double[][] {xs, ys};
     }
 
     /** A log axis over whole decades around [low, high], at least one decade wide. */

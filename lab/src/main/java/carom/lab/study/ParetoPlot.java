@@ -11,7 +11,7 @@ import org.knowm.xchart.XYChart;
 
 /**
  * Wall time against error, log axes, one point per engine and setting, one panel per size and scene,
- * with the Pareto front (no other point both faster and more accurate) as a line. The error is the RMS
+ * with the Pareto front (no other point both faster and more accurate) as the staircase bounding what it dominates. The error is the RMS
  * deviation from the serial trajectory at the short horizon. Serial is the reference, its deviation 0 by
  * definition: it is no point (nor on the front) but a dashed vertical line at its time. Another engine
  * that lands on serial's trajectory to the bit (deviation exactly 0, which a log axis cannot show) is
@@ -82,7 +82,7 @@ final class ParetoPlot {
                 .map(r -> new Charts.Points("serial, the reference", new double[] {r.measured().meanSeconds()}, new double[] {0}))
                 .orElse(null);
         return Charts.scatter("N = " + scene.discs() + ", " + scene.label(), "wall time per run (s)",
-                "RMS deviation from serial", series, front.size() > 1 ? points("Pareto front", front, foot) : null, reference,
+                "RMS deviation from serial", series, front.isEmpty() ? null : points("Pareto front", front, foot), reference,
                 PANEL_WIDTH, PANEL_HEIGHT);
     }
 
@@ -96,20 +96,25 @@ final class ParetoPlot {
     }
 
     /**
-     * Errors closer than this (relative) are one error: the exact engines all land on the serial
-     * trajectory and differ only in the last digits of its rounding, so a slower one must not join the
-     * front for being 1e-16 "more accurate".
+     * Errors closer than this (relative) are one error, and so are errors below {@link #ROUNDING}: the
+     * exact engines all land on the serial trajectory and differ only in its rounding (1e-16 to 1e-13
+     * of a disc diameter at the short horizon), so a slower one must not join the front for being
+     * 1e-15 "more accurate".
      */
     static final double SAME_ERROR = 1e-3;
+    /** RMS deviations (in disc diameters) below this are rounding: far below any stepped method's. */
+    static final double ROUNDING = 1e-9;
 
-    /** The rows no other row beats in both time and error (beyond {@link #SAME_ERROR}), fastest first. */
+    /** The rows no other row beats in both time and error (beyond {@link #SAME_ERROR} and {@link #ROUNDING}), fastest first. */
     static List<Row> front(List<Row> rows) {
         List<Row> sorted = new ArrayList<>(rows);
         sorted.sort(Comparator.comparingDouble((Row r) -> r.measured().meanSeconds()).thenComparingDouble(ParetoPlot::error));
         List<Row> front = new ArrayList<>();
         double best = Double.POSITIVE_INFINITY;
         for (Row r : sorted) {
-            if (error(r) < best * (1 - SAME_ERROR)) {
+            boolean clearlyBetter = best == Double.POSITIVE_INFINITY
+                    || (error(r) < best * (1 - SAME_ERROR) && best - error(r) > ROUNDING && best > ROUNDING);
+            if (clearlyBetter) {
                 front.add(r);
                 best = error(r);
             }
