@@ -7,13 +7,11 @@ import carom.core.observe.sample.RadialDistribution;
 import carom.core.observe.sample.SampledObservable;
 import java.awt.BasicStroke;
 import java.awt.Color;
-import java.awt.Font;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import org.knowm.xchart.BitmapEncoder;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.XYSeries;
@@ -21,8 +19,9 @@ import org.knowm.xchart.style.XYStyler;
 import org.knowm.xchart.style.markers.SeriesMarkers;
 
 /**
- * One PNG plot per sampled observable ({@code KEY.png}, next to {@code KEY.csv}), drawn headless with
- * XChart: white background, axis titles with carom's units (lengths in the scene's length unit, times in
+ * One plot per sampled observable, {@code KEY.png} next to {@code KEY.csv} and, for a paper, the same
+ * drawing as vector graphics ({@code KEY.svg}, {@link #writeVector}), drawn headless with XChart in
+ * {@link ChartStyle}'s look: white background, axis titles with carom's units (lengths in the scene's length unit, times in
  * its time unit, σ the contact distance), log axes for the mean squared displacement.
  *
  * <ul>
@@ -37,8 +36,7 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
 public final class ObservablePlots {
     public static final int WIDTH = 900;
     public static final int HEIGHT = 600;
-    private static final Color DATA = new Color(31, 119, 180);
-    private static final Color GUIDE = new Color(150, 150, 150);
+    private static final Color DATA = ChartStyle.PALETTE[0];
 
     private ObservablePlots() {
     }
@@ -50,15 +48,30 @@ public final class ObservablePlots {
         return file;
     }
 
+    /** Writes {@code dir/KEY.svg}, the PNG's drawing as vector graphics, and returns its path. */
+    public static Path writeVector(SampledObservable observable, Path dir) throws IOException {
+        Path file = dir.resolve(observable.key() + ".svg");
+        Files.write(file, svg(observable));
+        return file;
+    }
+
     /** The observable's plot as PNG bytes. */
-    public static byte[] png(SampledObservable observable) throws IOException {
-        XYChart chart = switch (observable) {
+    public static byte[] png(SampledObservable observable) {
+        return ChartStyle.png(chart(observable));
+    }
+
+    /** The observable's plot as SVG bytes. */
+    public static byte[] svg(SampledObservable observable) {
+        return ChartStyle.svg(chart(observable));
+    }
+
+    static XYChart chart(SampledObservable observable) {
+        return switch (observable) {
             case RadialDistribution gr -> radialDistribution(gr);
             case MeanSquaredDisplacement msd -> meanSquaredDisplacement(msd);
             case BondOrder psi6 -> bondOrder(psi6);
             case PressureSeries pressure -> pressure(pressure);
         };
-        return BitmapEncoder.getBitmapBytes(chart, BitmapEncoder.BitmapFormat.PNG);
     }
 
     static XYChart radialDistribution(RadialDistribution gr) {
@@ -146,24 +159,11 @@ public final class ObservablePlots {
     }
 
     private static XYChart chart(String title, String xTitle, String yTitle) {
-        if (System.getProperty("java.awt.headless") == null) {
-            System.setProperty("java.awt.headless", "true"); // a server has no display, and none is needed
-        }
         XYChart chart = new XYChartBuilder().width(WIDTH).height(HEIGHT).title(title)
                 .xAxisTitle(xTitle).yAxisTitle(yTitle).build();
         XYStyler s = chart.getStyler();
-        s.setChartBackgroundColor(Color.WHITE);
-        s.setPlotBackgroundColor(Color.WHITE);
-        s.setPlotBorderColor(new Color(120, 120, 120));
-        s.setPlotGridLinesColor(new Color(225, 225, 225));
-        s.setLegendBorderColor(new Color(200, 200, 200));
+        ChartStyle.apply(s);
         s.setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideNE);
-        s.setChartTitleFont(new Font(Font.SANS_SERIF, Font.BOLD, 17));
-        s.setAxisTitleFont(new Font(Font.SANS_SERIF, Font.PLAIN, 15));
-        s.setAxisTickLabelsFont(new Font(Font.SANS_SERIF, Font.PLAIN, 13));
-        s.setLegendFont(new Font(Font.SANS_SERIF, Font.PLAIN, 13));
-        s.setChartTitleBoxVisible(false);
-        s.setDecimalPattern("#,##0.###");
         return chart;
     }
 
@@ -177,8 +177,8 @@ public final class ObservablePlots {
 
     private static void guide(XYChart chart, String name, double[] x, double[] y) {
         XYSeries s = chart.addSeries(name, x, y);
-        s.setLineColor(GUIDE);
-        s.setLineStyle(new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {6f, 4f}, 0f));
+        s.setLineColor(ChartStyle.GUIDE);
+        s.setLineStyle(ChartStyle.DASHED);
         s.setMarker(SeriesMarkers.NONE);
     }
 

@@ -23,7 +23,7 @@ import picocli.CommandLine.Spec;
 @Command(name = "actors", mixinStandardHelpOptions = true, sortOptions = false,
         description = {"Time against actors per core for the actor engines (akka, vthreads): the thesis workload at one size, "
                 + "every --cells-per-actor on every --threads, seeded trials. Writes report.md, actors.csv, runs.csv and "
-                + "PNG plots into --out.",
+                + "PNG and SVG plots into --out. --quick: under half a minute.",
                 "One actor per cell (cells per actor 1) is slow at large N: minutes per run at 100,000 discs."})
 public final class ActorsCommand implements Callable<Integer> {
     static final List<Integer> CELLS_PER_ACTOR = List.of(1, 4, 16, 64, 256, 1024, 4096, 16384);
@@ -59,12 +59,12 @@ public final class ActorsCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         ActorsSettings settings = settings();
-        Path out = CommonOptions.resolve(common.out, false, null, Path.of("experiment-actors"));
+        Path out = common.out;
         OutputFolder.check(out, "--out");
 
         Machine machine = Machine.current();
         double loadBefore = Machine.loadAverage();
-        ExperimentRunner.Outcome outcome = new ExperimentRunner(settings.heap(), err).run(settings.plans());
+        ExperimentRunner.Outcome outcome = new ExperimentRunner(settings.heap(), err, settings.quick()).run(settings.plans());
         double loadAfter = Machine.loadAverage();
         Map<String, byte[]> files = new ActorsReport(settings, machine, loadBefore, loadAfter, outcome.records()).files();
         OutputFolder.write(out, files);
@@ -86,6 +86,6 @@ public final class ActorsCommand implements Callable<Integer> {
                 CommonOptions.checkedList(CommonOptions.resolve(cellsPerActor, quick, QUICK_CELLS_PER_ACTOR, CELLS_PER_ACTOR), 1,
                         "--cells-per-actor"),
                 CommonOptions.checkedList(threads != null ? threads : defaultThreads, 1, "--threads"),
-                common.trials(2, 3), common.seed, common.heap(), common.warmup(250, 10_000), CommonOptions.commandLine(spec));
+                common.trials(2, 3), common.seed, common.heap(), common.warmup(0, 10_000), CommonOptions.commandLine(spec), quick);
     }
 }

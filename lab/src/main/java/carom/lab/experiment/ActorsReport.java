@@ -16,8 +16,8 @@ import java.util.Map;
  */
 final class ActorsReport {
     static final String TABLE = "actors.csv";
-    static final String TIME_PLOT = "time-vs-actors-per-core.png";
-    static final String MESSAGES_PLOT = "messages-vs-actors-per-core.png";
+    static final String TIME_PLOT = "time-vs-actors-per-core";
+    static final String MESSAGES_PLOT = "messages-vs-actors-per-core";
 
     private final ActorsSettings settings;
     private final Machine machine;
@@ -51,7 +51,7 @@ final class ActorsReport {
                 .append("its carrier count per JVM), ")
                 .append(settings.warmupDiscs() > 0 ? "after an unmeasured warm-up run of " + Math.min(settings.warmupDiscs(), settings.discs())
                         + " discs, " : "without a warm-up run, ")
-                .append("fewest actors first. Actors per core: the engine's actors over the threads the run really had (vthreads: ")
+                .append("fewest actors first. ").append(settings.quick() ? ReportParts.QUICK : "").append("Actors per core: the engine's actors over the threads the run really had (vthreads: ")
                 .append("carrier threads; akka: dispatcher threads). Time: wall time of one `Engine.run` in milliseconds, ")
                 .append("mean ± sample standard deviation. For scale: the thesis had about ").append(ThesisNumbers.ACTORS_AT_3M)
                 .append(" actors at 3 million discs on 32 cores, about 56 actors per core (chapter 5).\n\n");
@@ -75,21 +75,17 @@ final class ActorsReport {
         }
         md.append("## Time against actors per core\n\n").append(table.markdown()).append('\n')
                 .append("CSV: `").append(TABLE).append("`.\n\n");
-        md.append("![").append(TIME_PLOT).append("](").append(TIME_PLOT).append(")\n\n")
-                .append("![").append(MESSAGES_PLOT).append("](").append(MESSAGES_PLOT).append(")\n\n");
+        md.append("![").append(TIME_PLOT).append("](").append(TIME_PLOT).append(".png)\n\n")
+                .append("![").append(MESSAGES_PLOT).append("](").append(MESSAGES_PLOT).append(".png)\n\n")
+                .append("Each plot also as SVG (vector graphics) beside its PNG. Error bars: the sample standard deviation of the ")
+                .append("time over the trials. Axes are logarithmic where the values span a decade or more.\n\n");
         ReportParts.notes(md, records);
 
         Map<String, byte[]> files = new LinkedHashMap<>();
         files.put(ThesisReport.REPORT, ReportParts.text(md.toString()));
         files.put(TABLE, ReportParts.text(csv.csv()));
         files.put(ReportParts.RUNS, ReportParts.text(ReportParts.runs(records).csv()));
-        // Log-log: one actor per cell can be a hundred times slower than a few large blocks. No error bars
-        // (a mean less its deviation may be below zero, off a log axis); the table has them.
-        files.put(TIME_PLOT, Charts.lines("Wall time against actors per core (N = " + settings.discs() + ")",
-                "actors per core", "wall time (ms)", null, lines(points, s -> s.wallMs().mean()), true, true));
-        files.put(MESSAGES_PLOT, Charts.lines("Messages per collision against actors per core (N = " + settings.discs() + ")",
-                "actors per core", "messages per collision", null, lines(points, Summary::messagesPerCollision),
-                true, true));
+        figures(points).forEach((name, figure) -> files.putAll(Charts.files(name, figure)));
         return files;
     }
 
@@ -109,8 +105,23 @@ final class ActorsReport {
         return points;
     }
 
-    /** One line per engine and thread count, points by actors per core. */
-    private static List<Charts.Line> lines(List<Point> points, java.util.function.ToDoubleFunction<Summary> figure) {
+    /** The plots as data, by file name without extension. */
+    Map<String, Charts.Figure> figures() {
+        return figures(points());
+    }
+
+    private Map<String, Charts.Figure> figures(List<Point> points) {
+        Map<String, Charts.Figure> figures = new LinkedHashMap<>();
+        figures.put(TIME_PLOT, new Charts.Figure("Wall time against actors per core (N = " + settings.discs() + ")",
+                "actors per core", "wall time per run (ms)", lines(points, s -> s.wallMs().mean(), s -> s.wallMs().sd()), true, true));
+        figures.put(MESSAGES_PLOT, new Charts.Figure("Messages per collision against actors per core (N = " + settings.discs() + ")",
+                "actors per core", "messages per collision", lines(points, Summary::messagesPerCollision, null), true, true));
+        return figures;
+    }
+
+    /** One line per engine and thread count, points by actors per core, with error bars if {@code error} is not null. */
+    private static List<Charts.Line> lines(List<Point> points, java.util.function.ToDoubleFunction<Summary> figure,
+                                           java.util.function.ToDoubleFunction<Summary> error) {
         Map<String, List<Point>> byLine = new LinkedHashMap<>();
         for (Point p : points) {
             byLine.computeIfAbsent(p.engine() + ", " + p.threads() + (p.threads() == 1 ? " thread" : " threads"),
@@ -122,8 +133,12 @@ final class ActorsReport {
                     .filter(p -> p.summary().hasTime() && !Double.isNaN(figure.applyAsDouble(p.summary())))
                     .sorted(java.util.Comparator.comparingDouble(p -> p.summary().actorsPerCore()))
                     .toList();
-            lines.add(Charts.Line.of(name, drawable.stream().map(p -> p.summary().actorsPerCore()).toList(),
-                    drawable.stream().map(p -> figure.applyAsDouble(p.summary())).toList()));
+            lines.add(new Charts.Line(name, drawable.stream().map(p -> p.summary().actorsPerCore()).toList(),
+                    drawable.stream().map(p -> figure.applyAsDouble(p.summary())).toList(),
+                    error == null ? null : drawable.stream().map(p -> {
+                        double sd = error.applyAsDouble(p.summary());
+                        return Double.isNaN(sd) ? 0.0 : sd;
+                    }).toList(), false));
         });
         return lines;
     }

@@ -18,9 +18,10 @@ import java.util.Map;
  * @param heap           each child JVM's {@code -Xmx}
  * @param warmupDiscs    discs of each child's warm-up run (at most {@code discs}), 0 for none
  * @param commandLine    the command as given, for the report
+ * @param quick          --quick: plans run in the parent JVM where they can ({@link ExperimentRunner})
  */
 record ActorsSettings(List<String> engines, int discs, List<Integer> cellsPerActor, List<Integer> threads, int trials,
-                      long seed, String heap, int warmupDiscs, String commandLine) {
+                      long seed, String heap, int warmupDiscs, String commandLine, boolean quick) {
     ActorsSettings {
         engines = List.copyOf(engines);
         cellsPerActor = List.copyOf(cellsPerActor);

@@ -12,8 +12,9 @@ import picocli.CommandLine.Option;
  * given; each command resolves them.
  */
 final class CommonOptions {
-    @Option(names = "--out", paramLabel = "DIR",
-            description = "Folder to write (report.md, CSV tables, PNG plots); must not exist yet, or be empty.")
+    @Option(names = "--out", paramLabel = "DIR", required = true,
+            description = "Folder to write (report.md, CSV tables, PNG and SVG plots); must not exist yet, or be empty. "
+                    + "Required: nothing is written where it was not asked for.")
     Path out;
 
     @Option(names = "--trials", paramLabel = "T", description = "Seeded trials per configuration.")
@@ -29,10 +30,11 @@ final class CommonOptions {
     String heap;
 
     @Option(names = "--warmup", paramLabel = "N",
-            description = "Discs of each child JVM's unmeasured warm-up run, 0 for none (default 10000, at most the largest size).")
+            description = "Discs of each child JVM's unmeasured warm-up run, 0 for none (default 10000, at most the largest size; --quick: 0).")
     Integer warmup;
 
-    @Option(names = "--quick", description = "A run of seconds on tiny sizes: to try the command, not to measure.")
+    @Option(names = "--quick", description = "Under half a minute, even on a busy machine: tiny sizes, every engine, no warm-up, "
+            + "the runs in this JVM where they can be. To try the command, not to measure.")
     boolean quick;
 
     /** {@code given} if not null, else the quick or the full default. */

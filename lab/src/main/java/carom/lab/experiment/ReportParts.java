@@ -17,6 +17,9 @@ import java.util.TreeMap;
  */
 final class ReportParts {
     static final String RUNS = "runs.csv";
+    /** What a quick run's report says of where its runs ran. */
+    static final String QUICK = "With --quick the runs ran in the command's own JVM wherever it could (all but vthreads on another "
+            + "carrier count than its own), not each engine in a JVM of its own: a try of the command, not a measurement. ";
 
     private ReportParts() {
     }

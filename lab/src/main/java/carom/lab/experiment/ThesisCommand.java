@@ -24,8 +24,8 @@ import picocli.CommandLine.Spec;
         description = {"Run the thesis's experiment (Schrock 2016, chapter 4) on carom's engines: the thesis workload for "
                 + "N = 16 and 100k to 1M (Tables 4.1-4.3), the parallel engines up to 3M (Table 4.4), seeded trials, "
                 + "mean and standard deviation per engine. Writes report.md (the thesis's numbers beside ours), "
-                + "CSV tables and PNG plots into --out.",
-                "The full default takes hours (the actor engines at large N); try --quick first."})
+                + "CSV tables and PNG and SVG plots into --out.",
+                "The full default takes hours (the actor engines at large N); try --quick first (under half a minute)."})
 public final class ThesisCommand implements Callable<Integer> {
     static final List<Integer> SIZES = IntStream.concat(IntStream.of(16), IntStream.rangeClosed(1, 10).map(k -> k * 100_000))
             .boxed().toList();
@@ -80,12 +80,12 @@ public final class ThesisCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         ThesisSettings settings = settings();
-        Path out = CommonOptions.resolve(common.out, false, null, Path.of("experiment-thesis"));
+        Path out = common.out;
         OutputFolder.check(out, "--out");
 
         Machine machine = Machine.current();
         double loadBefore = Machine.loadAverage();
-        ExperimentRunner.Outcome outcome = new ExperimentRunner(settings.heap(), err).run(settings.plans());
+        ExperimentRunner.Outcome outcome = new ExperimentRunner(settings.heap(), err, settings.quick()).run(settings.plans());
         double loadAfter = Machine.loadAverage();
         Map<String, byte[]> files = new ThesisReport(settings, machine, loadBefore, loadAfter, outcome.records()).files();
         OutputFolder.write(out, files);
@@ -113,6 +113,6 @@ public final class ThesisCommand implements Callable<Integer> {
                 CommonOptions.atLeast(threads != null ? threads : Runtime.getRuntime().availableProcessors(), 1, "--threads"),
                 CommonOptions.atLeast(CommonOptions.resolve(cellsPerActor, quick, QUICK_CELLS_PER_ACTOR, CELLS_PER_ACTOR), 1,
                         "--cells-per-actor"),
-                common.seed, common.heap(), common.warmup(400, 10_000), CommonOptions.commandLine(spec));
+                common.seed, common.heap(), common.warmup(0, 10_000), CommonOptions.commandLine(spec), quick);
     }
 }

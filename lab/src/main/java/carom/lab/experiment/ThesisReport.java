@@ -9,6 +9,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.TreeSet;
 
 /**
@@ -61,8 +62,12 @@ final class ThesisReport {
         Map<String, byte[]> plots = plots();
         md.append("## Plots\n\n");
         for (String name : plots.keySet()) {
-            md.append("![").append(name).append("](").append(name).append(")\n\n");
+            if (name.endsWith(".png")) {
+                md.append("![").append(name).append("](").append(name).append(")\n\n");
+            }
         }
+        md.append("Each plot is also written as SVG (vector graphics, for a paper) beside its PNG. Error bars: the sample ")
+                .append("standard deviation over the trials. Axes are logarithmic where the values span a decade or more.\n\n");
         ReportParts.notes(md, records);
         files.put(ReportParts.RUNS, ReportParts.text(ReportParts.runs(records).csv()));
         Map<String, byte[]> ordered = new LinkedHashMap<>();
@@ -89,6 +94,7 @@ final class ThesisReport {
                 .append("the virtual-thread scheduler fixes its carrier count per JVM), all its runs in it, smallest first, ")
                 .append(settings.warmupDiscs() > 0 ? "after an unmeasured warm-up run of " + settings.warmupDiscs() + " discs. "
                         : "without a warm-up run. ")
+                .append(settings.quick() ? ReportParts.QUICK : "")
                 .append("Mean ± sample standard deviation (n - 1, as the thesis's) over the trials. ")
                 .append("The thesis's tables give no unit; their size says milliseconds. Its numbers are transcribed from its text, ")
                 .append("table by table, as named in each heading.\n\n")
@@ -226,44 +232,67 @@ final class ThesisReport {
         }
     }
 
+    /** Every plot's files, PNG and SVG, in the order of {@link #figures}. */
     private Map<String, byte[]> plots() {
         Map<String, byte[]> plots = new LinkedHashMap<>();
+        figures().forEach((name, figure) -> plots.putAll(Charts.files(name, figure)));
+        return plots;
+    }
+
+    /**
+     * The plots as data, by file name without extension: time against N per engine beside its thesis
+     * counterpart, all engines together, the parallel engines at the sizes of Table 4.4 (or of Tables
+     * 4.2-4.3 without it), and the actor engines' messages per collision. Every line of ours is the mean
+     * over the trials with the sample standard deviation as error bars; one y scale per plot.
+     */
+    Map<String, Charts.Figure> figures() {
+        Map<String, Charts.Figure> figures = new LinkedHashMap<>();
         List<Charts.Line> all = new ArrayList<>();
         for (String e : settings.engines()) {
-            Charts.Line ours = ourLine(e, TrialRecord::wallMillis, true);
-            all.add(Charts.Line.of(e, ours.x(), ours.y()));
+            Charts.Line ours = ourLine(e, TrialRecord::wallMillis, null);
+            all.add(ours);
             List<Charts.Line> lines = new ArrayList<>(List.of(ours));
             double largest = ours.x().stream().mapToDouble(Double::doubleValue).max().orElse(Double.MAX_VALUE);
             EngineRole.of(e).ifPresent(role -> lines.add(thesisLine(role, largest)));
-            plots.put("time-" + e + ".png", Charts.lines(e + ": wall time against N", "discs N", e + " (ms)",
-                    "thesis (ms)", lines, false, false));
+            figures.put("time-" + e, new Charts.Figure(e + " and the thesis: wall time against N", "discs N",
+                    "wall time per run (ms)", lines, true, true));
         }
-        plots.put("time-all-engines.png", Charts.lines("All engines: wall time against N", "discs N", "wall time (ms)",
-                null, all, false, false));
+        figures.put("time-all-engines", new Charts.Figure("All engines: wall time against N", "discs N", "wall time per run (ms)",
+                all, true, true));
         List<String> parallel = settings.engines().stream().filter(EngineRole::isParallel).toList();
         if (!parallel.isEmpty()) {
-            plots.put("time-parallel-engines.png", parallelBars(parallel));
+            boolean large = !settings.largeEngines().isEmpty();
+            Set<Integer> sizes = new TreeSet<>(large ? settings.largeSizes() : settings.sizes());
+            List<Charts.Line> lines = parallel.stream().map(e -> ourLine(e, TrialRecord::wallMillis, sizes)).toList();
+            figures.put("time-parallel-engines", new Charts.Figure("Parallel engines (" + (large ? "Table 4.4 sizes" : "Tables 4.2-4.3 sizes")
+                    + ", " + settings.threads() + " threads)", "discs N", "wall time per run (ms)", lines, true, true));
         }
         List<String> actorEngines = enginesOf(EngineRole.ACTOR);
         if (!actorEngines.isEmpty()) {
             List<Charts.Line> lines = new ArrayList<>();
             for (String e : actorEngines) {
-                lines.add(ourLine(e, r -> r.messagesPerCollision() == null ? Double.NaN : r.messagesPerCollision(), false));
+                lines.add(ourLine(e, r -> r.messagesPerCollision() == null ? Double.NaN : r.messagesPerCollision(), null));
             }
-            lines.add(Charts.Line.of("thesis (section 4.4)", List.of((double) ThesisNumbers.MESSAGES_DISCS),
-                    List.of(ThesisNumbers.MESSAGES_PER_COLLISION)));
-            plots.put("messages-per-collision.png", Charts.lines("Actor engines: messages per collision", "discs N",
-                    "messages per collision", null, lines, false, true));
+            lines.add(new Charts.Line("thesis (section 4.4)", List.of((double) ThesisNumbers.MESSAGES_DISCS),
+                    List.of(ThesisNumbers.MESSAGES_PER_COLLISION), null, true));
+            figures.put("messages-per-collision", new Charts.Figure("Actor engines: messages per collision", "discs N",
+                    "messages per collision", lines, true, true));
         }
-        return plots;
+        return figures;
     }
 
-    /** Our mean of {@code figure} against N over every measured run of {@code engine}, with sd bars if asked. */
-    private Charts.Line ourLine(String engine, java.util.function.ToDoubleFunction<TrialRecord> figure, boolean errorBars) {
+    /**
+     * Our mean of {@code figure} against N over every measured run of {@code engine} (at {@code sizes} only,
+     * if not null), with the sample standard deviation as error bars (0 for a single trial).
+     */
+    private Charts.Line ourLine(String engine, java.util.function.ToDoubleFunction<TrialRecord> figure, Set<Integer> sizes) {
         List<Double> x = new ArrayList<>();
         List<Double> y = new ArrayList<>();
         List<Double> err = new ArrayList<>();
         for (int n : measuredSizes(engine)) {
+            if (sizes != null && !sizes.contains(n)) {
+                continue;
+            }
             double[] values = records.stream().filter(r -> r.measured() && r.engine().equals(engine) && r.discs() == n)
                     .mapToDouble(figure).filter(v -> !Double.isNaN(v)).toArray();
             if (values.length == 0) {
@@ -274,48 +303,31 @@ final class ThesisReport {
             y.add(s.mean());
             err.add(Double.isNaN(s.sd()) ? 0 : s.sd());
         }
-        return new Charts.Line(engine, x, y, errorBars ? err : null, false);
+        return new Charts.Line(engine, x, y, err, false);
     }
 
     /**
-     * The thesis's counterpart of an engine: its table to 1M, then Table 4.4 beyond, up to our largest
-     * size (so that our points are not squeezed into a corner), but at least two of its points.
+     * The thesis's counterpart of an engine, in the same unit (ms): its table to 1M, then Table 4.4
+     * beyond, up to our largest size (so that our points are not squeezed into a corner), but at least
+     * two of its points. Table 4.4's first row, printed as N = 0, is no size and is left out.
      */
-    private static Charts.Line thesisLine(EngineRole role, double upTo) {
+    static Charts.Line thesisLine(EngineRole role, double upTo) {
         List<ThesisNumbers.Row> rows = new ArrayList<>(ThesisNumbers.table(role));
         ThesisNumbers.largeTable(role).stream().filter(r -> r.discs() > 1_000_000).forEach(rows::add);
         List<Double> x = new ArrayList<>();
         List<Double> y = new ArrayList<>();
         for (ThesisNumbers.Row r : rows) {
+            if (r.discs() <= 0) {
+                continue;
+            }
             if (x.size() >= 2 && r.discs() > upTo) {
                 break;
             }
             x.add((double) r.discs());
             y.add(r.stats().mean());
         }
-        return new Charts.Line("thesis " + role.thesisName + " (right axis)", x, y, null, true);
-    }
-
-    /** The parallel engines' bars side by side, at the sizes of Table 4.4 if it ran, else of Tables 4.1 to 4.3. */
-    private byte[] parallelBars(List<String> parallel) {
-        boolean large = !settings.largeEngines().isEmpty();
-        List<Integer> sizes = large ? settings.largeSizes() : settings.sizes();
-        int trials = large ? settings.largeTrials() : settings.trials();
-        List<String> categories = new ArrayList<>();
-        Map<String, List<Double>> series = new LinkedHashMap<>();
-        parallel.forEach(e -> series.put(e, new ArrayList<>()));
-        for (int n : new TreeSet<>(sizes)) {
-            // A size where some engine has no time is left out: XChart draws bars only for complete categories.
-            List<Summary> at = parallel.stream().map(e -> summary(e, n, trials)).toList();
-            if (at.stream().allMatch(Summary::hasTime)) {
-                categories.add(Integer.toString(n));
-                for (Summary s : at) {
-                    series.get(s.engine()).add(s.wallMs().mean());
-                }
-            }
-        }
-        return Charts.bars("Parallel engines side by side (" + (large ? "Table 4.4 sizes" : "Tables 4.2-4.3 sizes") + ")",
-                "discs N", "wall time (ms)", categories, series);
+        return new Charts.Line("thesis, " + role.thesisName + " (Table " + role.thesisTable + (x.size() > 0 && upTo > 1_000_000 ? ", 4.4" : "") + ")",
+                x, y, null, true);
     }
 
     private void threadsNote(StringBuilder md, List<String> engines, List<Integer> sizes, int trials) {

@@ -27,10 +27,11 @@ import java.util.Set;
  * @param heap          each child JVM's {@code -Xmx}
  * @param warmupDiscs   discs of each child's warm-up run (at most its largest size), 0 for none
  * @param commandLine   the command as given, for the report
+ * @param quick         --quick: plans run in the parent JVM where they can ({@link ExperimentRunner})
  */
 record ThesisSettings(List<Integer> sizes, int trials, List<Integer> largeSizes, int largeTrials,
                       List<String> engines, int threads, int cellsPerActor, long seed, String heap,
-                      int warmupDiscs, String commandLine) {
+                      int warmupDiscs, String commandLine, boolean quick) {
     ThesisSettings {
         sizes = List.copyOf(sizes);
         largeSizes = List.copyOf(largeSizes);

@@ -28,14 +28,14 @@ import picocli.CommandLine.Spec;
 
 /**
  * {@code carom study accuracy}: every engine and setting on a few standard scenes, timed, with its errors
- * measured against the exact serial engine; writes {@code accuracy.md}, {@code accuracy.csv} and
- * {@code accuracy-pareto.png} into the output directory (whole or not at all).
+ * measured against the exact serial engine; writes {@code accuracy.md}, {@code accuracy.csv},
+ * {@code accuracy-pareto.png} and {@code accuracy-pareto.svg} into the output directory (whole or not at all).
  */
 @Command(name = "accuracy", mixinStandardHelpOptions = true, sortOptions = false,
         description = {"Time every engine and setting and measure its errors against the exact serial engine: "
                 + "reduced pressure, energy drift, deepest overlap, escapes, causality violations, deviation from "
                 + "the serial trajectory at a short horizon.",
-                "Writes accuracy.md, accuracy.csv and accuracy-pareto.png into --out."})
+                "Writes accuracy.md, accuracy.csv and accuracy-pareto.png (and .svg, vector) into --out."})
 public final class AccuracyCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
@@ -47,20 +47,21 @@ public final class AccuracyCommand implements Callable<Integer> {
     List<Integer> sizes;
 
     @Option(names = "--scenes", split = ",", paramLabel = "KIND:PHI",
-            description = "Scenes, periodic:PHI or walls:PHI; default periodic:0.3,periodic:0.6,walls:0.3.")
-    List<String> scenes = List.of("periodic:0.3", "periodic:0.6", "walls:0.3");
+            description = "Scenes, periodic:PHI or walls:PHI; default periodic:0.3,periodic:0.6,walls:0.3 (--quick: walls:0.3, "
+                    + "where every engine runs, dyn4j too).")
+    List<String> scenes;
 
     @Option(names = "--engines", split = ",", paramLabel = "NAME",
             description = "Engines (catalog names or dyn4j); default every catalog engine and dyn4j.")
     List<String> engines;
 
     @Option(names = "--threads", split = ",", paramLabel = "K",
-            description = "Thread counts for engines that use threads; default 1,2.")
-    List<Integer> threads = List.of(1, 2);
+            description = "Thread counts for engines that use threads; default 1,2 (--quick: 2).")
+    List<Integer> threads;
 
     @Option(names = "--dt-factors", split = ",", paramLabel = "F",
-            description = "Steps for stepped and dyn4j, as multiples of the stepped default; default 10,1,0.1.")
-    List<Double> dtFactors = List.of(10.0, 1.0, 0.1);
+            description = "Steps for stepped and dyn4j, as multiples of the stepped default; default 10,1,0.1 (--quick: 10,1).")
+    List<Double> dtFactors;
 
     @Option(names = "--collisions", paramLabel = "C",
             description = "Horizon of the timed runs, in expected collisions per disc; default 5 (--quick: 2).")
@@ -83,14 +84,17 @@ public final class AccuracyCommand implements Callable<Integer> {
     @Option(names = "--gravity", paramLabel = "G", description = "Downward gravity on walled scenes; default 0.")
     double gravity = 0;
 
-    @Option(names = "--fork", negatable = true, defaultValue = "true", fallbackValue = "true",
-            description = "Run each setting in a JVM of its own (default): clean JIT profile, and the virtual-thread "
-                    + "carrier count the setting asks for. --no-fork runs all in this JVM (vthreads then keeps its "
-                    + "first run's carrier count; the table says which it got).")
-    boolean fork;
+    @Option(names = "--fork", negatable = true,
+            description = "Run each setting in a JVM of its own (default; --quick: --no-fork): clean JIT profile, and the "
+                    + "virtual-thread carrier count the setting asks for. --no-fork runs all in this JVM (vthreads then keeps "
+                    + "its first run's carrier count; the table says which it got).")
+    Boolean fork;
 
-    @Option(names = "--quick", description = "Small and short: N = 400, 2 collisions per disc, 1 timed run.")
+    @Option(names = "--quick", description = "Under half a minute, even on a busy machine, to try the command, not to measure: every engine once on "
+            + "one walled scene of N = 400 to 2 collisions per disc, 2 threads, dt factors 10 and 1, 1 timed run, all in this JVM.")
     boolean quick;
+
+    private boolean forked;
 
     private final PrintStream err;
 
@@ -102,6 +106,10 @@ public final class AccuracyCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         List<Integer> ns = sizes != null ? sizes : List.of(quick ? 400 : 10_000);
+        scenes = scenes != null ? scenes : quick ? List.of("walls:0.3") : List.of("periodic:0.3", "periodic:0.6", "walls:0.3");
+        threads = threads != null ? threads : quick ? List.of(2) : List.of(1, 2);
+        dtFactors = dtFactors != null ? dtFactors : quick ? List.of(10.0, 1.0) : List.of(10.0, 1.0, 0.1);
+        forked = fork != null ? fork : !quick;
         List<String> engineNames = engines != null ? engines : Setting.knownEngines();
         double horizonCollisions = collisions != null ? collisions : quick ? 2 : 5;
         int timedRuns = reps != null ? reps : quick ? 1 : 3;
@@ -134,7 +142,7 @@ public final class AccuracyCommand implements Callable<Integer> {
                     } else {
                         Trial trial = new Trial(s, setting, until, shortUntil, dt, warmups, timedRuns);
                         try {
-                            Measured m = fork ? forked(trial) : inThisJvm(trial);
+                            Measured m = forked ? forked(trial) : inThisJvm(trial);
                             if (reference == null && setting.engine().equals("serial")) {
                                 reference = m;
                             }
@@ -162,7 +170,7 @@ public final class AccuracyCommand implements Callable<Integer> {
         PrintWriter stdout = spec.commandLine().getOut();
         stdout.print(markdown(rows, header));
         stdout.println();
-        stdout.println("wrote " + out.resolve("accuracy.md") + ", accuracy.csv and accuracy-pareto.png");
+        stdout.println("wrote " + out.resolve("accuracy.md") + ", accuracy.csv and accuracy-pareto.png (.svg)");
         stdout.flush();
         return 0;
     }
@@ -256,7 +264,7 @@ public final class AccuracyCommand implements Callable<Integer> {
                 throw new BadInputException("--out: cannot create " + dir + ": " + e.getMessage());
             }
         }
-        for (String f : List.of("accuracy.md", "accuracy.csv", "accuracy-pareto.png")) {
+        for (String f : List.of("accuracy.md", "accuracy.csv", "accuracy-pareto.png", "accuracy-pareto.svg")) {
             AtomicOutput.checkWritable(dir.resolve(f), "--out");
         }
     }
@@ -265,8 +273,10 @@ public final class AccuracyCommand implements Callable<Integer> {
         try (AtomicOutput files = new AtomicOutput()) {
             files.stage(out.resolve("accuracy.md"), w -> w.write(markdown(rows, header)));
             files.stage(out.resolve("accuracy.csv"), w -> StudyReport.csv(rows, w));
-            byte[] pareto = ParetoPlot.draw(rows);
-            files.stageFile(out.resolve("accuracy-pareto.png"), f -> Files.write(f, pareto));
+            byte[] png = ParetoPlot.png(rows);
+            byte[] svg = ParetoPlot.svg(rows);
+            files.stageFile(out.resolve("accuracy-pareto.png"), f -> Files.write(f, png));
+            files.stageFile(out.resolve("accuracy-pareto.svg"), f -> Files.write(f, svg));
             files.commit();
         }
     }
@@ -300,7 +310,7 @@ public final class AccuracyCommand implements Callable<Integer> {
                   Traj. dev.: distance from serial's positions at the short horizon (disc diameter 1).
                 """, ns, scenes, seed, engineNames, threads, dtFactors, StudyScene.fmt(horizonCollisions),
                 StudyScene.fmt(shortCollisions), warmups, timedRuns,
-                fork ? "each setting in a JVM of its own" : "all settings in one JVM", started, machine());
+                forked ? "each setting in a JVM of its own" : "all settings in one JVM", started, machine());
     }
 
     private static String machine() {

@@ -44,9 +44,10 @@ class ExperimentCommandTest {
         assertThat(r.err()).isEmpty(); // no progress bar off a terminal
         assertThat(r.out()).contains("wrote " + out).contains("42 of 42 runs measured");
         List<String> expected = new ArrayList<>(List.of("report.md", "runs.csv", "table-4.1-single-thread.csv",
-                "table-4.2-non-actor.csv", "table-4.3-actor.csv", "table-4.4-large.csv", "time-all-engines.png",
-                "time-parallel-engines.png", "messages-per-collision.png"));
-        ENGINES.forEach(e -> expected.add("time-" + e + ".png"));
+                "table-4.2-non-actor.csv", "table-4.3-actor.csv", "table-4.4-large.csv"));
+        List<String> plots = new ArrayList<>(List.of("time-all-engines", "time-parallel-engines", "messages-per-collision"));
+        ENGINES.forEach(e -> plots.add("time-" + e));
+        plots.forEach(p -> expected.addAll(List.of(p + ".png", p + ".svg")));
         assertThat(fileNames(out)).containsExactlyInAnyOrderElementsOf(expected);
 
         String report = Files.readString(out.resolve("report.md"));
@@ -79,8 +80,9 @@ class ExperimentCommandTest {
         // trial t has seed 1 + t - 1 for every engine: the same workloads
         assertThat(runs.stream().map(run -> run.get("trial") + ":" + run.get("seed")).distinct()).containsExactlyInAnyOrder("1:1", "2:2");
 
-        for (String png : expected.stream().filter(f -> f.endsWith(".png")).toList()) {
-            assertPicture(out.resolve(png));
+        for (String plot : plots) {
+            assertPicture(out.resolve(plot + ".png"));
+            carom.lab.report.VectorFiles.assertSvg(out.resolve(plot + ".svg"));
         }
     }
 
@@ -94,7 +96,8 @@ class ExperimentCommandTest {
 
         assertThat(r.status()).as(r.err()).isZero();
         assertThat(fileNames(out)).containsExactlyInAnyOrder("report.md", "actors.csv", "runs.csv",
-                "time-vs-actors-per-core.png", "messages-vs-actors-per-core.png");
+                "time-vs-actors-per-core.png", "messages-vs-actors-per-core.png",
+                "time-vs-actors-per-core.svg", "messages-vs-actors-per-core.svg");
         List<Map<String, String>> rows = csv(out.resolve("actors.csv"));
         assertThat(rows).extracting(row -> row.get("threads_requested") + "/" + row.get("cells_per_actor"))
                 .containsExactly("1/16", "1/256", "2/16", "2/256");
@@ -112,6 +115,7 @@ class ExperimentCommandTest {
                 "| vthreads | 2 | 256 |");
         assertPicture(out.resolve("time-vs-actors-per-core.png"));
         assertPicture(out.resolve("messages-vs-actors-per-core.png"));
+        carom.lab.report.VectorFiles.assertSvg(out.resolve("time-vs-actors-per-core.svg"));
     }
 
     @ParameterizedTest
@@ -145,6 +149,16 @@ class ExperimentCommandTest {
         assertThat(r.status()).isEqualTo(Main.BAD_INPUT);
         assertThat(r.firstErrorLine()).startsWith("error: --out: " + out).contains("not empty");
         assertThat(fileNames(out)).containsExactly("mine.txt");
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"thesis", "actors"})
+    void anExperimentWithoutOutWritesNothingAndSaysWhy(String experiment) {
+        Lab r = Lab.run("experiment", experiment, "--quick");
+
+        assertThat(r.status()).isEqualTo(Main.BAD_INPUT);
+        assertThat(r.firstErrorLine()).startsWith("error: ").contains("--out");
+        assertThat(r.out()).doesNotContain("wrote");
     }
 
     @Test

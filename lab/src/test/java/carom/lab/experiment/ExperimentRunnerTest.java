@@ -19,7 +19,7 @@ class ExperimentRunnerTest {
         ChildPlan fine = new ChildPlan("fast", 1, 0, List.of(new ChildPlan.Run(100, 1, 1, Map.of())));
         ByteArrayOutputStream err = new ByteArrayOutputStream();
 
-        ExperimentRunner.Outcome outcome = new ExperimentRunner("256m", new PrintStream(err, true)).run(List.of(broken, fine));
+        ExperimentRunner.Outcome outcome = new ExperimentRunner("256m", new PrintStream(err, true), false).run(List.of(broken, fine));
 
         assertThat(outcome.failed()).isEqualTo(2);
         assertThat(outcome.records()).hasSize(3);
@@ -37,7 +37,7 @@ class ExperimentRunnerTest {
 
     @Test
     void onlyTheVirtualThreadEngineGetsItsThreadsAsCarriers() {
-        ExperimentRunner runner = new ExperimentRunner("3g", System.err);
+        ExperimentRunner runner = new ExperimentRunner("3g", System.err, false);
         List<String> vthreads = runner.childFor(new ChildPlan("vthreads", 3, 0, List.of())).command("experiment");
         assertThat(vthreads).contains("-Xmx3g", Carriers.option(3));
         assertThat(vthreads.subList(vthreads.size() - 3, vthreads.size())).containsExactly("carom.lab.LabMain", "worker", "experiment");

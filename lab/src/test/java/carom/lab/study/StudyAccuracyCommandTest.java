@@ -33,8 +33,10 @@ class StudyAccuracyCommandTest {
 
     @BeforeAll
     static void quickStudy() throws IOException {
-        // --quick with smaller scenes and no warm-up, to keep the suite short; in one JVM (no worker JVMs).
+        // --quick with smaller scenes and no warm-up, to keep the suite short, but every scene, thread count and
+        // step of the full study; in one JVM (no worker JVMs).
         quick = run("study", "accuracy", "--quick", "--sizes", "200", "--warmups", "0", "--no-fork",
+                "--scenes", "periodic:0.3,periodic:0.6,walls:0.3", "--threads", "1,2", "--dt-factors", "10,1,0.1",
                 "--out", quickDir.resolve("out").toString());
         assertThat(quick.status()).as(quick.err()).isZero();
         rows = csv(quickDir.resolve("out/accuracy.csv"));
@@ -72,8 +74,24 @@ class StudyAccuracyCommandTest {
         assertThat(quick.out()).contains("| serial | 1 |", "wrote");
         try (var listing = Files.list(out)) {
             assertThat(listing.map(p -> p.getFileName().toString()))
-                    .containsExactlyInAnyOrder("accuracy.md", "accuracy.csv", "accuracy-pareto.png");
+                    .containsExactlyInAnyOrder("accuracy.md", "accuracy.csv", "accuracy-pareto.png", "accuracy-pareto.svg");
         }
+        carom.lab.report.VectorFiles.assertSvg(out.resolve("accuracy-pareto.svg"));
+    }
+
+    @Test
+    void quickAloneRunsEveryEngineOnceOnOneWalledSceneInThisJvm(@TempDir Path dir) throws IOException {
+        Lab r = run("study", "accuracy", "--quick", "--sizes", "100", "--warmups", "0", "--collisions", "0.5",
+                "--short-collisions", "0.25", "--out", dir.toString());
+
+        assertThat(r.status()).as(r.err()).isZero();
+        List<Map<String, String>> quickRows = csv(dir.resolve("accuracy.csv"));
+        assertThat(quickRows).allSatisfy(row -> assertThat(row.get("scene")).isEqualTo("walls-0.3"));
+        assertThat(quickRows.stream().map(row -> row.get("engine")).distinct().sorted().toList())
+                .isEqualTo(Setting.knownEngines().stream().sorted().toList());
+        assertThat(quickRows.stream().map(row -> row.get("setting")).sorted().toList()).isEqualTo(
+                Setting.expand(Setting.knownEngines(), List.of(2), List.of(10.0, 1.0)).stream().map(Setting::label).sorted().toList());
+        assertThat(Files.readString(dir.resolve("accuracy.md"))).contains("all settings in one JVM");
     }
 
     @Test

@@ -27,8 +27,29 @@ class StudyParetoFrontTest {
         Row serial = row("serial", 0.50, 1e-17);
         Row stepped = row("stepped", 0.05, 1e-2);
         Row stripes = row("stripes", 0.40, 1e-13);
+        // serial is 1e-13 "more accurate" than fast, but slower: rounding, not accuracy
         assertThat(ParetoPlot.front(List.of(serial, slabs, stripes, fast, stepped)))
-                .containsExactly(stepped, fast, serial);
+                .containsExactly(stepped, fast);
+    }
+
+    @Test
+    void serialIsTheReferenceLineNeitherAPointNorOnTheFrontAndAnExactZeroIsDrawnAtTheFoot() {
+        Row serial = row("serial", 0.05, 0);
+        Row fast = row("fast", 0.01, 0); // serial's trajectory to the bit
+        Row stripes = row("stripes", 0.03, 4e-15);
+        Row stepped = row("stepped", 0.005, 1e-2);
+
+        assertThat(ParetoPlot.plotted(List.of(serial, fast, stripes, stepped))).containsExactly(fast, stripes, stepped);
+        org.knowm.xchart.XYChart panel = ParetoPlot.panels(List.of(serial, fast, stripes, stepped)).get(0);
+        var series = panel.getSeriesMap();
+        assertThat(series).containsKeys("serial, the reference", "fast: deviation 0, drawn at the foot", "stripes (×1)", "stepped (×1)");
+        assertThat(series.get("serial, the reference").getXData()).containsOnly(0.05);
+        // the staircase: up from stepped, across to fast, down to fast's 0 (drawn at the foot), on to the right edge
+        assertThat(series.get("Pareto front").getXData()).startsWith(0.005, 0.005, 0.01, 0.01).doesNotContain(0.05);
+        double foot = series.get("fast: deviation 0, drawn at the foot").getYData()[0];
+        assertThat(foot).isPositive().isLessThan(4e-15);
+        assertThat(panel.getStyler().isYAxisLogarithmic()).isTrue();
+        assertThat(panel.getStyler().getYAxisMin()).isLessThanOrEqualTo(foot);
     }
 
     @Test

@@ -1,0 +1,206 @@
+package carom.app.report;
+
+import de.erichseifert.vectorgraphics2d.Document;
+import de.erichseifert.vectorgraphics2d.VectorGraphics2D;
+import de.erichseifert.vectorgraphics2d.svg.SVGProcessor;
+import de.erichseifert.vectorgraphics2d.util.PageSize;
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Font;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.image.BufferedImage;
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.util.List;
+import javax.imageio.ImageIO;
+import org.knowm.xchart.XYChart;
+import org.knowm.xchart.XYSeries;
+import org.knowm.xchart.internal.chartpart.Chart;
+import org.knowm.xchart.style.AxesChartStyler;
+import org.knowm.xchart.style.markers.SeriesMarkers;
+
+/**
+ * One look for every plot carom draws (the observables' and the lab's) and its two encodings: PNG to
+ * look at, SVG (vector, for a paper) with the same content. White background, no title box, sans-serif
+ * fonts large enough to read in print, light grid, distinct colours.
+ *
+ * <p>Log axes: XChart labels a log axis at its decades only, and its range is the data's, so data
+ * within one decade get one labelled tick or none. {@link #axis} therefore chooses: a log axis only
+ * where the values span at least a decade, its range widened to whole decades (at least two labels);
+ * a linear axis otherwise, with XChart's round tick values.
+ *
+ * <p>Error bars are drawn as series of their own ({@link #errorBar}) rather than XChart's, which are
+ * symmetric and leave a log axis when the mean less the deviation is not positive: here the bar then
+ * stops at the axis' lower end.
+ */
+public final class ChartStyle {
+    /** Distinct colours for up to ten series (XChart's default palette repeats similar yellows). */
+    public static final Color[] PALETTE = {new Color(0x1f77b4), new Color(0xff7f0e), new Color(0x2ca02c),
+        new Color(0xd62728), new Color(0x9467bd), new Color(0x8c564b), new Color(0xe377c2), new Color(0x17becf),
+        new Color(0xbcbd22), new Color(0x7f7f7f)};
+    /** Guides and reference lines: grey, dashed. */
+    public static final Color GUIDE = new Color(150, 150, 150);
+    public static final BasicStroke DASHED = new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f,
+            new float[] {6f, 4f}, 0f);
+
+    private ChartStyle() {
+    }
+
+    /** The common look; call right after building the chart. */
+    public static void apply(AxesChartStyler s) {
+        headless();
+        s.setChartBackgroundColor(Color.WHITE);
+        s.setPlotBackgroundColor(Color.WHITE);
+        s.setPlotBorderColor(new Color(120, 120, 120));
+        s.setPlotGridLinesColor(new Color(232, 232, 232));
+        s.setPlotGridLinesStroke(new BasicStroke(0.7f)); // solid and light: a log axis has a grid line per minor tick
+        s.setLegendBorderColor(new Color(200, 200, 200));
+        s.setLegendBackgroundColor(Color.WHITE);
+        s.setChartTitleFont(new Font(Font.SANS_SERIF, Font.BOLD, 17));
+        s.setAxisTitleFont(new Font(Font.SANS_SERIF, Font.PLAIN, 15));
+        s.setAxisTickLabelsFont(new Font(Font.SANS_SERIF, Font.PLAIN, 13));
+        s.setLegendFont(new Font(Font.SANS_SERIF, Font.PLAIN, 13));
+        s.setChartTitleBoxVisible(false);
+        s.setDecimalPattern("#,##0.###");
+        s.setSeriesColors(PALETTE);
+        s.setAxisTickMarksColor(new Color(120, 120, 120));
+    }
+
+    /** An axis' scale and range, as {@link #axis} chose them. */
+    public record Axis(boolean log, double min, double max) {
+    }
+
+    /**
+     * Log or linear for values in [{@code low}, {@code high}]: log where {@code allowLog} and the values
+     * are positive and {@code high / low >= 10}, with the range widened to whole decades; linear otherwise,
+     * from 0 where that wastes at most half the axis, else from a little below the lowest value.
+     */
+    public static Axis axis(double low, double high, boolean allowLog) {
+        if (allowLog && low > 0 && spansDecades(low, high)) {
+            return new Axis(true, Math.pow(10, Math.floor(Math.log10(low) + 1e-9)), Math.pow(10, Math.ceil(Math.log10(high) - 1e-9)));
+        }
+        double span = high - low > 0 ? high - low : Math.max(Math.abs(high), 1);
+        double min = low >= 0 && low <= high / 2 ? 0 : low - 0.05 * span;
+        return new Axis(false, min, high + 0.05 * span);
+    }
+
+    /** Whether positive values from {@code low} to {@code high} span at least a decade. */
+    public static boolean spansDecades(double low, double high) {
+        return low > 0 && high / low >= 10;
+    }
+
+    /** Sets {@code chart}'s x axis to {@code a}. */
+    public static void xAxis(XYChart chart, Axis a) {
+        chart.getStyler().setXAxisLogarithmic(a.log()).setXAxisMin(a.min()).setXAxisMax(a.max());
+        chart.getStyler().setXAxisDecimalPattern(pattern(a));
+    }
+
+    /** Sets {@code chart}'s y axis to {@code a}. */
+    public static void yAxis(XYChart chart, Axis a) {
+        chart.getStyler().setYAxisLogarithmic(a.log()).setYAxisMin(a.min()).setYAxisMax(a.max());
+        chart.getStyler().setYAxisDecimalPattern(pattern(a));
+    }
+
+    /** Tick labels: plain numbers, but powers of ten as 1E-12 where plain ones would be long (or round to 0). */
+    static String pattern(Axis a) {
+        return a.log() && (a.min() < 1e-4 || a.max() >= 1e7) ? "0E0" : "#,##0.####";
+    }
+
+    /**
+     * A vertical error bar from {@code low} to {@code high} at {@code x}, with short caps, in {@code colour},
+     * not in the legend. On a log axis {@code low} must be positive: give the axis' minimum where the
+     * mean less the deviation is not.
+     */
+    public static void errorBar(XYChart chart, String name, double x, double low, double high, Color colour, Axis xAxis) {
+        // caps about 1% of the axis wide either way
+        double capLow = xAxis.log() ? x * Math.pow(xAxis.max() / xAxis.min(), -0.008) : x - 0.008 * (xAxis.max() - xAxis.min());
+        double capHigh = xAxis.log() ? x * Math.pow(xAxis.max() / xAxis.min(), 0.008) : x + 0.008 * (xAxis.max() - xAxis.min());
+        XYSeries s = chart.addSeries(name, new double[] {capLow, capHigh, x, x, capLow, capHigh},
+                new double[] {high, high, high, low, low, low});
+        s.setMarker(SeriesMarkers.NONE).setLineColor(colour).setLineStyle(new BasicStroke(1.2f)).setShowInLegend(false);
+    }
+
+    /** The chart as PNG bytes. */
+    public static byte[] png(Chart<?, ?> chart) {
+        return png(List.of(chart), 1);
+    }
+
+    /** The chart as SVG bytes (UTF-8 XML), the same drawing as {@link #png}. */
+    public static byte[] svg(Chart<?, ?> chart) {
+        return svg(List.of(chart), 1);
+    }
+
+    /** Panels of one size tiled left to right, {@code columns} to a row, as one PNG; white where none is. */
+    public static byte[] png(List<? extends Chart<?, ?>> panels, int columns) {
+        headless();
+        Tiling t = Tiling.of(panels, columns);
+        BufferedImage image = new BufferedImage(t.width(), t.height(), BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = image.createGraphics();
+        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+        g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
+        t.paint(g, panels);
+        g.dispose();
+        ByteArrayOutputStream png = new ByteArrayOutputStream();
+        try {
+            if (!ImageIO.write(image, "png", png)) {
+                throw new IOException("no PNG writer");
+            }
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot draw " + panels.size() + " panel(s): " + e.getMessage(), e);
+        }
+        return png.toByteArray();
+    }
+
+    /** Panels tiled as in {@link #png(List, int)}, as one SVG. */
+    public static byte[] svg(List<? extends Chart<?, ?>> panels, int columns) {
+        headless();
+        Tiling t = Tiling.of(panels, columns);
+        VectorGraphics2D g = new VectorGraphics2D();
+        t.paint(g, panels);
+        Document document = new SVGProcessor().getDocument(g.getCommands(), new PageSize(0, 0, t.width(), t.height()));
+        ByteArrayOutputStream svg = new ByteArrayOutputStream();
+        try {
+            document.writeTo(svg);
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot draw " + panels.size() + " panel(s) as SVG: " + e.getMessage(), e);
+        }
+        return svg.toByteArray();
+    }
+
+    /** Where each panel goes: all panels have the first one's size. */
+    private record Tiling(int across, int down, int panelWidth, int panelHeight) {
+        static Tiling of(List<? extends Chart<?, ?>> panels, int columns) {
+            int count = Math.max(1, panels.size());
+            int across = Math.min(columns, count);
+            return new Tiling(across, (count + across - 1) / across,
+                    panels.isEmpty() ? 400 : panels.get(0).getWidth(), panels.isEmpty() ? 300 : panels.get(0).getHeight());
+        }
+
+        int width() {
+            return across * panelWidth;
+        }
+
+        int height() {
+            return down * panelHeight;
+        }
+
+        void paint(Graphics2D g, List<? extends Chart<?, ?>> panels) {
+            g.setColor(Color.WHITE);
+            g.fillRect(0, 0, width(), height());
+            for (int k = 0; k < panels.size(); k++) {
+                Graphics2D panel = (Graphics2D) g.create((k % across) * panelWidth, (k / across) * panelHeight, panelWidth, panelHeight);
+                panels.get(k).paint(panel, panelWidth, panelHeight);
+                panel.dispose();
+            }
+        }
+    }
+
+    /** Nothing here needs a display, and a server has none. */
+    private static void headless() {
+        if (System.getProperty("java.awt.headless") == null) {
+            System.setProperty("java.awt.headless", "true");
+        }
+    }
+}
