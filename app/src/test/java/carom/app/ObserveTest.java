@@ -37,7 +37,8 @@ class ObserveTest {
         assertThat(r.status()).as(r.err()).isZero();
         try (Stream<Path> files = Files.list(report)) {
             assertThat(files.map(p -> p.getFileName().toString()).sorted()).containsExactly(
-                    "gr.csv", "gr.png", "msd.csv", "msd.png", "pressure.csv", "pressure.png", "psi6.csv", "psi6.png", "run.json");
+                    "gr.csv", "gr.png", "gr.svg", "msd.csv", "msd.png", "msd.svg", "pressure.csv", "pressure.png", "pressure.svg",
+                    "psi6.csv", "psi6.png", "psi6.svg", "run.json");
         }
         for (String key : List.of("gr", "msd", "psi6", "pressure")) {
             assertThat(ImageIO.read(report.resolve(key + ".png").toFile())).as(key).isNotNull();

@@ -80,13 +80,14 @@ public final class Observing implements Sampler {
         }
     }
 
-    /** Writes {@code KEY.csv} and {@code KEY.png} of every observable into {@code folder}. */
+    /** Writes {@code KEY.csv}, {@code KEY.png} and {@code KEY.svg} of every observable into {@code folder}. */
     public void writeInto(Path folder) throws IOException {
         for (SampledObservable o : observables) {
             try (Writer w = Files.newBufferedWriter(folder.resolve(o.key() + ".csv"), StandardCharsets.UTF_8)) {
                 o.writeCsv(w);
             }
             ObservablePlots.write(o, folder);
+            ObservablePlots.writeVector(o, folder);
         }
     }
 
