@@ -54,9 +54,14 @@ final class Domain {
     long windowCpuNanos;
     long lastWindowCpu;
 
-    /** Where the last window stopped before its end (a migration), +Infinity if it did not. */
+    /** Where the last window stopped before its end (a migration, or the event budget), +Infinity if it did not. */
     double stopTime;
     int stopDisc;
+    /**
+     * The run stops here before the event that would make {@link #events} exceed this: the budget of a
+     * merged phase ({@link SlabsRun}); unlimited in the slabs' own windows.
+     */
+    long eventLimit = Long.MAX_VALUE;
 
     Domain(int id, DiscTable table, SlabColumns columns, DiscMarks marks, RunClock clock, DomainTask task,
            EnergyAudit audit, ProgressListener progress, Scene scene) {
@@ -131,7 +136,25 @@ final class Domain {
      * calendar from its mean event delay and rebuilds it (its discs in id order, as the calendar's
      * ties depend on it).
      */
-    private void replanOwn(double shift) {
+    void replanOwn(double shift) {
+        int count = collectMembers();
+        if (shift > 0) {
+            motion.rebase(shift, members, count);
+        }
+        span = table.planCalendar(queue, members, count, 0, clock.untilLocal);
+    }
+
+    /**
+     * Rebuilds this domain's calendar at local {@code now} from its discs' event times (when the run
+     * changes between merged and split phases; the records hold every disc's event, queued or not).
+     */
+    void rebuildQueue(double now) {
+        int count = collectMembers();
+        table.planCalendar(queue, members, count, now, clock.untilLocal);
+    }
+
+    /** This domain's discs, in id order, into {@link #members}; returns how many. */
+    private int collectMembers() {
         int count = 0;
         for (int i = 0; i < n; i++) {
             if (columns.ownerOfDisc(i) == id) {
@@ -147,10 +170,7 @@ final class Domain {
                 members[m++] = i;
             }
         }
-        if (shift > 0) {
-            motion.rebase(shift, members, count);
-        }
-        span = table.planCalendar(queue, members, count, 0, clock.untilLocal);
+        return count;
     }
 
     /** Starts a window: an empty log, no stop. */
@@ -162,7 +182,8 @@ final class Domain {
 
     /**
      * Processes this domain's events before {@code end} (up to it if {@code inclusive}); stops early
-     * at a migration, which only the serial phase may carry out.
+     * at a migration, which only the serial phase may carry out, or when {@link #eventLimit} is
+     * reached ({@link #stopTime} then says where).
      */
     void runWindow(double end, boolean inclusive) {
         long progressMark = events;
@@ -178,6 +199,11 @@ final class Domain {
             if (logging && columns.migratesAtEvent(i, id)) {
                 stopTime = now;
                 stopDisc = i;
+                return;
+            }
+            if (events >= eventLimit) {
+                stopTime = now;
+                stopDisc = -1;
                 return;
             }
             if (logging) {

@@ -42,7 +42,8 @@ public final class SlabsEngine implements Engine {
 
     @Override
     public List<Tunable<?>> tunables() {
-        return List.of(KernelTunables.CELL_FACTOR, Tunables.AUDIT_ENERGY, SlabsRun.SEQUENTIAL, SpinPolicy.SPINS);
+        return List.of(KernelTunables.CELL_FACTOR, Tunables.AUDIT_ENERGY, SlabsRun.SEQUENTIAL, SpinPolicy.SPINS,
+                MergePolicy.WINDOW_EVENTS, MergePolicy.MERGE_EVENTS);
     }
 
     @Override
