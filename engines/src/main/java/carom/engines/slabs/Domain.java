@@ -17,7 +17,8 @@ import carom.engines.kernel.DiscTable;
  * One slab: {@code fast}'s event loop, on the kernel, over the discs of its columns, with an
  * {@link UndoLog} while windows can be rolled back. Its methods run on its own thread during a
  * window and the other per-domain tasks, and on the coordinator's in serial phases (the owner then
- * waits at the barrier). Domain 0 is the coordinator's own.
+ * waits at the barrier). Domain 0 is the coordinator's own. The run's merged phases use one more
+ * domain, over a single slab of every column: no log, no filter, {@code fast}'s loop.
  */
 final class Domain {
     private static final double INF = Double.POSITIVE_INFINITY;
@@ -62,6 +63,12 @@ final class Domain {
      * merged phase ({@link SlabsRun}); unlimited in the slabs' own windows.
      */
     long eventLimit = Long.MAX_VALUE;
+    /**
+     * The merged phases' domain only (else null): the slab of each column, to count the events that
+     * would have been cross-slab ones (contacts of two slabs' discs, migrations) had the run been split.
+     */
+    int[] slabOf;
+    long crossSlabEvents;
 
     Domain(int id, DiscTable table, SlabColumns columns, DiscMarks marks, RunClock clock, DomainTask task,
            EnergyAudit audit, ProgressListener progress, Scene scene) {
@@ -220,7 +227,11 @@ final class Domain {
                 queue.insert(i, predictFull(i, now));
             } else if (k != HIT) {
                 crossings++;
+                int slabBefore = slabOf != null ? slabOf[table.colOfDisc(i)] : 0;
                 queue.insert(i, pred.crossAndPredict(i, now, k));
+                if (slabOf != null && slabOf[table.colOfDisc(i)] != slabBefore) {
+                    crossSlabEvents++;
+                }
             } else {
                 int p = other;
                 if (p >= 0) {
@@ -294,6 +305,9 @@ final class Domain {
         double abs = clock.epoch + now;
         if (logging) {
             log.save(b);
+        }
+        if (slabOf != null && slabOf[table.colOfDisc(a)] != slabOf[table.colOfDisc(b)]) {
+            crossSlabEvents++;
         }
         double w = motion.collidePair(a, b, now, abs, stallGuard);
         pairCollisions++;

@@ -28,8 +28,11 @@ final class MergePolicy {
     static final Tunable.Whole MERGE_EVENTS = new Tunable.Whole("mergeEvents", 1 << 16, 1, 1L << 40, "events",
             "events of the first merged phase; each failed try of the slabs after it doubles the next",
             "2^16, or 4 per disc if that is more");
+    static final Tunable.Flag ESTIMATE_WINDOWS = new Tunable.Flag("estimateWindows", true,
+            "a merged phase tries the slabs only if its would-be cross-slab events leave room for windows that pay;"
+                    + " false: after every merged phase");
     /** Events of the merged phase a run starts with (unless {@code mergeEvents} is given). */
-    static final long START_BUDGET = 1 << 16;
+    static final long START_BUDGET = 1 << 12;
     /** Windows judged together. */
     static final int BLOCK_WINDOWS = 16;
     /** The first merged phase, in events, at least (and at least {@link #BUDGET_PER_DISC} per disc). */
@@ -39,6 +42,7 @@ final class MergePolicy {
     static final int MAX_DOUBLINGS = 8;
 
     private final long windowEvents;
+    private final boolean estimate;
     private final long startBudget;
     private final long firstBudget;
     private final long maxBudget;
@@ -48,12 +52,14 @@ final class MergePolicy {
     private long undone;
 
     MergePolicy(RunOptions options, int discs) {
-        this(WINDOW_EVENTS.of(options), MERGE_EVENTS.isGiven(options) ? MERGE_EVENTS.of(options) : START_BUDGET,
+        this(WINDOW_EVENTS.of(options), ESTIMATE_WINDOWS.of(options),
+                MERGE_EVENTS.isGiven(options) ? MERGE_EVENTS.of(options) : START_BUDGET,
                 MERGE_EVENTS.isGiven(options) ? MERGE_EVENTS.of(options) : Math.max(FIRST_BUDGET, BUDGET_PER_DISC * discs));
     }
 
-    MergePolicy(long windowEvents, long startBudget, long firstBudget) {
+    MergePolicy(long windowEvents, boolean estimate, long startBudget, long firstBudget) {
         this.windowEvents = windowEvents;
+        this.estimate = estimate;
         this.startBudget = startBudget;
         this.firstBudget = firstBudget;
         this.maxBudget = firstBudget << MAX_DOUBLINGS;
@@ -67,6 +73,22 @@ final class MergePolicy {
 
     /** Events of the merged phase a run starts with. */
     long startBudget() {
+        return startBudget;
+    }
+
+    /**
+     * Whether a merged phase of {@code events} events, of which {@code crossSlabEvents} would have
+     * been cross-slab events had the run been split, says that windows could pay. Each window ends at
+     * a cross-slab event at the latest, so a window keeps at most the events between two of them:
+     * fewer than {@code windowEvents} and a try of the slabs cannot pay (it would cost its barriers
+     * and undone events for nothing); the phase goes on instead, at no cost.
+     */
+    boolean worthTrying(long events, long crossSlabEvents) {
+        return !estimate || events >= windowEvents * crossSlabEvents;
+    }
+
+    /** Events of the merged phase that goes on after a phase that said windows would not pay. */
+    long recheckBudget() {
         return startBudget;
     }
 

@@ -20,7 +20,10 @@ import java.util.Map;
  * {@code serialCpuNanos}, what the run would take on dedicated cores, barrier latency aside; on a
  * loaded machine wall time mostly measures the scheduler), {@code barrierSpins} (the spins in force),
  * {@code slabK.events} and
- * {@code slabK.windowCpuNanos} per slab K (with several), and {@code fast}'s counters.
+ * {@code slabK.windowCpuNanos} per slab K (with several), {@code merges} (merged phases begun after
+ * a try of the slabs, {@link MergePolicy}) and {@code mergedEvents} (events of merged phases, the
+ * first one included; with several slabs), {@code mergedCrossSlabEvents} (those of them that would
+ * have been cross-slab events had the run been split), and {@code fast}'s counters.
  */
 final class SlabsCounters {
     private static final ThreadMXBean CPU = ManagementFactory.getThreadMXBean();
@@ -29,6 +32,8 @@ final class SlabsCounters {
     static final String MERGES = "merges";
     /** Key of the events processed in merged phases. */
     static final String MERGED_EVENTS = "mergedEvents";
+    /** Key of the events of merged phases that would have been cross-slab ones had the run been split. */
+    static final String MERGED_CROSS_SLAB_EVENTS = "mergedCrossSlabEvents";
 
     long resyncs;
     long merges;
@@ -128,6 +133,7 @@ final class SlabsCounters {
         if (slabs > 1) {
             counters.put(MERGES, merges);
             counters.put(MERGED_EVENTS, domains[slabs].events);
+            counters.put(MERGED_CROSS_SLAB_EVENTS, domains[slabs].crossSlabEvents);
         }
         return Map.copyOf(counters);
     }

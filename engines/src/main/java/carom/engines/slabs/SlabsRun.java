@@ -19,7 +19,27 @@ import carom.engines.kernel.DiscTable;
 /**
  * One run of the slabs engine: the box cut into domains ({@link SlabColumns}), each a thread running
  * the kernel's event loop over its own discs ({@link Domain}), and this class, the coordinator, which
- * runs the windows and the serial phases between them.
+ * runs the windows and the serial phases between them, or, while windows do not pay, merged phases.
+ *
+ * <h2>Phases</h2>
+ * A run is split (the windows below) or merged: one domain over every disc, {@code fast}'s loop on
+ * the coordinator's thread, no window, no log, no verification. A window's cost (barrier, verification,
+ * serial phase, and on a rollback every event after the violating contact) is paid per cross-slab
+ * contact; where discs touch across a slab edge all the time, a settling pile or a Galton board's
+ * floor, windows held a handful of events and undid hundreds, and the run was 20 times slower than
+ * {@code fast} (issue 22). So the run starts merged for a few thousand events (a small scene never
+ * splits and never starts a thread). A merged phase counts the events that would have been
+ * cross-slab ones; a window ends at one of those at the latest, so when they are too frequent for
+ * windows to pay the phase just goes on, and otherwise the run splits and {@link MergePolicy} judges
+ * the windows by their kept and undone events: when they do not pay, the run merges for a budget of
+ * events that doubles with each failed try. The judgement is on counts, so a run is the same whatever the threads
+ * and the load. Changing phase is exact: merged, a disc's event must be its next against every
+ * neighbour, so the edge-column discs (which their slab predicted against its own columns only) are
+ * predicted anew; split, no window may touch a foreign disc, so the edge-column discs and any disc
+ * whose candidate partner is now foreign are predicted by their slab, and the cross events anew
+ * ({@link #merge}, {@link #split}). The calendar links live in the records, so each change of phase
+ * rebuilds the calendars it uses; one pass over the discs, paid for by the budget of several events
+ * per disc.
  *
  * <h2>Windows</h2>
  * With H the earliest cross event ({@link CrossPredictions}), every domain processes its own events
@@ -31,7 +51,7 @@ import carom.engines.kernel.DiscTable;
  * domains reached is a violation, and every domain undoes its events at or after t*; then the
  * violating event is processed serially. Otherwise the window is committed and the cross event at H
  * is processed serially. Either way the changed edge discs are re-predicted into the cross heap.
- * With one domain there are no edges and the loop is {@code fast}'s.
+ * With one domain there are no edges and the run is merged throughout: the loop is {@code fast}'s.
  *
  * <p>Why it is exact: a domain's events before t* read only its own discs, and no foreign disc touched
  * one of them before t* (contacts between two discs unchanged in the window are after H by the heap's
@@ -71,6 +91,9 @@ final class SlabsRun {
     /** When windows do not pay and the run merges ({@link MergePolicy}); whether it is merged now. */
     private final MergePolicy policy;
     private boolean merged;
+    /** The whole domain's events and would-be cross-slab events when the current merged phase began. */
+    private long phaseEvents;
+    private long phaseCrossSlabEvents;
     /** With several domains (else null): per-disc marks, cross predictions, the verifier. */
     private final DiscMarks marks;
     private final CrossPredictions cross;
@@ -121,6 +144,9 @@ final class SlabsRun {
         }
         this.whole = many ? new Domain(0, table, new SlabColumns(table, 1), null, clock, task, audit, progress, scene)
                 : domains[0];
+        if (many) {
+            whole.slabOf = columns.owner;
+        }
         this.counted = many ? java.util.Arrays.copyOf(domains, k + 1) : domains;
         if (many) {
             counted[k] = whole;
@@ -151,7 +177,7 @@ final class SlabsRun {
                     }
                 }
                 replan(0);
-                whole.eventLimit = policy.startBudget();
+                startMergedPhase(policy.startBudget());
             } else {
                 startWorkers();
                 everyDomain(DomainTask.PREDICT);
@@ -218,7 +244,11 @@ final class SlabsRun {
                 whole.runWindow(end, last);
                 if (whole.stopTime < INF) {
                     now = whole.stopTime;
-                    split(now);
+                    if (policy.worthTrying(whole.events - phaseEvents, whole.crossSlabEvents - phaseCrossSlabEvents)) {
+                        split(now);
+                    } else {
+                        startMergedPhase(policy.recheckBudget());
+                    }
                     continue;
                 }
                 if (last) {
@@ -344,8 +374,15 @@ final class SlabsRun {
         }
         cross.clear();
         whole.rebuildQueue(now);
-        whole.eventLimit = whole.events + policy.nextBudget();
+        startMergedPhase(policy.nextBudget());
         merged = true;
+    }
+
+    /** A merged phase of {@code budget} events begins: its counts start from here. */
+    private void startMergedPhase(long budget) {
+        whole.eventLimit = whole.events + budget;
+        phaseEvents = whole.events;
+        phaseCrossSlabEvents = whole.crossSlabEvents;
     }
 
     /**

@@ -28,13 +28,13 @@ final class FixedDomains implements Engine {
     }
 
     /**
-     * Merged and split in turn as often as possible: no window ever pays, and a merged phase is {@code
-     * mergeEvents} events, doubling after each try of the slabs; every change of phase re-predicts the
-     * discs that it must.
+     * Merged and split in turn as often as possible: every merged phase ends in a try of the slabs, no
+     * window ever pays, and a merged phase is {@code mergeEvents} events, doubling after each try;
+     * every change of phase re-predicts the discs that it must.
      */
     static FixedDomains alternating(int domains, int mergeEvents) {
         return new FixedDomains(domains, "windowEvents", Integer.toString(1 << 30), "mergeEvents",
-                Integer.toString(mergeEvents));
+                Integer.toString(mergeEvents), "estimateWindows", "false");
     }
 
     /** These options with this engine's tunables. */

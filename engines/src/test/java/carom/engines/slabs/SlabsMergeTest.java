@@ -39,12 +39,14 @@ class SlabsMergeTest {
         // Issue 22: windows a few events long, each rolled back by the next contact across the slab edge
         // (settling-stack to t = 4: 2,910 rollbacks undoing 1,902,796 events for 67,101 collisions; to
         // t = 2, 150 undoing 21,042 for 3,181; the Galton board to t = 2: 316 and 20,325 for 25,168).
-        // Now the run starts merged, tries the slabs once its first phase is spent, and merges again.
+        // Now the run starts merged and sees that contacts across the slab edge come every few events:
+        // it tries the slabs rarely if at all, and merges again at once.
         Scene scene = example(file);
         RunResult r = new SlabsEngine().run(scene, RunOptions.until(until).withThreads(2));
         long collisions = r.pairCollisions();
         assertThat(collisions).isGreaterThan(3000);
-        assertThat(r.counters().get("merges")).as("merged phases after a try of the slabs").isPositive();
+        assertThat(r.counters().get("mergedCrossSlabEvents")).as("would-be cross-slab events").isPositive();
+        assertThat(r.counters().get("windows")).as("windows").isLessThanOrEqualTo(2 * MergePolicy.BLOCK_WINDOWS);
         assertThat(r.counters().get("rollbacks")).as("rollbacks").isLessThan(collisions / 100);
         assertThat(r.counters().get("undoneEvents")).as("undone events").isLessThan(collisions / 5);
         assertThat(r.counters().get("windows")).as("windows").isLessThan(collisions / 50);
@@ -54,8 +56,7 @@ class SlabsMergeTest {
     @Test
     void everyEventIsASlabsASerialPhasesOrAMergedPhases() {
         Scene scene = example("settling-stack.json");
-        RunResult r = new SlabsEngine().run(scene,
-                RunOptions.until(2).withThreads(2).withTunable("mergeEvents", "500"));
+        RunResult r = FixedDomains.alternating(2, 500).run(scene, RunOptions.until(2));
         assertThat(r.counters().get("merges")).as("tries of the slabs that failed").isGreaterThan(2);
         assertThat(r.counters().get("slab0.events") + r.counters().get("slab1.events")
                 + r.counters().get("crossDomainEvents") + r.counters().get("migrations")
@@ -92,7 +93,7 @@ class SlabsMergeTest {
 
     @Test
     void windowsThatPayKeepTheSlabsAndResetTheBudget() {
-        MergePolicy p = new MergePolicy(100, 1000, 1000);
+        MergePolicy p = new MergePolicy(100, true, 1000, 1000);
         for (int w = 1; w < MergePolicy.BLOCK_WINDOWS; w++) {
             assertThat(p.mergeAfter(0, 0)).as("judged only after a whole block").isFalse();
         }
@@ -115,8 +116,17 @@ class SlabsMergeTest {
     }
 
     @Test
+    void aMergedPhaseTriesTheSlabsOnlyIfItsCrossSlabEventsLeaveRoomForWindowsThatPay() {
+        MergePolicy p = new MergePolicy(100, true, 1000, 1000);
+        assertThat(p.worthTrying(1000, 10)).isTrue();
+        assertThat(p.worthTrying(1000, 11)).as("fewer than 100 events between cross-slab events").isFalse();
+        assertThat(p.worthTrying(5, 0)).isTrue();
+        assertThat(new MergePolicy(100, false, 1000, 1000).worthTrying(1000, 1000)).as("without the estimate").isTrue();
+    }
+
+    @Test
     void windowEventsZeroNeverMerges() {
-        MergePolicy p = new MergePolicy(0, 1000, 1000);
+        MergePolicy p = new MergePolicy(0, true, 1000, 1000);
         for (int w = 0; w < 10 * MergePolicy.BLOCK_WINDOWS; w++) {
             assertThat(p.mergeAfter(0, 1000)).isFalse();
         }
