@@ -15,16 +15,28 @@ import carom.core.engine.Tunable;
  * one domain on one thread, which is {@code fast}'s loop.
  *
  * <p>The judgement is on counts, never on time, so that a run is the same on any machine and under
- * any load: every {@link #BLOCK_WINDOWS} windows, the events they kept, less twice the events they
- * undid, must reach {@code windowEvents} per window; otherwise the run merges for a budget of events,
- * then tries the slabs again. A failed try doubles the next budget (up to {@link #MAX_DOUBLINGS}
- * doublings), a block that pays resets it, so a scene that never pays spends a vanishing share of its
- * events in tries, and one whose activity moves (a gas that piles up, a pile that empties) follows it.
+ * any load. Merged, a phase counts the events that would have been cross-slab ones; a window ends at
+ * one of those at the latest, so unless they leave {@code windowEvents} events between them, the run
+ * stays merged ({@link #worthTrying}). Split, every {@link #BLOCK_WINDOWS} windows, the events they
+ * kept, less twice the events they undid, must reach half of {@code windowEvents} per window;
+ * otherwise the run merges for a budget of events. Half: the two thresholds leave a band in which
+ * the run stays in the phase it is in, since window lengths scatter. A gas of 2e5 discs keeps about
+ * 525 events a window; judged on 16 windows against the full threshold it merged in one run of three
+ * (were window lengths exponential, a block's mean would fall below 256 once in 150 blocks); on 32
+ * against half, once in 10^10 blocks. A failed try doubles the next budget (up to
+ * {@link #MAX_DOUBLINGS} doublings), a block that pays resets it, so a scene that never pays spends a
+ * vanishing share of its events in tries, and one whose activity moves (a gas that piles up, a pile
+ * that empties) follows it.
+ *
+ * <p>Where the threshold lies: at N = 1e6 and 2 cores, windows of about 1,200 events run 1.7 times
+ * as fast as {@code fast} (lab note {@code slabs-speedup}), so a window costs about 100 events'
+ * time whatever it holds, and windows of about 200 events break even; smaller scenes have cheaper
+ * events and so dearer windows. Measurements: lab note {@code slabs-granular}.
  */
 final class MergePolicy {
     static final Tunable.Whole WINDOW_EVENTS = new Tunable.Whole("windowEvents", 256, 0, 1 << 30, "events",
-            "events a slabs window must keep on average (less twice those it undoes) for the slabs to go on;"
-                    + " below, the run merges into one domain for a while (0: never merge)");
+            "events between cross-slab events for a merged run to try the slabs; split, windows that keep"
+                    + " fewer than half as many on average (less twice those they undo) merge it again (0: never merge)");
     static final Tunable.Whole MERGE_EVENTS = new Tunable.Whole("mergeEvents", 1 << 16, 1, 1L << 40, "events",
             "events of the first merged phase; each failed try of the slabs after it doubles the next",
             "2^16, or 4 per disc if that is more");
@@ -34,7 +46,7 @@ final class MergePolicy {
     /** Events of the merged phase a run starts with (unless {@code mergeEvents} is given). */
     static final long START_BUDGET = 1 << 12;
     /** Windows judged together. */
-    static final int BLOCK_WINDOWS = 16;
+    static final int BLOCK_WINDOWS = 32;
     /** The first merged phase, in events, at least (and at least {@link #BUDGET_PER_DISC} per disc). */
     static final long FIRST_BUDGET = 1 << 16;
     /** Merging and splitting again cost a pass over every disc: a merged phase is several events per disc. */
@@ -103,10 +115,10 @@ final class MergePolicy {
         if (windowEvents == 0) {
             return false;
         }
-        long required = windowEvents * BLOCK_WINDOWS;
+        long perWindow = windowEvents / 2;
         if (windows < BLOCK_WINDOWS) {
             // A block already that far behind cannot be trusted to catch up (a pile rolls back window after window).
-            if (2 * undone - kept < required) {
+            if (2 * undone - kept < perWindow * BLOCK_WINDOWS) {
                 return false;
             }
             windows = 0;
@@ -114,7 +126,7 @@ final class MergePolicy {
             undone = 0;
             return true;
         }
-        boolean pays = kept - 2 * undone >= windowEvents * windows;
+        boolean pays = kept - 2 * undone >= perWindow * windows;
         windows = 0;
         kept = 0;
         undone = 0;

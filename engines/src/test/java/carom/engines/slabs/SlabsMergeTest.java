@@ -75,7 +75,9 @@ class SlabsMergeTest {
         Scene scene = RandomScenes.dense(n, phi, periodic, seed, until);
         RunResult r = Invariants.check(scene, FixedDomains.alternating(domains, mergeEvents).run(scene,
                 RunOptions.until(until)));
-        assertThat(r.counters().get("merges")).as("merged phases after the first").isGreaterThanOrEqualTo(2);
+        // Merged at the start, split, merged again at least once.
+        assertThat(r.counters().get("merges")).as("merged phases after the first").isPositive();
+        assertThat(r.counters().get("windows")).isGreaterThanOrEqualTo(MergePolicy.BLOCK_WINDOWS);
         assertThat(r.counters().get("mergedEvents")).isPositive().isLessThan(r.events());
         Invariants.assertSameRun(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(until)), 1e-8);
     }
@@ -84,9 +86,9 @@ class SlabsMergeTest {
     void phasesInTurnUnderGravityRestitutionAndTcMatchSerial() {
         Scene scene = RandomScenes.dense(900, 0.5, false, 11, 0.25)
                 .withEffects(new Effects(0, -2, 1, 1, 0).withRestitution(0.8, 0.9).withTc(1e-3));
-        RunResult r = FixedDomains.alternating(3, 20).run(scene, RunOptions.until(scene.until()));
+        RunResult r = FixedDomains.alternating(2, 20).run(scene, RunOptions.until(scene.until()));
         Invariants.noOverlapsAndInside(scene, r.finalState());
-        assertThat(r.counters().get("merges")).isPositive();
+        assertThat(r.counters().get("mergedEvents")).isPositive();
         assertThat(r.counters().get("windows")).isPositive();
         Invariants.assertSameRun(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())), 1e-8);
     }
@@ -97,12 +99,12 @@ class SlabsMergeTest {
         for (int w = 1; w < MergePolicy.BLOCK_WINDOWS; w++) {
             assertThat(p.mergeAfter(0, 0)).as("judged only after a whole block").isFalse();
         }
-        // The block's kept events less twice the undone ones reach 100 a window.
-        assertThat(p.mergeAfter(100 * MergePolicy.BLOCK_WINDOWS + 2 * 50, 50)).isFalse();
+        // The block's kept events less twice the undone ones reach half of 100 a window.
+        assertThat(p.mergeAfter(50 * MergePolicy.BLOCK_WINDOWS + 2 * 50, 50)).isFalse();
         for (int w = 1; w < MergePolicy.BLOCK_WINDOWS; w++) {
-            p.mergeAfter(90, 0);
+            p.mergeAfter(49, 0);
         }
-        assertThat(p.mergeAfter(90, 0)).as("90 events a window do not pay").isTrue();
+        assertThat(p.mergeAfter(49, 0)).as("49 events a window do not pay").isTrue();
         assertThat(p.nextBudget()).isEqualTo(1000);
         assertThat(p.nextBudget()).as("a failed try doubles the next phase").isEqualTo(2000);
         for (int k = 0; k < 20; k++) {
