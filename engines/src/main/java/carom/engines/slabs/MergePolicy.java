@@ -21,9 +21,9 @@ import carom.core.engine.Tunable;
  * kept, less twice the events they undid, must reach half of {@code windowEvents} per window;
  * otherwise the run merges for a budget of events. Half: the two thresholds leave a band in which
  * the run stays in the phase it is in, since window lengths scatter. A gas of 2e5 discs keeps about
- * 525 events a window; judged on 16 windows against the full threshold it merged in one run of three
- * (were window lengths exponential, a block's mean would fall below 256 once in 150 blocks); on 32
- * against half, once in 10^10 blocks. A failed try doubles the next budget (up to
+ * 525 events a window; judged on 16 windows against the full threshold, every run of GasBench's gas
+ * merged once, for a fifth of its events (were window lengths exponential, a block's mean would fall
+ * below 256 once in 150 blocks); on 32 against half, once in 10^10 blocks. A failed try doubles the next budget (up to
  * {@link #MAX_DOUBLINGS} doublings), a block that pays resets it, so a scene that never pays spends a
  * vanishing share of its events in tries, and one whose activity moves (a gas that piles up, a pile
  * that empties) follows it.

@@ -15,6 +15,7 @@ import carom.core.observe.VirialAccumulator;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
 import carom.engines.kernel.DiscTable;
+import java.util.Arrays;
 
 /**
  * One run of the slabs engine: the box cut into domains ({@link SlabColumns}), each a thread running
@@ -32,8 +33,8 @@ import carom.engines.kernel.DiscTable;
  * cross-slab ones; a window ends at one of those at the latest, so when they are too frequent for
  * windows to pay the phase just goes on, and otherwise the run splits and {@link MergePolicy} judges
  * the windows by their kept and undone events: when they do not pay, the run merges for a budget of
- * events that doubles with each failed try. The judgement is on counts, so a run is the same whatever the threads
- * and the load. Changing phase is exact: merged, a disc's event must be its next against every
+ * events that doubles with each failed try. The judgement is on counts, so a run is the same
+ * whatever the threads and the load. Changing phase is exact: merged, a disc's event must be its next against every
  * neighbour, so the edge-column discs (which their slab predicted against its own columns only) are
  * predicted anew; split, no window may touch a foreign disc, so the edge-column discs and any disc
  * whose candidate partner is now foreign are predicted by their slab, and the cross events anew
@@ -147,7 +148,7 @@ final class SlabsRun {
         if (many) {
             whole.slabOf = columns.owner;
         }
-        this.counted = many ? java.util.Arrays.copyOf(domains, k + 1) : domains;
+        this.counted = many ? Arrays.copyOf(domains, k + 1) : domains;
         if (many) {
             counted[k] = whole;
         }
