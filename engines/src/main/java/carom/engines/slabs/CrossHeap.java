@@ -86,6 +86,14 @@ final class CrossHeap {
         siftDown(pos[last]);
     }
 
+    /** Removes every entry (a merged phase predicts no cross events; the split after it predicts them anew). */
+    void clear() {
+        for (int k = 0; k < size; k++) {
+            pos[heap[k]] = -1;
+        }
+        size = 0;
+    }
+
     /**
      * Re-anchors every entry's time at local {@code now} (now becomes 0, no time below 0): a monotone
      * map, so the heap stays ordered.

@@ -75,6 +75,24 @@ final class CrossPredictions {
                 : p != MIGRATE || (table.eventTime(i) == heap.time(i) && columns.migratesAtEvent(i, columns.ownerOfDisc(i)));
     }
 
+    /**
+     * Predicts anew, from local {@code now}, every mobile disc in an edge column, after a merged phase
+     * in which no cross event was kept (every other disc has none).
+     */
+    void predictAll(double now) {
+        heap.clear();
+        for (int i = 0; i < table.n; i++) {
+            if (table.invMass(i) > 0 && columns.inEdgeColumn(i)) {
+                predict(i, now);
+            }
+        }
+    }
+
+    /** Forgets every cross event (a merged phase begins). */
+    void clear() {
+        heap.clear();
+    }
+
     /** Shifts every cross event time so that local {@code now} becomes 0 (with the clocks). */
     void rebase(double now) {
         heap.rebase(now);

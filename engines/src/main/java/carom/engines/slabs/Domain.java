@@ -17,7 +17,8 @@ import carom.engines.kernel.DiscTable;
  * One slab: {@code fast}'s event loop, on the kernel, over the discs of its columns, with an
  * {@link UndoLog} while windows can be rolled back. Its methods run on its own thread during a
  * window and the other per-domain tasks, and on the coordinator's in serial phases (the owner then
- * waits at the barrier). Domain 0 is the coordinator's own.
+ * waits at the barrier). Domain 0 is the coordinator's own. The run's merged phases use one more
+ * domain, over a single slab of every column: no log, no filter, {@code fast}'s loop.
  */
 final class Domain {
     private static final double INF = Double.POSITIVE_INFINITY;
@@ -54,9 +55,20 @@ final class Domain {
     long windowCpuNanos;
     long lastWindowCpu;
 
-    /** Where the last window stopped before its end (a migration), +Infinity if it did not. */
+    /** Where the last window stopped before its end (a migration, or the event budget), +Infinity if it did not. */
     double stopTime;
     int stopDisc;
+    /**
+     * The run stops here before the event that would make {@link #events} exceed this: the budget of a
+     * merged phase ({@link SlabsRun}); unlimited in the slabs' own windows.
+     */
+    long eventLimit = Long.MAX_VALUE;
+    /**
+     * The merged phases' domain only (else null): the slab of each column, to count the events that
+     * would have been cross-slab ones (contacts of two slabs' discs, migrations) had the run been split.
+     */
+    int[] slabOf;
+    long crossSlabEvents;
 
     Domain(int id, DiscTable table, SlabColumns columns, DiscMarks marks, RunClock clock, DomainTask task,
            EnergyAudit audit, ProgressListener progress, Scene scene) {
@@ -131,7 +143,25 @@ final class Domain {
      * calendar from its mean event delay and rebuilds it (its discs in id order, as the calendar's
      * ties depend on it).
      */
-    private void replanOwn(double shift) {
+    void replanOwn(double shift) {
+        int count = collectMembers();
+        if (shift > 0) {
+            motion.rebase(shift, members, count);
+        }
+        span = table.planCalendar(queue, members, count, 0, clock.untilLocal);
+    }
+
+    /**
+     * Rebuilds this domain's calendar at local {@code now} from its discs' event times (when the run
+     * changes between merged and split phases; the records hold every disc's event, queued or not).
+     */
+    void rebuildQueue(double now) {
+        int count = collectMembers();
+        table.planCalendar(queue, members, count, now, clock.untilLocal);
+    }
+
+    /** This domain's discs, in id order, into {@link #members}; returns how many. */
+    private int collectMembers() {
         int count = 0;
         for (int i = 0; i < n; i++) {
             if (columns.ownerOfDisc(i) == id) {
@@ -147,10 +177,7 @@ final class Domain {
                 members[m++] = i;
             }
         }
-        if (shift > 0) {
-            motion.rebase(shift, members, count);
-        }
-        span = table.planCalendar(queue, members, count, 0, clock.untilLocal);
+        return count;
     }
 
     /** Starts a window: an empty log, no stop. */
@@ -162,7 +189,8 @@ final class Domain {
 
     /**
      * Processes this domain's events before {@code end} (up to it if {@code inclusive}); stops early
-     * at a migration, which only the serial phase may carry out.
+     * at a migration, which only the serial phase may carry out, or when {@link #eventLimit} is
+     * reached ({@link #stopTime} then says where).
      */
     void runWindow(double end, boolean inclusive) {
         long progressMark = events;
@@ -180,6 +208,11 @@ final class Domain {
                 stopDisc = i;
                 return;
             }
+            if (events >= eventLimit) {
+                stopTime = now;
+                stopDisc = -1;
+                return;
+            }
             if (logging) {
                 log.beginEvent(now, events, pairCollisions, wallCollisions, crossings, staleEvents);
                 log.save(i);
@@ -194,7 +227,11 @@ final class Domain {
                 queue.insert(i, predictFull(i, now));
             } else if (k != HIT) {
                 crossings++;
+                int slabBefore = slabOf != null ? slabOf[table.colOfDisc(i)] : 0;
                 queue.insert(i, pred.crossAndPredict(i, now, k));
+                if (slabOf != null && slabOf[table.colOfDisc(i)] != slabBefore) {
+                    crossSlabEvents++;
+                }
             } else {
                 int p = other;
                 if (p >= 0) {
@@ -268,6 +305,9 @@ final class Domain {
         double abs = clock.epoch + now;
         if (logging) {
             log.save(b);
+        }
+        if (slabOf != null && slabOf[table.colOfDisc(a)] != slabOf[table.colOfDisc(b)]) {
+            crossSlabEvents++;
         }
         double w = motion.collidePair(a, b, now, abs, stallGuard);
         pairCollisions++;

@@ -20,12 +20,23 @@ import java.util.Map;
  * {@code serialCpuNanos}, what the run would take on dedicated cores, barrier latency aside; on a
  * loaded machine wall time mostly measures the scheduler), {@code barrierSpins} (the spins in force),
  * {@code slabK.events} and
- * {@code slabK.windowCpuNanos} per slab K (with several), and {@code fast}'s counters.
+ * {@code slabK.windowCpuNanos} per slab K (with several), {@code merges} (merged phases begun after
+ * a try of the slabs, {@link MergePolicy}) and {@code mergedEvents} (events of merged phases, the
+ * first one included; with several slabs), {@code mergedCrossSlabEvents} (those of them that would
+ * have been cross-slab events had the run been split), and {@code fast}'s counters.
  */
 final class SlabsCounters {
     private static final ThreadMXBean CPU = ManagementFactory.getThreadMXBean();
 
+    /** Key of {@link #merges}: merged phases begun (the slabs' windows did not pay, {@link MergePolicy}). */
+    static final String MERGES = "merges";
+    /** Key of the events processed in merged phases. */
+    static final String MERGED_EVENTS = "mergedEvents";
+    /** Key of the events of merged phases that would have been cross-slab ones had the run been split. */
+    static final String MERGED_CROSS_SLAB_EVENTS = "mergedCrossSlabEvents";
+
     long resyncs;
+    long merges;
     long windows;
     long commits;
     long rollbacks;
@@ -75,7 +86,7 @@ final class SlabsCounters {
     }
 
     /** Every counter the run reports, by its key. */
-    Map<String, Long> toMap(Domain[] domains, long crossPredictions, int spins) {
+    Map<String, Long> toMap(Domain[] domains, int slabs, long crossPredictions, int spins) {
         long crossings = migrations;
         long stale = 0;
         long predictions = 0;
@@ -86,9 +97,8 @@ final class SlabsCounters {
             predictions += d.pred.predictions();
             undoneEvents += d.undoneEvents;
         }
-        int domainCount = domains.length;
         Map<String, Long> counters = new HashMap<>();
-        counters.put(Counter.DOMAINS.key, (long) domainCount);
+        counters.put(Counter.DOMAINS.key, (long) slabs);
         counters.put(Counter.EVENTS.key, events(domains));
         counters.put(Counter.CELL_CROSSINGS.key, crossings);
         counters.put(Counter.STALE_EVENTS.key, stale);
@@ -109,9 +119,10 @@ final class SlabsCounters {
         counters.put(Counter.SERIAL_CPU_NANOS.key, serialCpuNanos);
         counters.put(Counter.CRITICAL_CPU_NANOS.key, criticalCpuNanos);
         long windowCpu = 0;
-        for (Domain d : domains) {
+        for (int k = 0; k < slabs; k++) {
+            Domain d = domains[k];
             windowCpu += d.windowCpuNanos;
-            if (domainCount > 1) {
+            if (slabs > 1) {
                 // Per slab, to tell a systematic imbalance (one slab always heavier) from noise.
                 counters.put(Counter.perSlab(d.id, Counter.EVENTS), d.events);
                 counters.put(Counter.perSlab(d.id, Counter.WINDOW_CPU_NANOS), d.windowCpuNanos);
@@ -119,6 +130,11 @@ final class SlabsCounters {
         }
         counters.put(Counter.WINDOW_CPU_NANOS.key, windowCpu);
         counters.put(Counter.BARRIER_SPINS.key, (long) spins);
+        if (slabs > 1) {
+            counters.put(MERGES, merges);
+            counters.put(MERGED_EVENTS, domains[slabs].events);
+            counters.put(MERGED_CROSS_SLAB_EVENTS, domains[slabs].crossSlabEvents);
+        }
         return Map.copyOf(counters);
     }
 }

@@ -15,14 +15,18 @@ import java.util.List;
  * events, calendar queue) over the discs it owns. Domains run optimistic windows up to the earliest
  * predicted cross-domain event; after a spinning barrier the window is verified against the logged
  * trajectories of the discs that changed near a slab boundary, undone back to the first real
- * cross-domain contact if there was one, and the cross-domain event is then processed serially. Gives
- * the serial reference's final state to rounding; scenes too small for slabs of a few columns run on
- * one domain (the {@code fast} algorithm).
+ * cross-domain contact if there was one, and the cross-domain event is then processed serially.
+ * While windows are too short or rolled back too often to pay (discs touching across a slab edge all
+ * the time, as in a settling pile), and for the first few thousand events, the run is merged into one
+ * domain, which is the {@code fast} algorithm on one thread ({@link MergePolicy}). Gives the serial
+ * reference's final state to rounding; scenes too small for slabs of a few columns run on one domain.
  *
  * <p>Tunables: {@code cellFactor}, {@code auditEnergy} (as {@code fast}; with several domains the
  * energy is audited at every barrier); {@code sequential} (measurement mode: all domains' windows run
  * one after another on the calling thread, for single-core costs); {@code spins} (busy-wait iterations at
- * the barrier before a thread parks). Counters: see {@link SlabsCounters}.
+ * the barrier before a thread parks); {@code windowEvents}, {@code mergeEvents} and {@code estimateWindows}
+ * (when windows pay, how long a merged phase lasts, whether it estimates the windows before trying
+ * them: {@link MergePolicy}). Counters: see {@link SlabsCounters}.
  */
 public final class SlabsEngine implements Engine {
     @Override
@@ -37,12 +41,14 @@ public final class SlabsEngine implements Engine {
 
     @Override
     public String description() {
-        return "vertical slabs, one fast-style event loop per thread, optimistic windows verified at a barrier and rolled back to the first cross-slab contact";
+        return "vertical slabs, one fast-style event loop per thread, optimistic windows verified at a barrier and rolled back to the first cross-slab contact; merged into one fast loop while windows do not pay";
     }
 
     @Override
     public List<Tunable<?>> tunables() {
-        return List.of(KernelTunables.CELL_FACTOR, Tunables.AUDIT_ENERGY, SlabsRun.SEQUENTIAL, SpinPolicy.SPINS);
+        return List.of(KernelTunables.CELL_FACTOR, Tunables.AUDIT_ENERGY, SlabsRun.SEQUENTIAL, SpinPolicy.SPINS,
+                MergePolicy.WINDOW_EVENTS, MergePolicy.MERGE_EVENTS,
+                MergePolicy.ESTIMATE_WINDOWS);
     }
 
     @Override

@@ -15,11 +15,32 @@ import carom.core.observe.VirialAccumulator;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
 import carom.engines.kernel.DiscTable;
+import java.util.Arrays;
 
 /**
  * One run of the slabs engine: the box cut into domains ({@link SlabColumns}), each a thread running
  * the kernel's event loop over its own discs ({@link Domain}), and this class, the coordinator, which
- * runs the windows and the serial phases between them.
+ * runs the windows and the serial phases between them, or, while windows do not pay, merged phases.
+ *
+ * <h2>Phases</h2>
+ * A run is split (the windows below) or merged: one domain over every disc, {@code fast}'s loop on
+ * the coordinator's thread, no window, no log, no verification. A window's cost (barrier, verification,
+ * serial phase, and on a rollback every event after the violating contact) is paid per cross-slab
+ * contact; where discs touch across a slab edge all the time, a settling pile or a Galton board's
+ * floor, windows held a handful of events and undid hundreds, and the run was 20 times slower than
+ * {@code fast} (issue 22). So the run starts merged for a few thousand events (a small scene never
+ * splits and never starts a thread). A merged phase counts the events that would have been
+ * cross-slab ones; a window ends at one of those at the latest, so when they are too frequent for
+ * windows to pay the phase just goes on, and otherwise the run splits and {@link MergePolicy} judges
+ * the windows by their kept and undone events: when they do not pay, the run merges for a budget of
+ * events that doubles with each failed try. The judgement is on counts, so a run is the same
+ * whatever the threads and the load. Changing phase is exact: merged, a disc's event must be its next against every
+ * neighbour, so the edge-column discs (which their slab predicted against its own columns only) are
+ * predicted anew; split, no window may touch a foreign disc, so the edge-column discs and any disc
+ * whose candidate partner is now foreign are predicted by their slab, and the cross events anew
+ * ({@link #merge}, {@link #split}). The calendar links live in the records, so each change of phase
+ * rebuilds the calendars it uses; one pass over the discs, paid for by the budget of several events
+ * per disc.
  *
  * <h2>Windows</h2>
  * With H the earliest cross event ({@link CrossPredictions}), every domain processes its own events
@@ -31,7 +52,7 @@ import carom.engines.kernel.DiscTable;
  * domains reached is a violation, and every domain undoes its events at or after t*; then the
  * violating event is processed serially. Otherwise the window is committed and the cross event at H
  * is processed serially. Either way the changed edge discs are re-predicted into the cross heap.
- * With one domain there are no edges and the loop is {@code fast}'s.
+ * With one domain there are no edges and the run is merged throughout: the loop is {@code fast}'s.
  *
  * <p>Why it is exact: a domain's events before t* read only its own discs, and no foreign disc touched
  * one of them before t* (contacts between two discs unchanged in the window are after H by the heap's
@@ -62,6 +83,18 @@ final class SlabsRun {
      */
     private final boolean sequential;
     private final Domain[] domains;
+    /**
+     * The domain of merged phases: every disc, {@code fast}'s loop on the coordinator's thread (with
+     * one slab, that slab itself); and the slabs, then it, for the counters.
+     */
+    private final Domain whole;
+    private final Domain[] counted;
+    /** When windows do not pay and the run merges ({@link MergePolicy}); whether it is merged now. */
+    private final MergePolicy policy;
+    private boolean merged;
+    /** The whole domain's events and would-be cross-slab events when the current merged phase began. */
+    private long phaseEvents;
+    private long phaseCrossSlabEvents;
     /** With several domains (else null): per-disc marks, cross predictions, the verifier. */
     private final DiscMarks marks;
     private final CrossPredictions cross;
@@ -69,6 +102,9 @@ final class SlabsRun {
     private final RunClock clock;
     private final DomainTask task = new DomainTask();
     private final SpinParkBarrier barrier;
+    /** The worker threads (domains 1..K-1), started at the first split phase; none in sequential mode. */
+    private final Thread[] workers;
+    private boolean threaded;
     /** Spins before a waiting thread parks ({@link SpinPolicy}). */
     private final int spins;
     private final SlabsCounters counters = new SlabsCounters();
@@ -107,6 +143,18 @@ final class SlabsRun {
         for (int d = 0; d < k; d++) {
             domains[d] = new Domain(d, table, columns, marks, clock, task, audit, progress, scene);
         }
+        this.whole = many ? new Domain(0, table, new SlabColumns(table, 1), null, clock, task, audit, progress, scene)
+                : domains[0];
+        if (many) {
+            whole.slabOf = columns.owner;
+        }
+        this.counted = many ? Arrays.copyOf(domains, k + 1) : domains;
+        if (many) {
+            counted[k] = whole;
+        }
+        this.policy = new MergePolicy(options, n);
+        this.merged = !many || policy.startsMerged();
+        this.workers = new Thread[sequential ? 0 : k - 1];
         this.cross = many ? new CrossPredictions(table, columns, domains) : null;
         this.verifier = many ? new WindowVerifier(table, columns, domains, marks) : null;
         this.samples = SampleSchedule.of(scene, options);
@@ -119,20 +167,27 @@ final class SlabsRun {
 
     RunResult run() {
         long started = System.nanoTime();
-        Thread[] workers = new Thread[sequential ? 0 : domainCount - 1];
         double seconds;
         Discs out;
         try {
-            for (int d = 1; d <= workers.length; d++) {
-                Domain dom = domains[d];
-                workers[d - 1] = Thread.ofPlatform().daemon().name("slabs-domain-" + d).start(() -> dom.work(barrier));
-            }
-            everyDomain(DomainTask.PREDICT);
-            replan(0);
-            if (domainCount > 1) {
+            if (merged && domainCount > 1) {
+                // A merged start: fast's first predictions and calendar, no thread until the first split.
                 for (int i = 0; i < n; i++) {
                     if (table.invMass(i) > 0) {
-                        cross.predict(i, 0);
+                        table.setEventTime(i, whole.predictFull(i, 0));
+                    }
+                }
+                replan(0);
+                startMergedPhase(policy.startBudget());
+            } else {
+                startWorkers();
+                everyDomain(DomainTask.PREDICT);
+                replan(0);
+                if (domainCount > 1) {
+                    for (int i = 0; i < n; i++) {
+                        if (table.invMass(i) > 0) {
+                            cross.predict(i, 0);
+                        }
                     }
                 }
             }
@@ -160,20 +215,19 @@ final class SlabsRun {
         }
         double energyEnd = Observables.kineticEnergy(out);
         VirialAccumulator virial = serialVirial;
-        for (Domain d : domains) {
+        for (Domain d : counted) {
             virial.addAll(d.virial);
         }
         Pressure pressure = VirialAccumulator.pressureOf(virial, scene, out, energyStart, energyEnd);
-        return new RunResult("slabs", true, out, until, counters.pairCollisions(domains),
-                counters.wallCollisions(domains), counters.events(domains), energyStart, energyEnd, momentumStart,
+        return new RunResult("slabs", true, out, until, counters.pairCollisions(counted),
+                counters.wallCollisions(counted), counters.events(counted), energyStart, energyEnd, momentumStart,
                 Observables.momentum(out), pressure, 0, seconds,
-                counters.toMap(domains, cross == null ? 0 : cross.predictions, spins));
+                counters.toMap(counted, domainCount, cross == null ? 0 : cross.predictions, spins));
     }
 
     private void loop() {
         double now = 0;
         long progressMark = 0;
-        Domain single = domainCount == 1 ? domains[0] : null;
         while (true) {
             if (now >= sampleLocal) {
                 sample();
@@ -183,19 +237,34 @@ final class SlabsRun {
                 resync(now);
                 now = 0;
             }
-            // The earliest valid cross event bounds the window, and so does the next sample.
-            int top = single != null ? -1 : cross.validTop(now);
-            double h = top >= 0 ? cross.time(top) : INF;
-            double end = Math.min(Math.min(Math.min(h, resyncAt), sampleLocal), clock.untilLocal);
-            boolean last = end == clock.untilLocal && h > clock.untilLocal && resyncAt > clock.untilLocal;
-            if (single != null) {
-                single.runWindow(end, last);
+            if (merged) {
+                // Up to the next resync, sample or the end, or until the phase's budget of events is spent.
+                double end = Math.min(Math.min(resyncAt, sampleLocal), clock.untilLocal);
+                boolean last = end == clock.untilLocal && resyncAt > clock.untilLocal;
+                whole.stopTime = INF;
+                whole.runWindow(end, last);
+                if (whole.stopTime < INF) {
+                    now = whole.stopTime;
+                    if (policy.worthTrying(whole.events - phaseEvents, whole.crossSlabEvents - phaseCrossSlabEvents)) {
+                        split(now);
+                    } else {
+                        startMergedPhase(policy.recheckBudget());
+                    }
+                    continue;
+                }
                 if (last) {
                     return;
                 }
                 now = end;
                 continue;
             }
+            // The earliest valid cross event bounds the window, and so does the next sample.
+            int top = cross.validTop(now);
+            double h = top >= 0 ? cross.time(top) : INF;
+            double end = Math.min(Math.min(Math.min(h, resyncAt), sampleLocal), clock.untilLocal);
+            boolean last = end == clock.untilLocal && h > clock.untilLocal && resyncAt > clock.untilLocal;
+            long keptBefore = slabEvents();
+            long undoneBefore = undoneEvents();
             long t0 = System.nanoTime();
             marks.startWindow();
             counters.windows++;
@@ -267,7 +336,81 @@ final class SlabsRun {
                 progressMark = counters.windows;
                 progress.simulatedTime(clock.epoch + now);
             }
+            if (policy.mergeAfter(slabEvents() - keptBefore, undoneEvents() - undoneBefore)) {
+                merge(now);
+            }
         }
+    }
+
+    /** Events kept by the slabs and the serial phases between their windows, so far. */
+    private long slabEvents() {
+        long events = counters.crossDomainEvents + counters.migrations;
+        for (Domain d : domains) {
+            events += d.events;
+        }
+        return events;
+    }
+
+    private long undoneEvents() {
+        long undone = 0;
+        for (Domain d : domains) {
+            undone += d.undoneEvents;
+        }
+        return undone;
+    }
+
+    /**
+     * Ends the split phase at local {@code now}, between windows, every event before {@code now}
+     * processed: the discs of edge columns, whose slabs predicted them against their own columns only,
+     * are predicted against their whole neighbourhood; every other disc's event already is its next
+     * one. The cross events are dropped and the whole domain's calendar is built over every disc, for a
+     * phase of the policy's budget of events.
+     */
+    private void merge(double now) {
+        counters.merges++;
+        for (int i = 0; i < n; i++) {
+            if (table.invMass(i) > 0 && columns.inEdgeColumn(i)) {
+                table.setEventTime(i, whole.predictFull(i, now));
+            }
+        }
+        cross.clear();
+        whole.rebuildQueue(now);
+        startMergedPhase(policy.nextBudget());
+        merged = true;
+    }
+
+    /** A merged phase of {@code budget} events begins: its counts start from here. */
+    private void startMergedPhase(long budget) {
+        whole.eventLimit = whole.events + budget;
+        phaseEvents = whole.events;
+        phaseCrossSlabEvents = whole.crossSlabEvents;
+    }
+
+    /**
+     * Ends a merged phase at local {@code now}, every event before {@code now} processed: each disc of
+     * an edge column, and each disc whose candidate partner is now in another slab (it moved there
+     * during the phase), is predicted by its own slab (own columns only, so that no window touches a
+     * foreign disc); every slab's calendar is built over its discs and the cross events are predicted
+     * anew.
+     */
+    private void split(double now) {
+        startWorkers();
+        whole.eventLimit = Long.MAX_VALUE;
+        for (int i = 0; i < n; i++) {
+            if (table.invMass(i) == 0) {
+                continue;
+            }
+            int own = columns.ownerOfDisc(i);
+            int p = table.partner(i);
+            if (columns.inEdgeColumn(i) || (p >= 0 && columns.ownerOfDisc(p) != own)) {
+                table.setEventTime(i, domains[own].predictFull(i, now));
+            }
+        }
+        for (Domain d : domains) {
+            d.rebuildQueue(now);
+        }
+        cross.predictAll(now);
+        merged = false;
     }
 
     /**
@@ -276,10 +419,12 @@ final class SlabsRun {
      */
     void everyDomain(int kind) {
         task.kind = kind;
-        barrier.publish();
+        if (threaded) {
+            barrier.publish();
+        }
         domains[0].runTaskSafely(kind);
         for (int d = 1; d < domainCount; d++) {
-            if (sequential) {
+            if (!threaded) {
                 domains[d].runTaskSafely(kind);
             } else {
                 barrier.awaitDone(d);
@@ -288,6 +433,18 @@ final class SlabsRun {
         if (task.failure != null) {
             throwFailure();
         }
+    }
+
+    /** Starts the worker threads, once (not in sequential mode). */
+    private void startWorkers() {
+        if (threaded || workers.length == 0) {
+            return;
+        }
+        for (int d = 1; d <= workers.length; d++) {
+            Domain dom = domains[d];
+            workers[d - 1] = Thread.ofPlatform().daemon().name("slabs-domain-" + d).start(() -> dom.work(barrier));
+        }
+        threaded = true;
     }
 
     private void throwFailure() {
@@ -370,7 +527,7 @@ final class SlabsRun {
      */
     private void sample() {
         double virialSum = serialVirial.total();
-        for (Domain d : domains) {
+        for (Domain d : counted) {
             virialSum += d.virial.total();
         }
         domains[0].motion.stateAt(samples.state(), 0, n, samples.next() - clock.epoch);
@@ -384,6 +541,11 @@ final class SlabsRun {
      * {@link DiscTable#RESYNC_SPANS} of the longest span away.
      */
     private void replan(double shift) {
+        if (merged && domainCount > 1) {
+            whole.replanOwn(shift);
+            resyncAt = DiscTable.RESYNC_SPANS * whole.span;
+            return;
+        }
         task.shift = shift;
         everyDomain(DomainTask.REPLAN);
         double spanMax = 0;

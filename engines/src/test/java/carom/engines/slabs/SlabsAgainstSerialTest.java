@@ -22,7 +22,9 @@ import org.junit.jupiter.api.Test;
 /**
  * Several domains against the serial reference where cross-slab traffic is heavy: dense mid-size
  * scenes cut into 2 to 4 slabs (the windows are short, some are rolled back) and the six-disc chains
- * laid across slab boundaries, whose momentum crosses a boundary faster than any disc moves.
+ * laid across slab boundaries, whose momentum crosses a boundary faster than any disc moves. Kept to
+ * windows (tunable {@code windowEvents=0}): such traffic would otherwise soon merge the run
+ * ({@link SlabsMergeTest}), and these tests are for the windows.
  */
 class SlabsAgainstSerialTest {
     private static final double SAME = 1e-8;
@@ -33,7 +35,7 @@ class SlabsAgainstSerialTest {
 
     /** Without {@link Invariants#check}, whose energy check assumes elastic flight without gravity. */
     private static RunResult slabsWithEffects(Scene scene, int domains) {
-        RunResult r = new SlabsEngine().run(scene, RunOptions.until(scene.until()).withThreads(domains));
+        RunResult r = FixedDomains.windowsOnly(domains).run(scene, RunOptions.until(scene.until()));
         Invariants.noOverlapsAndInside(scene, r.finalState());
         return r;
     }
@@ -154,10 +156,11 @@ class SlabsAgainstSerialTest {
 
     @Test
     void threadsChangeNothing() {
-        // Each window is a deterministic function of its start state: threaded, parking and sequential
-        // (measurement mode) runs give the same bits and the same windows.
+        // Each window is a deterministic function of its start state, and so is the choice of merging
+        // (counts, not time): threaded, parking and sequential (measurement mode) runs give the same bits,
+        // the same windows and the same merged phases (here as many as can be).
         Scene scene = RandomScenes.dense(1600, 0.6, true, 9, 0.3);
-        RunOptions options = RunOptions.until(scene.until()).withThreads(3);
+        RunOptions options = FixedDomains.alternating(3, 400).options(RunOptions.until(scene.until()));
         RunResult threaded = new SlabsEngine().run(scene, options);
         RunResult sequential = new SlabsEngine().run(scene, options.withTunable("sequential", "true"));
         // Threads that park at once at every barrier (no spinning) hand off through park/unpark only.
@@ -165,7 +168,8 @@ class SlabsAgainstSerialTest {
         for (RunResult other : new RunResult[] {sequential, parking}) {
             assertThat(other.finalState().x).isEqualTo(threaded.finalState().x);
             assertThat(other.finalState().vy).isEqualTo(threaded.finalState().vy);
-            for (String counter : new String[] {"windows", "rollbacks", "undoneEvents", "crossDomainEvents", "events"}) {
+            for (String counter : new String[] {"windows", "rollbacks", "undoneEvents", "crossDomainEvents", "events",
+                    "merges", "mergedEvents"}) {
                 assertThat(other.counters().get(counter)).as(counter).isEqualTo(threaded.counters().get(counter));
             }
         }

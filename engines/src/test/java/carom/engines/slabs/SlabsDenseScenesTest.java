@@ -7,13 +7,14 @@ import carom.core.engine.RunResult;
 import carom.engines.reference.ExactEngineDenseScenesContract;
 
 /**
- * The dense scenes every exact engine passes, on two domains: several windows, clock re-anchorings
- * (each domain rebases and rebuilds its own discs in its own thread), counters consistent.
+ * The dense scenes every exact engine passes, on two domains merged and split in turn: several
+ * windows, clock re-anchorings in both phases (each domain rebases and rebuilds its own discs in its
+ * own thread; merged, the whole domain all of them), counters consistent.
  */
 class SlabsDenseScenesTest extends ExactEngineDenseScenesContract {
     @Override
     protected Engine engine() {
-        return new FixedDomains(2);
+        return FixedDomains.alternating(2, 500);
     }
 
     @Override
