@@ -28,12 +28,10 @@ import java.util.Map;
 final class SlabsCounters {
     private static final ThreadMXBean CPU = ManagementFactory.getThreadMXBean();
 
-    /** Key of {@link #merges}: merged phases begun (the slabs' windows did not pay, {@link MergePolicy}). */
-    static final String MERGES = "merges";
-    /** Key of the events processed in merged phases. */
-    static final String MERGED_EVENTS = "mergedEvents";
-    /** Key of the events of merged phases that would have been cross-slab ones had the run been split. */
-    static final String MERGED_CROSS_SLAB_EVENTS = "mergedCrossSlabEvents";
+    // Merged phases (MergePolicy): Counter.MERGES, MERGED_EVENTS, MERGED_CROSS_SLAB_EVENTS.
+    static final String MERGES = Counter.MERGES.key;
+    static final String MERGED_EVENTS = Counter.MERGED_EVENTS.key;
+    static final String MERGED_CROSS_SLAB_EVENTS = Counter.MERGED_CROSS_SLAB_EVENTS.key;
 
     long resyncs;
     long merges;
