@@ -22,14 +22,12 @@ import java.io.PrintStream;
 import java.io.UncheckedIOException;
 import java.io.Writer;
 import java.nio.charset.Charset;
-import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.Callable;
-import java.util.function.Supplier;
 import jdk.jfr.Recording;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -123,13 +121,13 @@ final class SimulateCommand implements Callable<Integer> {
         Double checkedUntil = until == null ? null : checkedUntil(until);
         int workers = threads == null ? Math.min(Runtime.getRuntime().availableProcessors(), EnginesCommand.MAX_THREADS)
                 : checkedThreads(threads);
-        Engine engine = aboutScene(() -> EnginesCommand.engineNamed(engineName));
+        Engine engine = new SceneFile(sceneFile).about(() -> EnginesCommand.engineNamed(engineName));
         checkTunables(engine);
         checkSampling(engine);
         checkOutputs();
-        Scene fromFile = aboutScene(() -> SceneReader.read(scenePath()));
+        Scene fromFile = new SceneFile(sceneFile).about(() -> SceneReader.read(new SceneFile(sceneFile).path()));
         Scene scene = checkedUntil == null ? fromFile : fromFile.withUntil(checkedUntil);
-        aboutScene(() -> {
+        new SceneFile(sceneFile).about(() -> {
             engine.checkSupports(scene);
             return null;
         });
@@ -160,7 +158,7 @@ final class SimulateCommand implements Callable<Integer> {
                     options = options.withSamples(every, sampler);
                 }
                 RunOptions chosen = options;
-                result = aboutScene(() -> engine.run(scene, chosen));
+                result = new SceneFile(sceneFile).about(() -> engine.run(scene, chosen));
             } catch (IOException e) {
                 throw new UncheckedIOException("cannot write the trajectory: " + e.getMessage(), e);
             }
@@ -199,13 +197,6 @@ final class SimulateCommand implements Callable<Integer> {
         return 0;
     }
 
-    private Path scenePath() {
-        try {
-            return Path.of(sceneFile);
-        } catch (InvalidPathException e) {
-            throw new BadInputException("not a valid file name: " + Quoted.bare(e.getReason()));
-        }
-    }
 
     static double checkedUntil(double t) {
         if (!(t > 0) || Double.isInfinite(t)) {
@@ -279,12 +270,4 @@ final class SimulateCommand implements Callable<Integer> {
         AtomicOutput.checkWritable(file, option);
     }
 
-    /** Bad input found while handling the scene names the scene file, as SPEC asks. */
-    private <T> T aboutScene(Supplier<T> step) {
-        try {
-            return step.get();
-        } catch (BadInputException e) {
-            throw new BadInputException(Quoted.fileName(sceneFile) + ": " + e.getMessage());
-        }
-    }
 }

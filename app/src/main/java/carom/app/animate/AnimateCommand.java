@@ -1,5 +1,6 @@
 package carom.app.animate;
 
+import carom.app.SceneFile;
 import carom.app.AtomicOutput;
 import carom.app.EnginesCommand;
 import carom.app.ProgressBar;
@@ -22,10 +23,8 @@ import java.io.UncheckedIOException;
 import java.math.BigDecimal;
 import java.math.MathContext;
 import java.math.RoundingMode;
-import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
-import java.util.function.Supplier;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -140,14 +139,14 @@ public final class AnimateCommand implements Callable<Integer> {
     }
 
     private long fromScene(ColourMode mode, int delay, String comment) {
-        Engine engine = aboutScene(() -> EnginesCommand.engineNamed(engineName));
+        Engine engine = new SceneFile(sceneFile).about(() -> EnginesCommand.engineNamed(engineName));
         if (!engine.samples()) {
             throw new BadInputException("--engine: " + engine.name() + " cannot stop at given times (engines that can: "
                     + String.join(", ", EngineCatalog.all().stream().filter(Engine::samples).map(Engine::name).toList()) + ")");
         }
-        Scene fromFile = aboutScene(() -> SceneReader.read(scenePath()));
+        Scene fromFile = new SceneFile(sceneFile).about(() -> SceneReader.read(new SceneFile(sceneFile).path()));
         Scene scene = until == null ? fromFile : fromFile.withUntil(until);
-        aboutScene(() -> {
+        new SceneFile(sceneFile).about(() -> {
             engine.checkSupports(scene);
             return null;
         });
@@ -176,7 +175,7 @@ public final class AnimateCommand implements Callable<Integer> {
     private void run(Engine engine, Scene scene, int threads, double dt, Sampler sampler) {
         try (ProgressBar bar = ProgressBar.forRun(err, scene.until())) {
             RunOptions options = RunOptions.until(scene.until()).withThreads(threads).withProgress(bar).withSamples(dt, sampler);
-            aboutScene(() -> engine.run(scene, options));
+            new SceneFile(sceneFile).about(() -> engine.run(scene, options));
         }
     }
 
@@ -187,7 +186,7 @@ public final class AnimateCommand implements Callable<Integer> {
                 throw new BadInputException(option + ": not with --trajectory (the file's frames are drawn as they are)");
             }
         }
-        Scene scene = sceneFile == null ? null : aboutScene(() -> SceneReader.read(scenePath()));
+        Scene scene = sceneFile == null ? null : new SceneFile(sceneFile).about(() -> SceneReader.read(new SceneFile(sceneFile).path()));
         // First pass: the whole file is checked before anything is written, and gives the top speed and the frame step.
         double topSpeed = 0;
         double first = 0;
@@ -264,20 +263,5 @@ public final class AnimateCommand implements Callable<Integer> {
         return rounded.signum() == 0 ? "0" : rounded.toPlainString();
     }
 
-    private Path scenePath() {
-        try {
-            return Path.of(sceneFile);
-        } catch (InvalidPathException e) {
-            throw new BadInputException("not a valid file name: " + Quoted.bare(e.getReason()));
-        }
-    }
 
-    /** Bad input found while handling the scene names the scene file, as for simulate. */
-    private <T> T aboutScene(Supplier<T> step) {
-        try {
-            return step.get();
-        } catch (BadInputException e) {
-            throw new BadInputException(Quoted.fileName(sceneFile) + ": " + e.getMessage());
-        }
-    }
 }

@@ -1,5 +1,6 @@
 package carom.app.render;
 
+import carom.app.SceneFile;
 import carom.app.EnginesCommand;
 import carom.core.BadInputException;
 import carom.core.Quoted;
@@ -10,14 +11,12 @@ import carom.core.scene.SceneReader;
 import carom.core.state.Discs;
 import java.awt.image.BufferedImage;
 import java.math.BigDecimal;
-import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import java.util.function.Supplier;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -83,9 +82,9 @@ public final class RenderCommand implements Callable<Integer> {
         if (size < MIN_SIZE || size > MAX_SIZE) {
             throw new BadInputException("--size: must be between " + MIN_SIZE + " and " + MAX_SIZE + " pixels, got " + size);
         }
-        Scene scene = aboutScene(() -> SceneReader.read(scenePath()));
-        Engine engine = aboutScene(() -> EnginesCommand.engineNamed(engineName));
-        aboutScene(() -> {
+        Scene scene = new SceneFile(sceneFile).about(() -> SceneReader.read(new SceneFile(sceneFile).path()));
+        Engine engine = new SceneFile(sceneFile).about(() -> EnginesCommand.engineNamed(engineName));
+        new SceneFile(sceneFile).about(() -> {
             engine.checkSupports(scene);
             return null;
         });
@@ -127,7 +126,7 @@ public final class RenderCommand implements Callable<Integer> {
         }
         // The processors, as simulate's default, within its bound.
         int threads = Math.min(Runtime.getRuntime().availableProcessors(), EnginesCommand.MAX_THREADS);
-        return aboutScene(() -> engine.run(scene.withUntil(t), RunOptions.until(t).withThreads(threads))).finalState();
+        return new SceneFile(sceneFile).about(() -> engine.run(scene.withUntil(t), RunOptions.until(t).withThreads(threads))).finalState();
     }
 
     /** The comma-separated times of {@code --at}, each finite and >= 0, without repeats, in the given order. */
@@ -171,20 +170,5 @@ public final class RenderCommand implements Callable<Integer> {
         return s.isEmpty() || s.chars().allMatch(c -> c == '.') ? "scene" : s;
     }
 
-    private Path scenePath() {
-        try {
-            return Path.of(sceneFile);
-        } catch (InvalidPathException e) {
-            throw new BadInputException("not a valid file name: " + Quoted.bare(e.getReason()));
-        }
-    }
 
-    /** Bad input found while handling the scene names the scene file, as for simulate. */
-    private <T> T aboutScene(Supplier<T> step) {
-        try {
-            return step.get();
-        } catch (BadInputException e) {
-            throw new BadInputException(Quoted.fileName(sceneFile) + ": " + e.getMessage());
-        }
-    }
 }

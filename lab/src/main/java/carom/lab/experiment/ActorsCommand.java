@@ -2,12 +2,8 @@ package carom.lab.experiment;
 
 import carom.core.BadInputException;
 import carom.engines.EngineCatalog;
-import carom.lab.report.OutputFolder;
-import carom.lab.run.Machine;
 import java.io.PrintStream;
-import java.nio.file.Path;
 import java.util.List;
-import java.util.Map;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -59,16 +55,8 @@ public final class ActorsCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         ActorsSettings settings = settings();
-        Path out = common.out;
-        OutputFolder.check(out, "--out");
-
-        Machine machine = Machine.current();
-        double loadBefore = Machine.loadAverage();
-        ExperimentRunner.Outcome outcome = new ExperimentRunner(settings.heap(), err, settings.quick()).run(settings.plans());
-        double loadAfter = Machine.loadAverage();
-        Map<String, byte[]> files = new ActorsReport(settings, machine, loadBefore, loadAfter, outcome.records()).files();
-        OutputFolder.write(out, files);
-        return ExperimentCommand.conclude(spec, out, files, outcome);
+        return ExperimentCommand.run(spec, err, common.out, settings.heap(), settings.quick(), settings.plans(),
+                (machine, before, after, records) -> new ActorsReport(settings, machine, before, after, records).files());
     }
 
     ActorsSettings settings() {

@@ -1,7 +1,11 @@
 package carom.lab.experiment;
 
 import carom.app.Main;
+import carom.lab.report.OutputFolder;
+import carom.lab.run.Machine;
 import carom.lab.run.TrialRecord;
+import java.io.PrintStream;
+import java.util.List;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.Map;
@@ -22,6 +26,28 @@ public final class ExperimentCommand implements Runnable {
     @Override
     public void run() {
         throw new ParameterException(spec.commandLine(), "missing experiment: use 'carom experiment thesis' or 'carom experiment actors'");
+    }
+
+    /** Turns an experiment's records into its report folder's files. */
+    @FunctionalInterface
+    interface Report {
+        Map<String, byte[]> files(Machine machine, double loadBefore, double loadAfter, List<TrialRecord> records);
+    }
+
+    /**
+     * What every experiment does: checks the output folder, runs the plans in child JVMs with the load
+     * average read before and after, writes the report folder and says what was written.
+     */
+    static int run(CommandSpec spec, PrintStream err, Path out, String heap, boolean quick, List<ChildPlan> plans,
+                   Report report) {
+        OutputFolder.check(out, "--out");
+        Machine machine = Machine.current();
+        double loadBefore = Machine.loadAverage();
+        ExperimentRunner.Outcome outcome = new ExperimentRunner(heap, err, quick).run(plans);
+        double loadAfter = Machine.loadAverage();
+        Map<String, byte[]> files = report.files(machine, loadBefore, loadAfter, outcome.records());
+        OutputFolder.write(out, files);
+        return conclude(spec, out, files, outcome);
     }
 
     /**

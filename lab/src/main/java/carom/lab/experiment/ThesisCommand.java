@@ -1,12 +1,8 @@
 package carom.lab.experiment;
 
 import carom.core.BadInputException;
-import carom.lab.report.OutputFolder;
-import carom.lab.run.Machine;
 import java.io.PrintStream;
-import java.nio.file.Path;
 import java.util.List;
-import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.stream.IntStream;
 import picocli.CommandLine.Command;
@@ -80,16 +76,8 @@ public final class ThesisCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         ThesisSettings settings = settings();
-        Path out = common.out;
-        OutputFolder.check(out, "--out");
-
-        Machine machine = Machine.current();
-        double loadBefore = Machine.loadAverage();
-        ExperimentRunner.Outcome outcome = new ExperimentRunner(settings.heap(), err, settings.quick()).run(settings.plans());
-        double loadAfter = Machine.loadAverage();
-        Map<String, byte[]> files = new ThesisReport(settings, machine, loadBefore, loadAfter, outcome.records()).files();
-        OutputFolder.write(out, files);
-        return ExperimentCommand.conclude(spec, out, files, outcome);
+        return ExperimentCommand.run(spec, err, common.out, settings.heap(), settings.quick(), settings.plans(),
+                (machine, before, after, records) -> new ThesisReport(settings, machine, before, after, records).files());
     }
 
     ThesisSettings settings() {
