@@ -6,15 +6,20 @@ import carom.core.BadInputException;
 import carom.core.engine.WorkEstimate;
 import carom.core.scene.Scene;
 import carom.core.scene.SceneReader;
+import com.code_intelligence.jazzer.junit.DictionaryEntries;
 import com.code_intelligence.jazzer.junit.FuzzTest;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Comparator;
+import java.util.concurrent.Callable;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.FutureTask;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
-import org.junit.jupiter.api.Timeout;
 
 /**
  * Mutation fuzz of the whole {@code carom simulate} command (Jazzer), in-process through
@@ -32,9 +37,11 @@ import org.junit.jupiter.api.Timeout;
  * fuzzes for long (see the parent pom). A failing input is written under {@code target/fuzz/}.
  */
 class SimulateFuzzTest {
-    static final String UNTIL = "0.01";
-    static final int MAX_DISCS = 2_000;
-    static final double MAX_COLLISIONS = 1e5;
+    private static final String UNTIL = "0.01";
+    private static final int MAX_DISCS = 2_000;
+    private static final double MAX_COLLISIONS = 1e5;
+    /** An input without an exit status after this long hangs; the bounds above keep a run to moments. */
+    private static final long HANG_SECONDS = 60;
 
     private static Path dir;
     private static Path scene;
@@ -58,14 +65,20 @@ class SimulateFuzzTest {
         }
     }
 
-    // A hang fails the input (in fuzzing mode Jazzer takes this as libFuzzer's per-input timeout).
+    // The scene format's words, so that mutation builds keys and values the reader knows.
+    @DictionaryEntries({"\"name\"", "\"box\"", "\"width\"", "\"height\"", "\"boundary\"", "\"walls\"",
+            "\"periodic\"", "\"species\"", "\"radius\"", "\"mass\"", "\"fixed\"", "\"particles\"", "\"x\"",
+            "\"y\"", "\"vx\"", "\"vy\"", "\"generate\"", "\"fractions\"", "\"count\"", "\"layout\"",
+            "\"lattice\"", "\"triangular\"", "\"random\"", "\"jitter\"", "\"velocity\"", "\"distribution\"",
+            "\"uniform\"", "\"maxwell\"", "\"scale\"", "\"temperature\"", "\"seed\"", "\"effects\"",
+            "\"gravity\"", "\"restitution\"", "\"wallRestitution\"", "\"tc\"", "\"until\"", "true", "false",
+            "null", "1e308", "-0", "4.9e-324", "9223372036854775808", "\\u0000", "\\ud800"})
     @FuzzTest(maxDuration = "20s")
-    @Timeout(60)
-    void simulateEndsWithAResultOrOneErrorLine(byte[] bytes) throws IOException {
+    void simulateEndsWithAResultOrOneErrorLine(byte[] bytes) throws Throwable {
         Files.write(scene, bytes);
         boolean readable;
         try {
-            Scene s = SceneReader.read(scene);
+            Scene s = answerWithinDeadline(() -> SceneReader.read(scene));
             if (s.size() > MAX_DISCS || WorkEstimate.collisions(s, Double.parseDouble(UNTIL)) > MAX_COLLISIONS) {
                 return;
             }
@@ -76,8 +89,8 @@ class SimulateFuzzTest {
         Files.deleteIfExists(finalState);
         Files.deleteIfExists(summary);
 
-        Cli r = Cli.run("simulate", scene.toString(), "--until", UNTIL, "--threads", "1",
-                "--out", finalState.toString(), "--summary", summary.toString());
+        Cli r = answerWithinDeadline(() -> Cli.run("simulate", scene.toString(), "--until", UNTIL, "--threads", "1",
+                "--out", finalState.toString(), "--summary", summary.toString()));
 
         String what = "exit " + r.status() + ", stderr: " + r.err().substring(0, Math.min(r.err().length(), 2_000));
         assertThat(r.err().lines()).as(what).noneMatch(line -> line.startsWith("\tat ") || line.startsWith("Caused by:"));
@@ -94,6 +107,24 @@ class SimulateFuzzTest {
             assertThat(r.err().lines()).as(what).noneMatch(line -> line.startsWith("error:"));
             assertThat(finalState).as(what).isRegularFile();
             assertThat(summary).as(what).isRegularFile();
+        }
+    }
+
+    /**
+     * Runs {@code work} on a thread of its own and returns its answer, rethrowing what it threw; fails
+     * if there is no answer within {@link #HANG_SECONDS}. Per input rather than JUnit's @Timeout, which
+     * in fuzzing mode would bound the whole fuzzing session.
+     */
+    private static <T> T answerWithinDeadline(Callable<T> work) throws Throwable {
+        FutureTask<T> task = new FutureTask<>(work);
+        Thread.ofPlatform().daemon().name("fuzz-input").start(task);
+        try {
+            return task.get(HANG_SECONDS, TimeUnit.SECONDS);
+        } catch (TimeoutException e) {
+            task.cancel(true);
+            throw new AssertionError("no answer within " + HANG_SECONDS + " s: the input hangs");
+        } catch (ExecutionException e) {
+            throw e.getCause();
         }
     }
 }

@@ -4,18 +4,23 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import carom.core.BadInputException;
 import carom.core.Quoted;
+import com.code_intelligence.jazzer.junit.DictionaryEntries;
 import com.code_intelligence.jazzer.junit.FuzzTest;
 import java.io.IOException;
-import java.io.UncheckedIOException;
 import java.nio.ByteBuffer;
 import java.nio.charset.CharacterCodingException;
 import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.FutureTask;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.function.Supplier;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
-import org.junit.jupiter.api.Timeout;
 
 /**
  * Mutation fuzz of the scene reader (Jazzer): whatever bytes a scene file holds, {@link SceneReader}
@@ -34,6 +39,8 @@ import org.junit.jupiter.api.Timeout;
 class SceneReaderFuzzTest {
     /** Longest error message: the reader's own text around a few values each cut by {@link Quoted}. */
     private static final int MAX_MESSAGE_CHARS = 2_000;
+    /** An input without a verdict after this long hangs; the slowest seed (100,000 discs) takes well under a second. */
+    private static final long HANG_SECONDS = 30;
 
     private static Path dir;
     private static Path file;
@@ -50,26 +57,27 @@ class SceneReaderFuzzTest {
         Files.deleteIfExists(dir);
     }
 
-    // A hang fails the input (in fuzzing mode Jazzer takes this as libFuzzer's per-input timeout); no
-    // valid input needs more than a fraction of it.
+    // The scene format's words, so that mutation builds keys and values the reader knows.
+    @DictionaryEntries({"\"name\"", "\"box\"", "\"width\"", "\"height\"", "\"boundary\"", "\"walls\"",
+            "\"periodic\"", "\"species\"", "\"radius\"", "\"mass\"", "\"fixed\"", "\"particles\"", "\"x\"",
+            "\"y\"", "\"vx\"", "\"vy\"", "\"generate\"", "\"fractions\"", "\"count\"", "\"layout\"",
+            "\"lattice\"", "\"triangular\"", "\"random\"", "\"jitter\"", "\"velocity\"", "\"distribution\"",
+            "\"uniform\"", "\"maxwell\"", "\"scale\"", "\"temperature\"", "\"seed\"", "\"effects\"",
+            "\"gravity\"", "\"restitution\"", "\"wallRestitution\"", "\"tc\"", "\"until\"", "true", "false",
+            "null", "1e308", "-0", "4.9e-324", "9223372036854775808", "\\u0000", "\\ud800"})
     @FuzzTest(maxDuration = "20s")
-    @Timeout(30)
-    void readsASceneOrRejectsItAsBadInput(byte[] bytes) {
-        try {
-            Files.write(file, bytes);
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
-        String fromFile = verdict(() -> SceneReader.read(file));
+    void readsASceneOrRejectsItAsBadInput(byte[] bytes) throws Throwable {
+        Files.write(file, bytes);
+        String fromFile = answerWithinDeadline(() -> verdict(() -> SceneReader.read(file)));
         String text = strictUtf8WithoutByteOrderMark(bytes);
         if (text != null) {
             // The same text through the other door: the same scene, or the same complaint.
-            assertThat(verdict(() -> SceneReader.parse(text))).isEqualTo(fromFile);
+            assertThat(answerWithinDeadline(() -> verdict(() -> SceneReader.parse(text)))).isEqualTo(fromFile);
         }
     }
 
     /** "scene N discs" for an accepted input, "bad input: MESSAGE" for a rejected one; anything else fails. */
-    private static String verdict(java.util.function.Supplier<Scene> reading) {
+    private static String verdict(Supplier<Scene> reading) {
         Scene scene;
         try {
             scene = reading.get();
@@ -95,6 +103,24 @@ class SceneReaderFuzzTest {
             return text.startsWith("\uFEFF") ? null : text;
         } catch (CharacterCodingException e) {
             return null;
+        }
+    }
+
+    /**
+     * Runs {@code work} on a thread of its own and returns its answer, rethrowing what it threw; fails
+     * if there is no answer within {@link #HANG_SECONDS}. Per input rather than JUnit's @Timeout, which
+     * in fuzzing mode would bound the whole fuzzing session.
+     */
+    private static <T> T answerWithinDeadline(Callable<T> work) throws Throwable {
+        FutureTask<T> task = new FutureTask<>(work);
+        Thread.ofPlatform().daemon().name("fuzz-input").start(task);
+        try {
+            return task.get(HANG_SECONDS, TimeUnit.SECONDS);
+        } catch (TimeoutException e) {
+            task.cancel(true);
+            throw new AssertionError("no answer within " + HANG_SECONDS + " s: the input hangs");
+        } catch (ExecutionException e) {
+            throw e.getCause();
         }
     }
 }
