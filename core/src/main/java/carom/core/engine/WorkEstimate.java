@@ -1,7 +1,6 @@
 package carom.core.engine;
 
 import carom.core.scene.Scene;
-import carom.core.state.Discs;
 
 /**
  * About how many collisions a scene takes to reach a time, from its initial state and kinetic theory,
@@ -20,35 +19,23 @@ public final class WorkEstimate {
 
     /** Collisions expected for {@code scene} to run from 0 to {@code until}; 0 when nothing moves. */
     public static double collisions(Scene scene, double until) {
-        Discs d = scene.newDiscs();
-        int mobile = 0;
-        double mass = 0;
-        double twiceKinetic = 0;
-        double radii = 0;
-        for (int i = 0; i < d.n; i++) {
-            radii += d.radius[i];
-            if (d.invMass[i] > 0) {
-                double m = 1 / d.invMass[i];
-                mobile++;
-                mass += m;
-                twiceKinetic += m * (d.vx[i] * d.vx[i] + d.vy[i] * d.vy[i]);
-            }
-        }
+        // Read off the scene's own state: a copy of a million discs would cost more than the estimate.
+        int mobile = scene.mobileCount();
         if (mobile == 0) {
             return 0;
         }
         double w = scene.box().width();
         double h = scene.box().height();
         double g = Math.hypot(scene.effects().gravityX(), scene.effects().gravityY());
-        double speed = Math.sqrt(twiceKinetic / mass);
+        double speed = scene.rmsSpeed();
         if (g > 0) {
             speed = scene.box().periodic() ? speed + g * until : Math.sqrt(speed * speed + 2 * g * Math.max(w, h));
         }
         double area = w * h;
         double phi = Math.min(scene.packingFraction(), 0.99);
         double chi = Math.min(1 / ((1 - phi) * (1 - phi)), MAX_CONTACT_VALUE);
-        double sigma = 2 * radii / d.n;
-        double pairRate = d.n / area * sigma * Math.sqrt(2) * speed * chi;
+        double sigma = 2 * scene.meanRadius();
+        double pairRate = scene.size() / area * sigma * Math.sqrt(2) * speed * chi;
         double wallRate = scene.box().periodic() ? 0 : 2 * speed / (w + h);
         return mobile * until * (pairRate / 2 + wallRate);
     }

@@ -60,6 +60,38 @@ public final class Scene {
         return area / box.area();
     }
 
+    /** The discs that move (all but the fixed ones). */
+    public int mobileCount() {
+        int mobile = 0;
+        for (int i = 0; i < initial.n; i++) {
+            mobile += initial.invMass[i] > 0 ? 1 : 0;
+        }
+        return mobile;
+    }
+
+    /** The mobile discs' root-mean-square speed at t = 0, weighted by mass; 0 when none is mobile. */
+    public double rmsSpeed() {
+        double mass = 0;
+        double twiceKinetic = 0;
+        for (int i = 0; i < initial.n; i++) {
+            if (initial.invMass[i] > 0) {
+                double m = 1 / initial.invMass[i];
+                mass += m;
+                twiceKinetic += m * (initial.vx[i] * initial.vx[i] + initial.vy[i] * initial.vy[i]);
+            }
+        }
+        return mass == 0 ? 0 : Math.sqrt(twiceKinetic / mass);
+    }
+
+    /** The mean radius of all discs; 0 without discs. */
+    public double meanRadius() {
+        double radii = 0;
+        for (int i = 0; i < initial.n; i++) {
+            radii += initial.radius[i];
+        }
+        return initial.n == 0 ? 0 : radii / initial.n;
+    }
+
     public boolean hasFixedDiscs() {
         return species.stream().anyMatch(Species::fixed);
     }

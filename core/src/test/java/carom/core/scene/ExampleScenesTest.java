@@ -95,6 +95,10 @@ class ExampleScenesTest {
         assertThat(scene.size()).isEqualTo(2500);
         assertThat(scene.box().periodic()).isTrue();
         assertThat(scene.packingFraction()).isCloseTo(0.5, within(1e-12));
+        // Kinetic energy N kT with kT = 1 and m = 1: a mean squared speed of 2.
+        assertThat(scene.rmsSpeed()).isCloseTo(Math.sqrt(2), within(1e-12));
+        assertThat(scene.mobileCount()).isEqualTo(2500);
+        assertThat(scene.meanRadius()).isCloseTo(Math.sqrt(0.5 / Math.PI), within(1e-12));
         Discs d = scene.newDiscs();
         double kinetic = 0;
         for (int i = 0; i < d.n; i++) {
