@@ -44,11 +44,15 @@ public sealed interface Tunable<T> permits Tunable.Real, Tunable.Whole, Tunable.
         return options.tunables().containsKey(name());
     }
 
+    /** The unit of the value, or empty for a flag or a pure number. */
+    default String unit() {
+        return "";
+    }
+
     /** {@code name=default (type, unit): meaning}, the line {@code carom engines --tunables} prints. */
     default String describe() {
-        String unit = this instanceof Real r && !r.unit().isEmpty() ? ", " + r.unit()
-                : this instanceof Whole w && !w.unit().isEmpty() ? ", " + w.unit() : "";
-        return name() + "=" + defaultText() + " (" + typeText() + unit + "): " + meaning();
+        return name() + "=" + defaultText() + " (" + typeText() + (unit().isEmpty() ? "" : ", " + unit()) + "): "
+                + meaning();
     }
 
     /**

@@ -28,10 +28,6 @@ import java.util.Map;
 final class SlabsCounters {
     private static final ThreadMXBean CPU = ManagementFactory.getThreadMXBean();
 
-    // Merged phases (MergePolicy): Counter.MERGES, MERGED_EVENTS, MERGED_CROSS_SLAB_EVENTS.
-    static final String MERGES = Counter.MERGES.key;
-    static final String MERGED_EVENTS = Counter.MERGED_EVENTS.key;
-    static final String MERGED_CROSS_SLAB_EVENTS = Counter.MERGED_CROSS_SLAB_EVENTS.key;
 
     long resyncs;
     long merges;
@@ -129,9 +125,9 @@ final class SlabsCounters {
         counters.put(Counter.WINDOW_CPU_NANOS.key, windowCpu);
         counters.put(Counter.BARRIER_SPINS.key, (long) spins);
         if (slabs > 1) {
-            counters.put(MERGES, merges);
-            counters.put(MERGED_EVENTS, domains[slabs].events);
-            counters.put(MERGED_CROSS_SLAB_EVENTS, domains[slabs].crossSlabEvents);
+            counters.put(Counter.MERGES.key, merges);
+            counters.put(Counter.MERGED_EVENTS.key, domains[slabs].events);
+            counters.put(Counter.MERGED_CROSS_SLAB_EVENTS.key, domains[slabs].crossSlabEvents);
         }
         return Map.copyOf(counters);
     }
