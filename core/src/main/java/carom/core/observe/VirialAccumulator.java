@@ -49,6 +49,27 @@ public final class VirialAccumulator {
         }
     }
 
+    /** The block sums so far, for a checkpoint ({@link #restore}). */
+    public double[] blockSums() {
+        return sums.clone();
+    }
+
+    /**
+     * Takes up block sums a checkpoint saved from an accumulator over [start, {@code savedEnd}]: as they
+     * were when the blocks are the same; otherwise (a run resumed to another end time) each saved
+     * block's sum goes into the block of its middle, so the total stays and the error bar is approximate.
+     */
+    public void restore(double[] saved, double savedEnd) {
+        double savedBlock = (savedEnd - start) / saved.length;
+        if (saved.length == sums.length && savedBlock == blockLength) {
+            System.arraycopy(saved, 0, sums, 0, sums.length);
+            return;
+        }
+        for (int b = 0; b < saved.length; b++) {
+            add(start + (b + 0.5) * savedBlock, saved[b]);
+        }
+    }
+
     /** The virial sum over the whole run so far (every block), for a sample's running total. */
     public double total() {
         double t = 0;
