@@ -266,7 +266,7 @@ final class FastRun {
             }
             if (events - progressMark >= (1 << 16)) {
                 progressMark = events;
-                progress.simulatedTime(epoch + now);
+                progress.progress(epoch + now, pairCollisions + wallCollisions);
             }
             if ((events & STOP_POLL_MASK) == 0 && checkpoints != null && checkpoints.stopRequested()) {
                 // Between two events: the next one is still queued, so the checkpoint continues from here.

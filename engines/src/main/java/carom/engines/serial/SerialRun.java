@@ -178,7 +178,7 @@ final class SerialRun {
             }
             double length = step(epoch, remaining);
             epoch = length >= remaining ? until : epoch + length;
-            progress.simulatedTime(epoch);
+            progress.progress(epoch, pairCollisions + wallCollisions);
         }
         if (checkpoints != null) {
             checkpoints.save(lastStepStart == null ? epoch : lastStepEpoch, lastStepStart == null ? save() : lastStepStart);
