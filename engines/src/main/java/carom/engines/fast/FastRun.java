@@ -142,7 +142,7 @@ final class FastRun {
         p.resumeCount(in.getLong());
         energyStart = in.getDouble();
         momentumStart = new double[] {in.getDouble(), in.getDouble()};
-        virial.restore(in.getDoubles(), savedUntil);
+        virial.restore(in.getDoubles(), savedUntil, in.getDouble());
         TableState.restore(table, in);
         queue.restore(in);
         in.end();
@@ -158,7 +158,7 @@ final class FastRun {
                 .putDouble(resyncAt).putLong(samples.index()).putLong(pairCollisions).putLong(wallCollisions)
                 .putLong(events).putLong(crossings).putLong(staleEvents).putLong(resyncs).putLong(p.predictions())
                 .putDouble(energyStart).putDouble(momentumStart[0]).putDouble(momentumStart[1])
-                .putDoubles(virial.blockSums());
+                .putDoubles(virial.blockSums()).putDouble(virial.total());
         TableState.save(table, out);
         queue.save(out);
         checkpoints.save(time, out.bytes());

@@ -134,7 +134,7 @@ final class SerialRun {
         earlyStepEnds = in.getLong();
         energyStart = in.getDouble();
         momentumStart = new double[] {in.getDouble(), in.getDouble()};
-        virial.restore(in.getDoubles(), savedUntil);
+        virial.restore(in.getDoubles(), savedUntil, in.getDouble());
         in.getDoubles(d.x);
         in.getDoubles(d.y);
         in.getDoubles(d.vx);
@@ -150,7 +150,7 @@ final class SerialRun {
         StateBytes.Out out = new StateBytes.Out(STATE_TAG).putDouble(until).putDouble(epoch).putLong(pairCollisions)
                 .putLong(wallCollisions).putLong(predictions).putLong(steps).putLong(earlyStepEnds)
                 .putDouble(energyStart).putDouble(momentumStart[0]).putDouble(momentumStart[1])
-                .putDoubles(virial.blockSums()).putDoubles(d.x).putDoubles(d.y).putDoubles(d.vx).putDoubles(d.vy);
+                .putDoubles(virial.blockSums()).putDouble(virial.total()).putDoubles(d.x).putDoubles(d.y).putDoubles(d.vx).putDoubles(d.vy);
         TableState.saveRestitution(restitution, n, out);
         return out.bytes();
     }
