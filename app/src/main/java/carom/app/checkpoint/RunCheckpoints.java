@@ -55,13 +55,23 @@ public final class RunCheckpoints implements Checkpoints {
 
     @Override
     public void save(double time, byte[] engineState) {
+        hold(time, engineState).write();
+    }
+
+    /** The observables are taken as they are now, when the engine's state is. */
+    @Override
+    public Held hold(double time, byte[] engineState) {
         CheckpointFile now = settings.at(time, engineState, observing == null ? List.of() : observing.states(),
                 observing == null ? 0 : observing.lastVirialSum());
+        return () -> write(now);
+    }
+
+    private void write(CheckpointFile now) {
         byte[] bytes = now.encode();
         try (AtomicOutput out = new AtomicOutput()) {
             out.stageFile(file, temp -> Files.write(temp, bytes));
             out.commit();
         }
-        lastSaved = time;
+        lastSaved = now.time();
     }
 }

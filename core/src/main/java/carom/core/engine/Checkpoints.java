@@ -24,6 +24,21 @@ public interface Checkpoints {
      */
     void save(double time, byte[] engineState);
 
+    /** A checkpoint taken and not yet written ({@link #hold}). */
+    @FunctionalInterface
+    interface Held {
+        void write();
+    }
+
+    /**
+     * Takes a checkpoint now, with whatever the run's side keeps beside the engine's state (the
+     * observables as they are now), to be written later or never: an engine whose last pass is clipped
+     * at {@code until} holds the state at that pass's start and writes it at the end.
+     */
+    default Held hold(double time, byte[] engineState) {
+        return () -> save(time, engineState);
+    }
+
     /**
      * The index of the first periodic checkpoint after simulated time {@code time}: checkpoints fall at
      * k·every for k = 1, 2, ... (t = 0 has none), so a run resumed at {@code time} takes up the count.

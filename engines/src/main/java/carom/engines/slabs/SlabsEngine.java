@@ -57,6 +57,17 @@ public final class SlabsEngine implements Engine {
     }
 
     @Override
+    public boolean checkpoints() {
+        return true;
+    }
+
+    @Override
+    public RunResult resume(Scene scene, RunOptions options, byte[] saved) {
+        checkSupports(scene);
+        return new SlabsRun(scene, options).resume(saved);
+    }
+
+    @Override
     public RunResult run(Scene scene, RunOptions options) {
         checkSupports(scene);
         return new SlabsRun(scene, options).run();
