@@ -53,6 +53,9 @@ class CheckpointResumeTest {
         "serial, gas-in-box.json, 0.5, 1.2, 1",
         "serial, bouncing-ball.json, 0.7, 2.0, 1",
         "serial, cooling-gas.json, 0.3, 0.8, 1",
+        "slabs, gas.json, 0.6, 1.5, 2",
+        "slabs, cooling-gas.json, 0.3, 0.8, 3",
+        "slabs, galton-board.json, 1.0, 2.5, 4",
     })
     void aRunResumedPastItsEndWritesTheBytesOfOneLongerRun(String engine, String scene, double t1, double t2, int threads)
             throws IOException {
