@@ -149,7 +149,8 @@ final class FastRun {
         if (checkpoints != null) {
             checkpointIndex = Checkpoints.nextIndexAfter(time, checkpoints.every());
         }
-        return finish(started);
+        long before = pairCollisions + wallCollisions;
+        return finish(started).resumedAfter(before);
     }
 
     /** The state between two events, continuing from absolute {@code time}: see the class comment. */

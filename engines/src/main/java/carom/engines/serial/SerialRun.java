@@ -142,7 +142,8 @@ final class SerialRun {
         java.util.Arrays.fill(d.t, 0);
         TableState.restoreRestitution(restitution, n, in);
         in.end();
-        return run();
+        long before = pairCollisions + wallCollisions;
+        return run().resumedAfter(before);
     }
 
     /** The state at a step start (every clock at 0, local time 0 = absolute {@code epoch}). */

@@ -114,6 +114,7 @@ final class SlabsCheckpoint {
             run.marks.restore(in);
         }
         in.end();
+        run.collisionsBefore = run.counters.pairCollisions(run.counted) + run.counters.wallCollisions(run.counted);
         return now;
     }
 }

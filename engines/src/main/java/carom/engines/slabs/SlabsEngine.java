@@ -64,7 +64,9 @@ public final class SlabsEngine implements Engine {
     @Override
     public RunResult resume(Scene scene, RunOptions options, byte[] saved) {
         checkSupports(scene);
-        return new SlabsRun(scene, options).resume(saved);
+        SlabsRun run = new SlabsRun(scene, options);
+        RunResult result = run.run(saved);
+        return result.resumedAfter(run.collisionsBefore);
     }
 
     @Override

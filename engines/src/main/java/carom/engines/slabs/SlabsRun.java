@@ -91,7 +91,7 @@ final class SlabsRun {
      * one slab, that slab itself); and the slabs, then it, for the counters.
      */
     final Domain whole;
-    private final Domain[] counted;
+    final Domain[] counted;
     /** When windows do not pay and the run merges ({@link MergePolicy}); whether it is merged now. */
     final MergePolicy policy;
     boolean merged;
@@ -117,6 +117,8 @@ final class SlabsRun {
     /** Samples asked for ({@code --every}), and the next one's local time (+Infinity if none). */
     final SampleSchedule samples;
     private double sampleLocal;
+    /** Collisions before the checkpoint a resumed run started from. */
+    long collisionsBefore;
     /** The run's checkpoints, or null without. */
     private final SlabsCheckpoint checkpoints;
 
@@ -176,12 +178,8 @@ final class SlabsRun {
         return run(null);
     }
 
-    /** Continues the run {@code saved} was taken from ({@link SlabsCheckpoint}) to this run's until. */
-    RunResult resume(byte[] saved) {
-        return run(saved);
-    }
-
-    private RunResult run(byte[] saved) {
+    /** The run from the start, or continued from {@code saved} ({@link SlabsCheckpoint}) if not null. */
+    RunResult run(byte[] saved) {
         long started = System.nanoTime();
         double seconds;
         Discs out;
@@ -370,7 +368,7 @@ final class SlabsRun {
             counters.serialCpuNanos += SlabsCounters.cpuNanos() - c1;
             if (counters.windows - progressMark >= 1024) {
                 progressMark = counters.windows;
-                progress.simulatedTime(clock.epoch + now);
+                progress.progress(clock.epoch + now, counters.pairCollisions(counted) + counters.wallCollisions(counted));
             }
             if (policy.mergeAfter(slabEvents() - keptBefore, undoneEvents() - undoneBefore)) {
                 merge(now);
