@@ -113,7 +113,8 @@ class CheckpointResumeTest {
                     Thread.sleep(10);
                 }
                 assertThat(Files.exists(ckpt)).as("a first checkpoint").isTrue();
-                Process kill = new ProcessBuilder("kill", "-" + signal, String.valueOf(child.pid())).start();
+                // The shell's own kill: a kill binary is not on every machine.
+                Process kill = new ProcessBuilder("sh", "-c", "kill -" + signal + " " + child.pid()).start();
                 assertThat(kill.waitFor(30, TimeUnit.SECONDS)).isTrue();
                 assertThat(child.waitFor(2, TimeUnit.MINUTES)).as("the child stopped").isTrue();
             } finally {
