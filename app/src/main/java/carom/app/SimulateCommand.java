@@ -5,11 +5,16 @@ import carom.core.Quoted;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
+import carom.core.engine.RunStopped;
 import carom.core.engine.Sampler;
 import carom.core.engine.Tunables;
 import carom.core.engine.WorkEstimate;
 import carom.core.engine.Energy;
 import carom.core.observe.jfr.CaromRecording;
+import carom.app.checkpoint.CheckpointFile;
+import carom.app.checkpoint.CheckpointOptions;
+import carom.app.checkpoint.RunCheckpoints;
+import carom.app.checkpoint.StopSignals;
 import carom.app.report.Observing;
 import carom.app.report.Provenance;
 import carom.app.report.RunRecord;
@@ -97,6 +102,15 @@ final class SimulateCommand implements Callable<Integer> {
                     + "into this file; read it with 'carom analyze'.")
     Path jfr;
 
+    @Option(names = "--checkpoint", paramLabel = "FILE.ckpt",
+            description = "Save the run here at its end, every --checkpoint-every, and on SIGINT or SIGTERM "
+                    + "(then stop, exit status 130 or 143); continue it with 'carom resume'.")
+    Path checkpoint;
+
+    @Option(names = "--checkpoint-every", paramLabel = "DT",
+            description = "Simulated time between checkpoints (each replaces the previous one); needs --checkpoint.")
+    Double checkpointEvery;
+
     @Option(names = "--allow-long", description = "Run even when the scene would take more than "
             + "about 1e11 collisions (days at a million a second), which is otherwise refused as a likely mistake.")
     boolean allowLong;
@@ -124,8 +138,12 @@ final class SimulateCommand implements Callable<Integer> {
         Engine engine = new SceneFile(sceneFile).about(() -> EnginesCommand.engineNamed(engineName));
         checkTunables(engine);
         checkSampling(engine);
+        CheckpointOptions.check(engine, checkpoint, checkpointEvery);
         checkOutputs();
-        Scene fromFile = new SceneFile(sceneFile).about(() -> SceneReader.read(new SceneFile(sceneFile).path()));
+        Scene fromFile = new SceneFile(sceneFile).about(() -> {
+            CheckpointOptions.refuseAsScene(new SceneFile(sceneFile).path());
+            return SceneReader.read(new SceneFile(sceneFile).path());
+        });
         Scene scene = checkedUntil == null ? fromFile : fromFile.withUntil(checkedUntil);
         new SceneFile(sceneFile).about(() -> {
             engine.checkSupports(scene);
@@ -141,10 +159,15 @@ final class SimulateCommand implements Callable<Integer> {
                     Quoted.fileName(sceneFile), expected, scene.until()));
         }
         Observing observing = observe == null ? null : Observing.of(scene, observe, every);
+        RunCheckpoints sink = checkpoint == null ? null : new RunCheckpoints(checkpoint, new CheckpointFile(sceneFile,
+                new SceneFile(sceneFile).about(() -> CheckpointOptions.sceneText(new SceneFile(sceneFile).path())),
+                engine.name(), workers, tunables, scene.until(), 0, every == null ? Double.NaN : every, observe,
+                CheckpointOptions.interval(checkpointEvery), new byte[0], List.of(), 0), observing);
 
         // The recording covers the run only, not reading the scene; it closes (and its repository goes) in any case.
         try (Recording recording = jfr == null ? null : CaromRecording.create();
-             AtomicOutput files = new AtomicOutput()) {
+             AtomicOutput files = new AtomicOutput();
+             StopSignals signals = sink == null ? null : StopSignals.routeTo(sink)) {
             if (recording != null) {
                 recording.start();
             }
@@ -156,6 +179,9 @@ final class SimulateCommand implements Callable<Integer> {
                 Sampler sampler = Observing.both(frames == null ? null : new TrajectoryXyz(scene, frames), observing);
                 if (sampler != null) {
                     options = options.withSamples(every, sampler);
+                }
+                if (sink != null) {
+                    options = options.withCheckpoints(sink);
                 }
                 RunOptions chosen = options;
                 result = new SceneFile(sceneFile).about(() -> engine.run(scene, chosen));
@@ -193,6 +219,10 @@ final class SimulateCommand implements Callable<Integer> {
                 files.stage(summary, w -> SummaryJson.write(json, w));
             }
             files.commit();
+        } catch (RunStopped stopped) {
+            // Nothing but the checkpoint is written: the run is not over.
+            err.println("stopped at t = " + stopped.time() + "; continue with: carom resume " + checkpoint);
+            return StopSignals.exitStatus(sink.stopSignal());
         }
         return 0;
     }
@@ -248,6 +278,7 @@ final class SimulateCommand implements Callable<Integer> {
         checkOutput(summary, "--summary", named);
         checkOutput(jfr, "--jfr", named);
         checkOutput(trajectory, "--trajectory", named);
+        checkOutput(checkpoint, "--checkpoint", named);
         if (report != null) {
             String earlier = named.putIfAbsent(report.toAbsolutePath().normalize(), "--report");
             if (earlier != null) {
@@ -258,7 +289,7 @@ final class SimulateCommand implements Callable<Integer> {
     }
 
     /** {@code file} must be writable and not named by another output option already in {@code named}. */
-    private static void checkOutput(Path file, String option, Map<Path, String> named) {
+    static void checkOutput(Path file, String option, Map<Path, String> named) {
         if (file == null) {
             return;
         }

@@ -51,4 +51,11 @@ class ProgressBarTest {
         }
         assertThat(bytes.size()).isZero();
     }
+
+    @Test
+    void collisionsPerSecondAreCountedFromTheFirstReport() {
+        assertThat(ProgressBar.collisionRate(300_000, 2_000_000_000L)).isEqualTo("  1.5e+05 coll/s");
+        assertThat(ProgressBar.collisionRate(0, 2_000_000_000L)).isEmpty();
+        assertThat(ProgressBar.collisionRate(10, 0)).isEmpty();
+    }
 }

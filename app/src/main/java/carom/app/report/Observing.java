@@ -68,6 +68,32 @@ public final class Observing implements Sampler {
         return new Observing(scene, chosen);
     }
 
+    /** Every observable's state so far, for a checkpoint, in the order named. */
+    public List<carom.core.observe.sample.ObservableState> states() {
+        return observables.stream().map(SampledObservable::state).toList();
+    }
+
+    /** The virial sum at the last sample (where the next pressure interval starts), for a checkpoint. */
+    public double lastVirialSum() {
+        return lastVirialSum;
+    }
+
+    /** The observables a checkpoint saved ({@link #states}), continuing exactly where they stopped. */
+    public static Observing restored(Scene scene, List<carom.core.observe.sample.ObservableState> states,
+                                     double lastVirialSum) {
+        List<SampledObservable> kept = new ArrayList<>();
+        for (carom.core.observe.sample.ObservableState state : states) {
+            try {
+                kept.add(SampledObservable.restore(state));
+            } catch (IllegalArgumentException e) {
+                throw new BadInputException("malformed checkpoint: " + e.getMessage());
+            }
+        }
+        Observing restored = new Observing(scene, kept);
+        restored.lastVirialSum = lastVirialSum;
+        return restored;
+    }
+
     @Override
     public void sample(double time, Discs state, double virialSum) {
         if (pressure != null) {

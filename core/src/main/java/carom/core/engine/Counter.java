@@ -16,6 +16,8 @@ public enum Counter {
     RESYNCS("resyncs", "clock re-anchorings (every disc advanced to one time so clocks stay small)"),
     BYTES("bytes", "heap held by the run's disc and queue arrays"),
     BYTES_PER_DISC("bytesPerDisc", "the same over the number of discs, rounded"),
+    COLLISIONS_BEFORE_RESUME("collisionsBeforeResume",
+            "collisions before the checkpoint a resumed run started from (collisions per second count the rest)"),
 
     // Step-grid engines (serial, stripes, the actor engines).
     STEPS("steps", "time steps of the grid"),

@@ -49,4 +49,24 @@ public interface Engine {
     }
 
     RunResult run(Scene scene, RunOptions options);
+
+    /**
+     * Whether this engine can save its state while it runs ({@link RunOptions#checkpoints()}) and
+     * continue from it ({@link #resume}) to the same bits as a run that never stopped. Commands refuse
+     * {@code --checkpoint} for one that cannot, before anything runs; it ignores
+     * {@link RunOptions#checkpoints()}.
+     */
+    default boolean checkpoints() {
+        return false;
+    }
+
+    /**
+     * Continues the run whose state this engine saved as {@code saved} ({@link Checkpoints#save}) to
+     * {@code options.until()}; {@code scene} is the run's scene and the options its engine settings,
+     * as they were. The result is the whole run's: collisions and counters from t = 0, the initial
+     * energy and momentum of the scene. A state that does not fit is an {@link IllegalArgumentException}.
+     */
+    default RunResult resume(Scene scene, RunOptions options, byte[] saved) {
+        throw new UnsupportedOperationException(name() + " cannot resume from a checkpoint");
+    }
 }

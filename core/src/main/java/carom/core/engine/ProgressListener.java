@@ -7,4 +7,12 @@ public interface ProgressListener {
     };
 
     void simulatedTime(double time);
+
+    /**
+     * The simulated time and the collisions carried out since t = 0, for engines that count them as they
+     * go (a progress bar shows collisions per second from them); the default passes the time on.
+     */
+    default void progress(double time, long collisions) {
+        simulatedTime(time);
+    }
 }

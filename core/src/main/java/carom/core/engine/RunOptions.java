@@ -6,10 +6,11 @@ import java.util.Map;
  * How to run: the end time, the worker threads (ignored by serial engines), a progress listener,
  * engine-specific tunables as text (for example {@code cellFactor=2}; each engine declares its own as
  * {@link Tunable}s), and optionally a {@link Sampler} told the state every {@code every} of simulated
- * time ({@code every} is NaN and {@code sampler} null without one).
+ * time ({@code every} is NaN and {@code sampler} null without one), and optionally where to save
+ * {@link Checkpoints} (null without).
  */
 public record RunOptions(double until, int threads, ProgressListener progress, Map<String, String> tunables,
-                         double every, Sampler sampler) {
+                         double every, Sampler sampler, Checkpoints checkpoints) {
     public RunOptions {
         tunables = Map.copyOf(tunables);
         if (progress == null) {
@@ -20,6 +21,12 @@ public record RunOptions(double until, int threads, ProgressListener progress, M
         }
     }
 
+    /** Options without checkpoints. */
+    public RunOptions(double until, int threads, ProgressListener progress, Map<String, String> tunables,
+                      double every, Sampler sampler) {
+        this(until, threads, progress, tunables, every, sampler, null);
+    }
+
     /** Options without samples. */
     public RunOptions(double until, int threads, ProgressListener progress, Map<String, String> tunables) {
         this(until, threads, progress, tunables, Double.NaN, null);
@@ -27,7 +34,17 @@ public record RunOptions(double until, int threads, ProgressListener progress, M
 
     /** These options with {@code sampler} told the state at every multiple of {@code interval} up to {@code until}. */
     public RunOptions withSamples(double interval, Sampler newSampler) {
-        return new RunOptions(until, threads, progress, tunables, interval, newSampler);
+        return new RunOptions(until, threads, progress, tunables, interval, newSampler, checkpoints);
+    }
+
+    /** These options saving checkpoints into {@code sink}. */
+    public RunOptions withCheckpoints(Checkpoints sink) {
+        return new RunOptions(until, threads, progress, tunables, every, sampler, sink);
+    }
+
+    /** These options with another end time. */
+    public RunOptions withUntil(double newUntil) {
+        return new RunOptions(newUntil, threads, progress, tunables, every, sampler, checkpoints);
     }
 
     /** Whether the run hands out samples. */
@@ -40,16 +57,16 @@ public record RunOptions(double until, int threads, ProgressListener progress, M
     }
 
     public RunOptions withThreads(int newThreads) {
-        return new RunOptions(until, newThreads, progress, tunables, every, sampler);
+        return new RunOptions(until, newThreads, progress, tunables, every, sampler, checkpoints);
     }
 
     public RunOptions withProgress(ProgressListener listener) {
-        return new RunOptions(until, threads, listener, tunables, every, sampler);
+        return new RunOptions(until, threads, listener, tunables, every, sampler, checkpoints);
     }
 
     public RunOptions withTunable(String key, String value) {
         Map<String, String> m = new java.util.HashMap<>(tunables);
         m.put(key, value);
-        return new RunOptions(until, threads, progress, m, every, sampler);
+        return new RunOptions(until, threads, progress, m, every, sampler, checkpoints);
     }
 }

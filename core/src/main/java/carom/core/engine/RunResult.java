@@ -35,8 +35,18 @@ public record RunResult(String engine, boolean exact, Discs finalState, double u
         return pairCollisions + wallCollisions;
     }
 
+    /** Collisions carried out in this run's wall seconds: a resumed run's since its checkpoint. */
     public double collisionsPerSecond() {
-        return wallSeconds > 0 ? collisions() / wallSeconds : 0;
+        return wallSeconds > 0 ? (collisions() - counter(Counter.COLLISIONS_BEFORE_RESUME, 0)) / wallSeconds : 0;
+    }
+
+    /** This result of a run resumed from a checkpoint taken after {@code collisionsBefore} collisions. */
+    public RunResult resumedAfter(long collisionsBefore) {
+        Map<String, Long> more = new java.util.HashMap<>(counters == null ? Map.of() : counters);
+        more.put(Counter.COLLISIONS_BEFORE_RESUME.key, collisionsBefore);
+        return new RunResult(engine, exact, finalState, until, pairCollisions, wallCollisions, events,
+                kineticEnergyStart, kineticEnergyEnd, momentumStart, momentumEnd, pressure, causalityViolations,
+                wallSeconds, Map.copyOf(more));
     }
 
     /** Causality violations per million collisions (0 for exact engines). */

@@ -32,6 +32,19 @@ public final class SampleSchedule {
         return new SampleSchedule(options.sampler(), options.every(), options.until(), scene.newDiscs());
     }
 
+    /** How many samples are out: the index of the next one (a checkpoint saves it). */
+    public long index() {
+        return k;
+    }
+
+    /** Continues a resumed run's schedule at sample {@code index} (those before it were taken before the break). */
+    public void resumeAt(long index) {
+        if (index < 0) {
+            throw new IllegalArgumentException("engine state: sample index " + index);
+        }
+        k = index;
+    }
+
     /** The next sample's absolute time, or +Infinity when none is left. */
     public double next() {
         if (sampler == null) {

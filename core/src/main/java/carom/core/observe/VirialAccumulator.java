@@ -25,6 +25,12 @@ public final class VirialAccumulator {
     private final double start;
     private final double blockLength;
     private final double[] sums;
+    /**
+     * The sum over every collision in the order added, whatever the blocks: what samples read, so that
+     * it does not depend on the run's end time (a run resumed to a later end reads what one longer run
+     * reads).
+     */
+    private double running;
 
     public VirialAccumulator(double start, double end, int blocks) {
         this.start = start;
@@ -40,6 +46,7 @@ public final class VirialAccumulator {
     public void add(double time, double virial) {
         int b = (int) ((time - start) / blockLength);
         sums[b < 0 ? 0 : (b >= sums.length ? sums.length - 1 : b)] += virial;
+        running += virial;
     }
 
     /** Adds another accumulator's sums (same blocks), for engines that collect per worker. */
@@ -47,15 +54,34 @@ public final class VirialAccumulator {
         for (int b = 0; b < sums.length; b++) {
             sums[b] += other.sums[b];
         }
+        running += other.running;
     }
 
-    /** The virial sum over the whole run so far (every block), for a sample's running total. */
-    public double total() {
-        double t = 0;
-        for (double b : sums) {
-            t += b;
+    /** The block sums so far, for a checkpoint ({@link #restore}). */
+    public double[] blockSums() {
+        return sums.clone();
+    }
+
+    /**
+     * Takes up block sums a checkpoint saved from an accumulator over [start, {@code savedEnd}]: as they
+     * were when the blocks are the same; otherwise (a run resumed to another end time) each saved
+     * block's sum goes into the block of its middle, so the total stays and the error bar is approximate.
+     */
+    public void restore(double[] saved, double savedEnd, double savedTotal) {
+        double savedBlock = (savedEnd - start) / saved.length;
+        if (saved.length == sums.length && savedBlock == blockLength) {
+            System.arraycopy(saved, 0, sums, 0, sums.length);
+        } else {
+            for (int b = 0; b < saved.length; b++) {
+                add(start + (b + 0.5) * savedBlock, saved[b]);
+            }
         }
-        return t;
+        running = savedTotal;
+    }
+
+    /** The virial sum over the whole run so far, summed in the order added, for a sample's running total. */
+    public double total() {
+        return running;
     }
 
     /**

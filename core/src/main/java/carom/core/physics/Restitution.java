@@ -31,6 +31,11 @@ public abstract sealed class Restitution permits Restitution.Memoryless, Restitu
     /** A fresh instance with its own per-disc state for a run over {@code discs} discs. */
     public abstract Restitution forRun(int discs);
 
+    /** Whether this model keeps per-disc history ({@link #lastCollision}) that a checkpoint must save. */
+    public boolean remembers() {
+        return true;
+    }
+
     public static Restitution of(double pairRestitution, double wallRestitution, double tc) {
         if (pairRestitution == 1 && wallRestitution == 1) {
             return ELASTIC;
@@ -43,6 +48,11 @@ public abstract sealed class Restitution permits Restitution.Memoryless, Restitu
 
     /** Models that keep no per-disc history: one shared instance serves every run. */
     abstract static sealed class Memoryless extends Restitution permits Elastic, Constant {
+        @Override
+        public boolean remembers() {
+            return false;
+        }
+
         @Override
         public void collided(int i, double time) {
         }

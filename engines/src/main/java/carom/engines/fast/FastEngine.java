@@ -55,6 +55,17 @@ public final class FastEngine implements Engine {
     }
 
     @Override
+    public boolean checkpoints() {
+        return true;
+    }
+
+    @Override
+    public RunResult resume(Scene scene, RunOptions options, byte[] saved) {
+        checkSupports(scene);
+        return new FastRun(scene, options).resume(saved);
+    }
+
+    @Override
     public RunResult run(Scene scene, RunOptions options) {
         checkSupports(scene);
         return new FastRun(scene, options).run();

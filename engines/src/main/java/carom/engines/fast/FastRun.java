@@ -7,9 +7,12 @@ import static carom.engines.kernel.DiscTable.HIT;
 import static carom.engines.kernel.DiscTable.RECHECK;
 import static carom.engines.kernel.DiscTable.RESYNC_SPANS;
 
+import carom.core.engine.Checkpoints;
 import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
+import carom.core.engine.RunStopped;
+import carom.core.engine.StateBytes;
 import carom.core.engine.SampleSchedule;
 import carom.core.engine.StallGuard;
 import carom.core.observe.EnergyAudit;
@@ -24,6 +27,7 @@ import carom.engines.kernel.CalendarQueue;
 import carom.engines.kernel.CellPredictor;
 import carom.engines.kernel.DiscMotion;
 import carom.engines.kernel.DiscTable;
+import carom.engines.kernel.TableState;
 import java.util.HashMap;
 import java.util.Map;
 
@@ -37,6 +41,11 @@ import java.util.Map;
  * and the clocks: disc clocks and event times count from {@code epoch}, and every
  * {@link DiscTable#RESYNC_SPANS} calendar spans all discs are advanced, clocks restart at 0 and the
  * queue is rebuilt with a re-estimated slice width, so clocks stay small and keep their precision.
+ *
+ * <p>Checkpoints ({@link #save}) hold the records, the cell lists and the calendar exactly as they
+ * are between two events, with the clocks and counters: the end of a run moves no disc (the final
+ * state is computed from the records), so a run resumed from any checkpoint, also one at the end of a
+ * shorter run, pops the same events in the same order as a run that never stopped.
  */
 final class FastRun {
 
@@ -53,8 +62,8 @@ final class FastRun {
     private final VirialAccumulator virial;
     private final ProgressListener progress;
     private final StallGuard stallGuard;
-    private final double energyStart;
-    private final double[] momentumStart;
+    private double energyStart;
+    private double[] momentumStart;
 
     /** Events: each disc's event time is in its record, the queue links too. */
     private final CalendarQueue queue;
@@ -71,6 +80,13 @@ final class FastRun {
     private long crossings;
     private long staleEvents;
     private long resyncs;
+    /** Where checkpoints go (null: none), the next periodic one's index and local time. */
+    private final Checkpoints checkpoints;
+    private long checkpointIndex;
+    private double checkpointLocal;
+    private static final String STATE_TAG = "fast/1";
+    /** A stop request is read every 4096 events: a volatile read, a few microseconds apart. */
+    private static final long STOP_POLL_MASK = (1 << 12) - 1;
 
     FastRun(Scene scene, RunOptions options) {
         this.scene = scene;
@@ -90,6 +106,8 @@ final class FastRun {
         this.momentumStart = Observables.momentum(src);
         this.queue = table.newCalendar(n);
         this.samples = SampleSchedule.of(scene, options);
+        this.checkpoints = options.checkpoints();
+        this.checkpointIndex = checkpoints == null ? Long.MAX_VALUE : Checkpoints.nextIndexAfter(0, checkpoints.every());
     }
 
     RunResult run() {
@@ -100,10 +118,68 @@ final class FastRun {
             }
         }
         replan(0);
+        return finish(started);
+    }
+
+    /** Continues the run {@code saved} was taken from ({@link #save}) to this run's until. */
+    RunResult resume(byte[] saved) {
+        long started = System.nanoTime();
+        StateBytes.In in = new StateBytes.In(saved, STATE_TAG);
+        double savedUntil = in.getDouble();
+        double time = in.getDouble();
+        if (!(until >= time)) {
+            throw new IllegalArgumentException("the checkpoint is at t = " + time + ", after until = " + until);
+        }
+        epoch = in.getDouble();
+        resyncAt = in.getDouble();
+        samples.resumeAt(in.getLong());
+        pairCollisions = in.getLong();
+        wallCollisions = in.getLong();
+        events = in.getLong();
+        crossings = in.getLong();
+        staleEvents = in.getLong();
+        resyncs = in.getLong();
+        p.resumeCount(in.getLong());
+        energyStart = in.getDouble();
+        momentumStart = new double[] {in.getDouble(), in.getDouble()};
+        virial.restore(in.getDoubles(), savedUntil, in.getDouble());
+        TableState.restore(table, in);
+        queue.restore(in);
+        in.end();
+        if (checkpoints != null) {
+            checkpointIndex = Checkpoints.nextIndexAfter(time, checkpoints.every());
+        }
+        long before = pairCollisions + wallCollisions;
+        return finish(started).resumedAfter(before);
+    }
+
+    /** The state between two events, continuing from absolute {@code time}: see the class comment. */
+    private void save(double time) {
+        StateBytes.Out out = new StateBytes.Out(STATE_TAG).putDouble(until).putDouble(time).putDouble(epoch)
+                .putDouble(resyncAt).putLong(samples.index()).putLong(pairCollisions).putLong(wallCollisions)
+                .putLong(events).putLong(crossings).putLong(staleEvents).putLong(resyncs).putLong(p.predictions())
+                .putDouble(energyStart).putDouble(momentumStart[0]).putDouble(momentumStart[1])
+                .putDoubles(virial.blockSums()).putDouble(virial.total());
+        TableState.save(table, out);
+        queue.save(out);
+        checkpoints.save(time, out.bytes());
+    }
+
+    /** The next periodic checkpoint's local time, +Infinity if none is left. */
+    private double nextCheckpointLocal() {
+        return Checkpoints.timeOf(checkpointIndex, checkpoints == null ? 0 : checkpoints.every()) - epoch;
+    }
+
+    /** Runs the loop from the current state to until, then the final samples, checkpoint and result. */
+    private RunResult finish(long started) {
         sampleLocal = samples.next() - epoch;
+        checkpointLocal = nextCheckpointLocal();
         loop();
         while (samples.next() <= until) {
             sample();
+        }
+        if (checkpoints != null) {
+            save(until);
         }
         double seconds = (System.nanoTime() - started) * 1e-9;
         Discs out = finalState();
@@ -159,6 +235,12 @@ final class FastRun {
                 resync(now);
                 continue;
             }
+            if (now >= checkpointLocal) {
+                save(Checkpoints.timeOf(checkpointIndex, checkpoints.every()));
+                checkpointIndex = Checkpoints.nextIndexAfter(epoch + now, checkpoints.every());
+                checkpointLocal = nextCheckpointLocal();
+                continue;
+            }
             queue.pollTop();
             events++;
             int other = table.partner(i);
@@ -185,7 +267,12 @@ final class FastRun {
             }
             if (events - progressMark >= (1 << 16)) {
                 progressMark = events;
-                progress.simulatedTime(epoch + now);
+                progress.progress(epoch + now, pairCollisions + wallCollisions);
+            }
+            if ((events & STOP_POLL_MASK) == 0 && checkpoints != null && checkpoints.stopRequested()) {
+                // Between two events: the next one is still queued, so the checkpoint continues from here.
+                save(epoch + now);
+                throw new RunStopped(epoch + now);
             }
         }
     }
@@ -232,6 +319,7 @@ final class FastRun {
             epoch += now;
             untilLocal = until - epoch;
             sampleLocal = samples.next() - epoch;
+            checkpointLocal = nextCheckpointLocal();
         }
         replan(0);
     }

@@ -131,6 +131,11 @@ public final class CellPredictor {
         return predictions;
     }
 
+    /** Takes up the count of a run resumed from a checkpoint. */
+    public void resumeCount(long made) {
+        predictions = made;
+    }
+
     private double radius(int i) {
         return stride > R ? rec[i * stride + R] : sharedRadius;
     }

@@ -44,6 +44,17 @@ public final class SerialEngine implements Engine {
     }
 
     @Override
+    public boolean checkpoints() {
+        return true;
+    }
+
+    @Override
+    public RunResult resume(Scene scene, RunOptions options, byte[] saved) {
+        checkSupports(scene);
+        return new SerialRun(scene, options).resume(saved);
+    }
+
+    @Override
     public RunResult run(Scene scene, RunOptions options) {
         checkSupports(scene);
         return new SerialRun(scene, options).run();

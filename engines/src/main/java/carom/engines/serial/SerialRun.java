@@ -6,7 +6,10 @@ import carom.engines.cells.StepGridTunables;
 import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
+import carom.core.engine.Checkpoints;
 import carom.core.engine.Contacts;
+import carom.core.engine.RunStopped;
+import carom.core.engine.StateBytes;
 import carom.core.engine.StallGuard;
 import carom.core.grid.CellGrid;
 import carom.core.grid.CellLists;
@@ -23,6 +26,7 @@ import carom.core.scene.Scene;
 import carom.core.state.Discs;
 import carom.engines.cells.StepGrid;
 import carom.engines.cells.ThreadedBucketQueue;
+import carom.engines.kernel.TableState;
 import java.util.Map;
 
 /**
@@ -44,6 +48,12 @@ import java.util.Map;
  *       against its neighbourhood (eager removal; no stale events).</li>
  *   <li>Events are processed in nondecreasing time; ties in any order (SPEC).</li>
  * </ul>
+ *
+ * <h2>Checkpoints</h2>
+ * Every disc is synchronised at a step start, so checkpoints are taken there ({@link #save}): the
+ * discs, the clocks and the counters. The last step of a run is clipped at {@code until}, which a
+ * longer run would not do, so the checkpoint at the end of a run is the state at that step's start:
+ * a run resumed from it redoes the step, unclipped if it goes further, as one run that never stopped.
  */
 final class SerialRun {
 
@@ -69,7 +79,13 @@ final class SerialRun {
     private final StallGuard stallGuard;
     private final Contacts contacts;
 
+    private final Checkpoints checkpoints;
+    private static final String STATE_TAG = "serial/1";
+
     private double stepEnd;
+    private double epoch;
+    private double energyStart;
+    private double[] momentumStart;
     private long pairCollisions;
     private long wallCollisions;
     private long predictions;
@@ -98,18 +114,75 @@ final class SerialRun {
         this.virial = VirialAccumulator.forRun(until);
         this.stallGuard = new StallGuard(scene);
         this.contacts = new Contacts(flight, boundary, stallGuard);
+        this.checkpoints = options.checkpoints();
+        this.energyStart = Observables.kineticEnergy(d);
+        this.momentumStart = Observables.momentum(d);
+    }
+
+    /** Continues the run {@code saved} was taken from ({@link #save}) to this run's until. */
+    RunResult resume(byte[] saved) {
+        StateBytes.In in = new StateBytes.In(saved, STATE_TAG);
+        double savedUntil = in.getDouble();
+        epoch = in.getDouble();
+        if (!(until >= epoch)) {
+            throw new IllegalArgumentException("the checkpoint is at t = " + epoch + ", after until = " + until);
+        }
+        pairCollisions = in.getLong();
+        wallCollisions = in.getLong();
+        predictions = in.getLong();
+        steps = in.getLong();
+        earlyStepEnds = in.getLong();
+        energyStart = in.getDouble();
+        momentumStart = new double[] {in.getDouble(), in.getDouble()};
+        virial.restore(in.getDoubles(), savedUntil, in.getDouble());
+        in.getDoubles(d.x);
+        in.getDoubles(d.y);
+        in.getDoubles(d.vx);
+        in.getDoubles(d.vy);
+        java.util.Arrays.fill(d.t, 0);
+        TableState.restoreRestitution(restitution, n, in);
+        in.end();
+        long before = pairCollisions + wallCollisions;
+        return run().resumedAfter(before);
+    }
+
+    /** The state at a step start (every clock at 0, local time 0 = absolute {@code epoch}). */
+    private byte[] save() {
+        StateBytes.Out out = new StateBytes.Out(STATE_TAG).putDouble(until).putDouble(epoch).putLong(pairCollisions)
+                .putLong(wallCollisions).putLong(predictions).putLong(steps).putLong(earlyStepEnds)
+                .putDouble(energyStart).putDouble(momentumStart[0]).putDouble(momentumStart[1])
+                .putDoubles(virial.blockSums()).putDouble(virial.total()).putDoubles(d.x).putDoubles(d.y).putDoubles(d.vx).putDoubles(d.vy);
+        TableState.saveRestitution(restitution, n, out);
+        return out.bytes();
     }
 
     RunResult run() {
         long started = System.nanoTime();
-        double energyStart = Observables.kineticEnergy(d);
-        double[] momentumStart = Observables.momentum(d);
-        double epoch = 0;
+        long nextCheckpoint = checkpoints == null ? Long.MAX_VALUE : Checkpoints.nextIndexAfter(epoch, checkpoints.every());
+        byte[] lastStepStart = null;
+        double lastStepEpoch = epoch;
         while (epoch < until) {
             double remaining = until - epoch;
+            if (checkpoints != null) {
+                if (checkpoints.stopRequested()) {
+                    checkpoints.save(epoch, save());
+                    throw new RunStopped(epoch);
+                }
+                if (epoch >= Checkpoints.timeOf(nextCheckpoint, checkpoints.every())) {
+                    checkpoints.save(epoch, save());
+                    nextCheckpoint = Checkpoints.nextIndexAfter(epoch, checkpoints.every());
+                }
+                // A step that may reach until is clipped there: the end's checkpoint is its start.
+                boolean mayBeLast = stepGrid.stepLength(d.maxSpeed(), acceleration, Double.POSITIVE_INFINITY) >= remaining;
+                lastStepStart = mayBeLast ? save() : null;
+                lastStepEpoch = epoch;
+            }
             double length = step(epoch, remaining);
             epoch = length >= remaining ? until : epoch + length;
-            progress.simulatedTime(epoch);
+            progress.progress(epoch, pairCollisions + wallCollisions);
+        }
+        if (checkpoints != null) {
+            checkpoints.save(lastStepStart == null ? epoch : lastStepEpoch, lastStepStart == null ? save() : lastStepStart);
         }
         for (int i = 0; i < n; i++) {
             d.t[i] = until;

@@ -27,6 +27,21 @@ final class CrossHeap {
         Arrays.fill(pos, -1);
     }
 
+    /** Every entry, for a checkpoint: what {@link #restore} takes back to the same heap. */
+    void save(carom.core.engine.StateBytes.Out out) {
+        out.putDoubles(time).putInts(partner).putInts(partnerCount).putInts(pos).putInts(Arrays.copyOf(heap, size));
+    }
+
+    void restore(carom.core.engine.StateBytes.In in) {
+        in.getDoubles(time);
+        in.getInts(partner);
+        in.getInts(partnerCount);
+        in.getInts(pos);
+        int[] saved = in.getInts();
+        heap = Arrays.copyOf(saved, Math.max(64, saved.length));
+        size = saved.length;
+    }
+
     boolean isEmpty() {
         return size == 0;
     }

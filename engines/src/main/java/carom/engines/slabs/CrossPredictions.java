@@ -46,6 +46,17 @@ final class CrossPredictions {
         this.heap = new CrossHeap(table.n);
     }
 
+    /** The cross events and the count of predictions, for a checkpoint. */
+    void save(carom.core.engine.StateBytes.Out out) {
+        heap.save(out);
+        out.putLong(predictions);
+    }
+
+    void restore(carom.core.engine.StateBytes.In in) {
+        heap.restore(in);
+        predictions = in.getLong();
+    }
+
     /** The heap's earliest event after re-predicting stale ones: its disc, or -1 if there is none. */
     int validTop(double now) {
         while (!heap.isEmpty()) {

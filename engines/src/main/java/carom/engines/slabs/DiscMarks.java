@@ -22,6 +22,19 @@ final class DiscMarks {
         this.requeuedIn = new int[n];
     }
 
+    /** The marks and the window and undo numbers, for a checkpoint. */
+    void save(carom.core.engine.StateBytes.Out out) {
+        out.putInts(changedIn).putInt(window).putInts(lastEntry).putInts(requeuedIn).putInt(undo);
+    }
+
+    void restore(carom.core.engine.StateBytes.In in) {
+        in.getInts(changedIn);
+        window = in.getInt();
+        in.getInts(lastEntry);
+        in.getInts(requeuedIn);
+        undo = in.getInt();
+    }
+
     /** Coordinator: a new window starts; no disc has changed in it yet. */
     void startWindow() {
         window++;

@@ -69,6 +69,11 @@ final class Domain {
      */
     int[] slabOf;
     long crossSlabEvents;
+    /**
+     * The merged phases' domain only, in a run with checkpoints (else null): a stop request ends its
+     * pass between two events, so that a long merged pass does not keep a signal waiting.
+     */
+    carom.core.engine.Checkpoints stopPoll;
 
     Domain(int id, DiscTable table, SlabColumns columns, DiscMarks marks, RunClock clock, DomainTask task,
            EnergyAudit audit, ProgressListener progress, Scene scene) {
@@ -87,6 +92,36 @@ final class Domain {
         this.virial = VirialAccumulator.forRun(clock.until);
         this.audit = audit;
         this.progress = progress;
+    }
+
+    /**
+     * This domain's own state for a checkpoint, between windows: its calendar (over the shared
+     * records, which the run saves), counters, virial, calendar span and phase budget.
+     */
+    void save(carom.core.engine.StateBytes.Out out) {
+        queue.save(out);
+        out.putLongs(new long[] {events, pairCollisions, wallCollisions, crossings, staleEvents, undoneEvents,
+            eventLimit, crossSlabEvents, pred.predictions()});
+        out.putDouble(span).putDoubles(virial.blockSums()).putDouble(virial.total());
+    }
+
+    void restore(carom.core.engine.StateBytes.In in, double savedUntil) {
+        queue.restore(in);
+        long[] c = in.getLongs();
+        if (c.length != 9) {
+            throw new IllegalArgumentException("engine state: " + c.length + " domain counters");
+        }
+        events = c[0];
+        pairCollisions = c[1];
+        wallCollisions = c[2];
+        crossings = c[3];
+        staleEvents = c[4];
+        undoneEvents = c[5];
+        eventLimit = c[6];
+        crossSlabEvents = c[7];
+        pred.resumeCount(c[8]);
+        span = in.getDouble();
+        virial.restore(in.getDoubles(), savedUntil, in.getDouble());
     }
 
     /** Worker thread body: run each published task, then report done, until the run shuts down. */
@@ -248,9 +283,16 @@ final class Domain {
             }
             if (logging) {
                 log.markIfEdge(i);
-            } else if (events - progressMark >= (1 << 16)) {
-                progressMark = events;
-                progress.simulatedTime(clock.epoch + now);
+            } else {
+                if (events - progressMark >= (1 << 16)) {
+                    progressMark = events;
+                    progress.simulatedTime(clock.epoch + now);
+                }
+                if ((events & 0xFFF) == 0 && stopPoll != null && stopPoll.stopRequested()) {
+                    stopTime = now;
+                    stopDisc = -1;
+                    return;
+                }
             }
         }
     }

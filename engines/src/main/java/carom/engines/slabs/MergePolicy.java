@@ -63,6 +63,18 @@ final class MergePolicy {
     private long kept;
     private long undone;
 
+    /** What the judgement has seen so far, for a checkpoint: the next budget and the windows' counts. */
+    void save(carom.core.engine.StateBytes.Out out) {
+        out.putLong(budget).putInt(windows).putLong(kept).putLong(undone);
+    }
+
+    void restore(carom.core.engine.StateBytes.In in) {
+        budget = in.getLong();
+        windows = in.getInt();
+        kept = in.getLong();
+        undone = in.getLong();
+    }
+
     MergePolicy(RunOptions options, int discs) {
         this(WINDOW_EVENTS.of(options), ESTIMATE_WINDOWS.of(options),
                 MERGE_EVENTS.isGiven(options) ? MERGE_EVENTS.of(options) : START_BUDGET,

@@ -48,6 +48,27 @@ final class SlabsCounters {
     /** Sum over windows of the slowest domain's CPU time: the windows' wall time on dedicated cores. */
     long criticalCpuNanos;
 
+    /** The counts (not the times), for a checkpoint. */
+    void save(carom.core.engine.StateBytes.Out out) {
+        out.putLongs(new long[] {resyncs, merges, windows, commits, rollbacks, crossDomainEvents, migrations,
+            crossPairCollisions});
+    }
+
+    void restore(carom.core.engine.StateBytes.In in) {
+        long[] c = in.getLongs();
+        if (c.length != 8) {
+            throw new IllegalArgumentException("engine state: " + c.length + " slabs counters");
+        }
+        resyncs = c[0];
+        merges = c[1];
+        windows = c[2];
+        commits = c[3];
+        rollbacks = c[4];
+        crossDomainEvents = c[5];
+        migrations = c[6];
+        crossPairCollisions = c[7];
+    }
+
     /** CPU time of the calling thread, in nanoseconds. */
     static long cpuNanos() {
         return CPU.getCurrentThreadCpuTime();

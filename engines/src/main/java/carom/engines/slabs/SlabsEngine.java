@@ -57,6 +57,19 @@ public final class SlabsEngine implements Engine {
     }
 
     @Override
+    public boolean checkpoints() {
+        return true;
+    }
+
+    @Override
+    public RunResult resume(Scene scene, RunOptions options, byte[] saved) {
+        checkSupports(scene);
+        SlabsRun run = new SlabsRun(scene, options);
+        RunResult result = run.run(saved);
+        return result.resumedAfter(run.collisionsBefore);
+    }
+
+    @Override
     public RunResult run(Scene scene, RunOptions options) {
         checkSupports(scene);
         return new SlabsRun(scene, options).run();

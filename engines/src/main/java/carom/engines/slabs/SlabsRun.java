@@ -58,6 +58,9 @@ import java.util.Arrays;
  * one of them before t* (contacts between two discs unchanged in the window are after H by the heap's
  * invariant; the others are checked on their segments), so they are the events the serial order has.
  *
+ * <p>Checkpoints ({@link SlabsCheckpoint}) are taken at the start of a pass of the loop (a window or a
+ * stretch of a merged phase); the one at the end of a run is the start of the pass clipped at until.
+ *
  * <p>Counters: {@link SlabsCounters}.
  */
 final class SlabsRun {
@@ -67,39 +70,39 @@ final class SlabsRun {
 
     private final Scene scene;
     private final int n;
-    private final double until;
+    final double until;
     /** Records, grid and Morton order (the kernel's), shared by every domain. */
-    private final DiscTable table;
+    final DiscTable table;
     private final EnergyAudit audit;
     private final ProgressListener progress;
-    private final double energyStart;
-    private final double[] momentumStart;
+    double energyStart;
+    double[] momentumStart;
     private final SlabColumns columns;
-    private final int domainCount;
+    final int domainCount;
     /**
      * Measurement mode (tunable {@code sequential}): the coordinator runs every domain's window itself,
      * one after another, so that CPU counters give the algorithm's single-core costs without thread
      * hand-offs, cache coherence traffic or a busy machine's scheduling. Same results.
      */
     private final boolean sequential;
-    private final Domain[] domains;
+    final Domain[] domains;
     /**
      * The domain of merged phases: every disc, {@code fast}'s loop on the coordinator's thread (with
      * one slab, that slab itself); and the slabs, then it, for the counters.
      */
-    private final Domain whole;
-    private final Domain[] counted;
+    final Domain whole;
+    final Domain[] counted;
     /** When windows do not pay and the run merges ({@link MergePolicy}); whether it is merged now. */
-    private final MergePolicy policy;
-    private boolean merged;
+    final MergePolicy policy;
+    boolean merged;
     /** The whole domain's events and would-be cross-slab events when the current merged phase began. */
-    private long phaseEvents;
-    private long phaseCrossSlabEvents;
+    long phaseEvents;
+    long phaseCrossSlabEvents;
     /** With several domains (else null): per-disc marks, cross predictions, the verifier. */
-    private final DiscMarks marks;
-    private final CrossPredictions cross;
+    final DiscMarks marks;
+    final CrossPredictions cross;
     private final WindowVerifier verifier;
-    private final RunClock clock;
+    final RunClock clock;
     private final DomainTask task = new DomainTask();
     private final SpinParkBarrier barrier;
     /** The worker threads (domains 1..K-1), started at the first split phase; none in sequential mode. */
@@ -107,13 +110,17 @@ final class SlabsRun {
     private boolean threaded;
     /** Spins before a waiting thread parks ({@link SpinPolicy}). */
     private final int spins;
-    private final SlabsCounters counters = new SlabsCounters();
-    private final VirialAccumulator serialVirial;
+    final SlabsCounters counters = new SlabsCounters();
+    final VirialAccumulator serialVirial;
     private final StallGuard serialStall;
-    private double resyncAt;
+    double resyncAt;
     /** Samples asked for ({@code --every}), and the next one's local time (+Infinity if none). */
-    private final SampleSchedule samples;
+    final SampleSchedule samples;
     private double sampleLocal;
+    /** Collisions before the checkpoint a resumed run started from. */
+    long collisionsBefore;
+    /** The run's checkpoints, or null without. */
+    private final SlabsCheckpoint checkpoints;
 
     SlabsRun(Scene scene, RunOptions options) {
         long constructing = System.nanoTime();
@@ -158,6 +165,8 @@ final class SlabsRun {
         this.cross = many ? new CrossPredictions(table, columns, domains) : null;
         this.verifier = many ? new WindowVerifier(table, columns, domains, marks) : null;
         this.samples = SampleSchedule.of(scene, options);
+        this.checkpoints = options.checkpoints() == null ? null : new SlabsCheckpoint(this, options.checkpoints());
+        whole.stopPoll = options.checkpoints();
         counters.setupNanos = System.nanoTime() - constructing;
     }
 
@@ -166,11 +175,25 @@ final class SlabsRun {
     }
 
     RunResult run() {
+        return run(null);
+    }
+
+    /** The run from the start, or continued from {@code saved} ({@link SlabsCheckpoint}) if not null. */
+    RunResult run(byte[] saved) {
         long started = System.nanoTime();
         double seconds;
         Discs out;
         try {
-            if (merged && domainCount > 1) {
+            double now = 0;
+            if (saved != null) {
+                now = SlabsCheckpoint.restore(this, saved);
+                if (checkpoints != null) {
+                    checkpoints.resumedAt(clock.epoch + now);
+                }
+                if (!merged) {
+                    startWorkers();
+                }
+            } else if (merged && domainCount > 1) {
                 // A merged start: fast's first predictions and calendar, no thread until the first split.
                 for (int i = 0; i < n; i++) {
                     if (table.invMass(i) > 0) {
@@ -193,9 +216,12 @@ final class SlabsRun {
             }
             counters.startNanos = System.nanoTime() - started;
             sampleLocal = samples.next() - clock.epoch;
-            loop();
+            loop(now);
             while (samples.next() <= until) {
                 sample();
+            }
+            if (checkpoints != null) {
+                checkpoints.atEnd();
             }
             long looped = System.nanoTime();
             seconds = (looped - started) * 1e-9;
@@ -225,8 +251,7 @@ final class SlabsRun {
                 counters.toMap(counted, domainCount, cross == null ? 0 : cross.predictions, spins));
     }
 
-    private void loop() {
-        double now = 0;
+    private void loop(double now) {
         long progressMark = 0;
         while (true) {
             if (now >= sampleLocal) {
@@ -241,10 +266,16 @@ final class SlabsRun {
                 // Up to the next resync, sample or the end, or until the phase's budget of events is spent.
                 double end = Math.min(Math.min(resyncAt, sampleLocal), clock.untilLocal);
                 boolean last = end == clock.untilLocal && resyncAt > clock.untilLocal;
+                if (checkpoints != null) {
+                    checkpoints.atPassStart(now, end == clock.untilLocal);
+                }
                 whole.stopTime = INF;
                 whole.runWindow(end, last);
                 if (whole.stopTime < INF) {
                     now = whole.stopTime;
+                    if (whole.stopPoll != null && whole.stopPoll.stopRequested()) {
+                        continue; // the pass start saves and stops
+                    }
                     if (policy.worthTrying(whole.events - phaseEvents, whole.crossSlabEvents - phaseCrossSlabEvents)) {
                         split(now);
                     } else {
@@ -263,6 +294,9 @@ final class SlabsRun {
             double h = top >= 0 ? cross.time(top) : INF;
             double end = Math.min(Math.min(Math.min(h, resyncAt), sampleLocal), clock.untilLocal);
             boolean last = end == clock.untilLocal && h > clock.untilLocal && resyncAt > clock.untilLocal;
+            if (checkpoints != null) {
+                checkpoints.atPassStart(now, end == clock.untilLocal);
+            }
             long keptBefore = slabEvents();
             long undoneBefore = undoneEvents();
             long t0 = System.nanoTime();
@@ -334,7 +368,7 @@ final class SlabsRun {
             counters.serialCpuNanos += SlabsCounters.cpuNanos() - c1;
             if (counters.windows - progressMark >= 1024) {
                 progressMark = counters.windows;
-                progress.simulatedTime(clock.epoch + now);
+                progress.progress(clock.epoch + now, counters.pairCollisions(counted) + counters.wallCollisions(counted));
             }
             if (policy.mergeAfter(slabEvents() - keptBefore, undoneEvents() - undoneBefore)) {
                 merge(now);

@@ -1,0 +1,120 @@
+package carom.engines.slabs;
+
+import carom.core.engine.Checkpoints;
+import carom.core.engine.RunStopped;
+import carom.core.engine.StateBytes;
+import carom.engines.kernel.TableState;
+
+/**
+ * A slabs run's state at the start of a pass of its loop ({@link SlabsRun}), every domain idle, for a
+ * checkpoint: the shared records and cell lists, every domain's calendar and counters (the merged
+ * phases' domain too), the cross events and disc marks, the merge policy's judgement and budget, the
+ * phase, clocks and counters. What decides results is all there; what only decides timing (the spin
+ * policy, the threads' start) is not. A state is resumed only by a run of the same scene, settings and
+ * thread count, which cuts the box into the same slabs; another count of domains is refused.
+ */
+final class SlabsCheckpoint {
+    private static final String TAG = "slabs/1";
+
+    private final SlabsRun run;
+    private final Checkpoints sink;
+    /** The next periodic checkpoint's index. */
+    private long next;
+    /** The state at the start of the latest pass that may end the run (it reaches until), or null. */
+    private Checkpoints.Held lastPassStart;
+
+    SlabsCheckpoint(SlabsRun run, Checkpoints sink) {
+        this.run = run;
+        this.sink = sink;
+        this.next = Checkpoints.nextIndexAfter(0, sink.every());
+    }
+
+    /** A resumed run takes up the periodic checkpoints after absolute {@code time}. */
+    void resumedAt(double time) {
+        next = Checkpoints.nextIndexAfter(time, sink.every());
+    }
+
+    /**
+     * At the start of a pass at local {@code now}: saves and stops if asked to, saves if a periodic
+     * checkpoint is due, and holds the state if this pass may end the run ({@code mayEnd}).
+     */
+    void atPassStart(double now, boolean mayEnd) {
+        double time = run.clock.epoch + now;
+        if (sink.stopRequested()) {
+            sink.save(time, save(run, now));
+            throw new RunStopped(time);
+        }
+        if (time >= Checkpoints.timeOf(next, sink.every())) {
+            sink.save(time, save(run, now));
+            next = Checkpoints.nextIndexAfter(time, sink.every());
+        }
+        lastPassStart = mayEnd ? sink.hold(time, save(run, now)) : null;
+    }
+
+    /** The end's checkpoint: the start of the pass that reached until. */
+    void atEnd() {
+        if (lastPassStart != null) {
+            lastPassStart.write();
+        }
+    }
+
+    /** The state at local {@code now}, the start of a pass. */
+    static byte[] save(SlabsRun run, double now) {
+        StateBytes.Out out = new StateBytes.Out(TAG).putInt(run.domainCount).putDouble(run.until)
+                .putDouble(now).putDouble(run.clock.epoch).putDouble(run.resyncAt).putBoolean(run.merged)
+                .putLong(run.phaseEvents).putLong(run.phaseCrossSlabEvents).putLong(run.samples.index())
+                .putDouble(run.energyStart).putDouble(run.momentumStart[0]).putDouble(run.momentumStart[1])
+                .putDoubles(run.serialVirial.blockSums()).putDouble(run.serialVirial.total());
+        run.counters.save(out);
+        run.policy.save(out);
+        TableState.save(run.table, out);
+        for (Domain d : run.domains) {
+            d.save(out);
+        }
+        if (run.domainCount > 1) {
+            run.whole.save(out);
+            run.cross.save(out);
+            run.marks.save(out);
+        }
+        return out.bytes();
+    }
+
+    /** Restores a run built from the same scene and settings; returns the local time of the pass to start. */
+    static double restore(SlabsRun run, byte[] saved) {
+        StateBytes.In in = new StateBytes.In(saved, TAG);
+        int domains = in.getInt();
+        if (domains != run.domainCount) {
+            throw new IllegalArgumentException("engine state: " + domains + " slabs, the run has " + run.domainCount);
+        }
+        double savedUntil = in.getDouble();
+        double now = in.getDouble();
+        run.clock.epoch = in.getDouble();
+        run.clock.untilLocal = run.until - run.clock.epoch;
+        if (!(now <= run.clock.untilLocal)) {
+            throw new IllegalArgumentException("the checkpoint is at t = " + (run.clock.epoch + now) + ", after until = "
+                    + run.until);
+        }
+        run.resyncAt = in.getDouble();
+        run.merged = in.getBoolean();
+        run.phaseEvents = in.getLong();
+        run.phaseCrossSlabEvents = in.getLong();
+        run.samples.resumeAt(in.getLong());
+        run.energyStart = in.getDouble();
+        run.momentumStart = new double[] {in.getDouble(), in.getDouble()};
+        run.serialVirial.restore(in.getDoubles(), savedUntil, in.getDouble());
+        run.counters.restore(in);
+        run.policy.restore(in);
+        TableState.restore(run.table, in);
+        for (Domain d : run.domains) {
+            d.restore(in, savedUntil);
+        }
+        if (run.domainCount > 1) {
+            run.whole.restore(in, savedUntil);
+            run.cross.restore(in);
+            run.marks.restore(in);
+        }
+        in.end();
+        run.collisionsBefore = run.counters.pairCollisions(run.counted) + run.counters.wallCollisions(run.counted);
+        return now;
+    }
+}

@@ -1,0 +1,178 @@
+package carom.engines.reference;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import carom.core.engine.Checkpoints;
+import carom.core.engine.Engine;
+import carom.core.engine.RunOptions;
+import carom.core.engine.RunResult;
+import carom.core.engine.RunStopped;
+import carom.core.scene.Scene;
+import carom.core.state.Discs;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.stream.LongStream;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+
+/**
+ * What every engine that {@link Engine#checkpoints() checkpoints} promises: checkpoints change nothing
+ * of the run, and a run resumed from any of them, also from the end of a shorter run or from a stop,
+ * ends in the same bits (final state, collision counts) and hands out the same samples as one run that
+ * never stopped.
+ */
+public abstract class ExactEngineCheckpointContract {
+    protected abstract Engine engine();
+
+    protected RunOptions options(double until) {
+        return RunOptions.until(until);
+    }
+
+    /** A saved checkpoint. */
+    protected record Saved(double time, byte[] state) {
+    }
+
+    /** Keeps every checkpoint in memory; asks to stop once {@code stopAfterPolls} polls have come. */
+    protected static final class Kept implements Checkpoints {
+        final List<Saved> saved = new ArrayList<>();
+        private final double every;
+        private final long stopAfterPolls;
+        private long polls;
+
+        Kept(double every, long stopAfterPolls) {
+            this.every = every;
+            this.stopAfterPolls = stopAfterPolls;
+        }
+
+        @Override
+        public double every() {
+            return every;
+        }
+
+        @Override
+        public boolean stopRequested() {
+            return ++polls > stopAfterPolls;
+        }
+
+        @Override
+        public void save(double time, byte[] engineState) {
+            saved.add(new Saved(time, engineState));
+        }
+    }
+
+    static Stream<Long> seeds() {
+        return LongStream.range(1, 7).boxed();
+    }
+
+    /** Small scenes: plain, with effects (gravity, restitution, TC, pegs), dense periodic and walled, mixed masses. */
+    static List<Scene> scenes(long seed) {
+        return List.of(RandomScenes.small(seed), RandomScenes.effects(seed),
+                RandomScenes.dense(300, 0.6, seed % 2 == 0, seed, 1.0), RandomScenes.lightAmongHeavy(seed));
+    }
+
+    @ParameterizedTest(name = "seed {0}")
+    @MethodSource("seeds")
+    void resumedFromAnyPeriodicCheckpointEndsInTheSameBits(long seed) {
+        for (Scene scene : scenes(seed)) {
+            double until = scene.until();
+            List<double[]> straightSamples = new ArrayList<>();
+            RunResult straight = engine().run(scene, sampled(options(until), until / 7, straightSamples));
+            Kept kept = new Kept(until / 5, Long.MAX_VALUE);
+            List<double[]> checkpointedSamples = new ArrayList<>();
+            RunResult checkpointed = engine().run(scene, sampled(options(until), until / 7, checkpointedSamples)
+                    .withCheckpoints(kept));
+            assertThat(checkpointedSamples).as(scene.name()).hasSameSizeAs(straightSamples);
+            assertSame(scene.name() + " with checkpoints", checkpointed, straight);
+            assertThat(kept.saved).as(scene.name()).hasSizeGreaterThanOrEqualTo(2);
+            assertThat(kept.saved.getLast().time()).isLessThanOrEqualTo(until);
+            for (Saved from : kept.saved) {
+                List<double[]> samples = new ArrayList<>();
+                RunResult resumed = engine().resume(scene, sampled(options(until), until / 7, samples), from.state());
+                assertSame(scene.name() + " resumed from t = " + from.time(), resumed, straight);
+                List<double[]> after = straightSamples.subList(straightSamples.size() - samples.size(), straightSamples.size());
+                if (engine().samples() && from.time() < 0.8 * until) {
+                    assertThat(samples).as(scene.name() + " samples after t = " + from.time()).isNotEmpty();
+                }
+                for (int k = 0; k < samples.size(); k++) {
+                    assertThat(samples.get(k)).as(scene.name() + " sample after t = " + from.time()).isEqualTo(after.get(k));
+                }
+            }
+        }
+    }
+
+    @ParameterizedTest(name = "seed {0}")
+    @MethodSource("seeds")
+    void resumedPastTheEndOfAShorterRunEqualsOneLongerRun(long seed) {
+        for (Scene scene : scenes(seed)) {
+            double t1 = 0.4 * scene.until();
+            double t2 = scene.until();
+            Kept kept = new Kept(Double.POSITIVE_INFINITY, Long.MAX_VALUE);
+            RunResult shorter = engine().run(scene, options(t1).withCheckpoints(kept));
+            assertSame(scene.name() + " to t1 with a checkpoint", shorter, engine().run(scene, options(t1)));
+            assertThat(kept.saved).hasSize(1);
+            RunResult resumed = engine().resume(scene, options(t2), kept.saved.getFirst().state());
+            assertSame(scene.name() + " resumed to t2", resumed, engine().run(scene, options(t2)));
+            RunResult again = engine().resume(scene, options(t1), kept.saved.getFirst().state());
+            assertSame(scene.name() + " resumed to t1 itself", again, shorter);
+        }
+    }
+
+    @Test
+    void aStoppedRunSavesAndResumesToTheSameBits() {
+        Scene scene = RandomScenes.dense(1000, 0.6, true, 3, 2.0);
+        RunResult straight = engine().run(scene, options(scene.until()));
+        Kept kept = new Kept(Double.POSITIVE_INFINITY, 1);
+        assertThatThrownBy(() -> engine().run(scene, options(scene.until()).withCheckpoints(kept)))
+                .isInstanceOf(RunStopped.class);
+        assertThat(kept.saved).hasSize(1);
+        assertThat(kept.saved.getFirst().time()).isBetween(0.0, scene.until());
+        RunResult resumed = engine().resume(scene, options(scene.until()), kept.saved.getFirst().state());
+        assertSame("resumed after a stop", resumed, straight);
+    }
+
+    @Test
+    void aDamagedStateIsRefused() {
+        Scene scene = RandomScenes.small(1);
+        Kept kept = new Kept(Double.POSITIVE_INFINITY, Long.MAX_VALUE);
+        engine().run(scene, options(scene.until()).withCheckpoints(kept));
+        byte[] state = kept.saved.getFirst().state();
+        assertThatThrownBy(() -> engine().resume(scene, options(scene.until()), Arrays.copyOf(state, state.length - 9)))
+                .isInstanceOf(IllegalArgumentException.class);
+        assertThatThrownBy(() -> engine().resume(RandomScenes.small(2), options(scene.until()), state))
+                .isInstanceOf(IllegalArgumentException.class);
+    }
+
+    /** The options with samples every {@code every} collected into {@code into}, if the engine samples. */
+    private RunOptions sampled(RunOptions options, double every, List<double[]> into) {
+        return engine().samples() ? options.withSamples(every, collect(into)) : options;
+    }
+
+    private static carom.core.engine.Sampler collect(List<double[]> into) {
+        return (t, state, virial) -> into.add(flatten(t, state));
+    }
+
+    private static double[] flatten(double t, Discs d) {
+        double[] all = new double[1 + 4 * d.n];
+        all[0] = t;
+        for (int i = 0; i < d.n; i++) {
+            all[1 + 4 * i] = d.x[i];
+            all[2 + 4 * i] = d.y[i];
+            all[3 + 4 * i] = d.vx[i];
+            all[4 + 4 * i] = d.vy[i];
+        }
+        return all;
+    }
+
+    protected static void assertSame(String what, RunResult actual, RunResult expected) {
+        assertThat(actual.pairCollisions()).as(what + ": pair collisions").isEqualTo(expected.pairCollisions());
+        assertThat(actual.wallCollisions()).as(what + ": wall collisions").isEqualTo(expected.wallCollisions());
+        assertThat(actual.events()).as(what + ": events").isEqualTo(expected.events());
+        assertThat(flatten(actual.until(), actual.finalState())).as(what + ": final state")
+                .isEqualTo(flatten(expected.until(), expected.finalState()));
+        assertThat(actual.kineticEnergyStart()).as(what + ": initial energy").isEqualTo(expected.kineticEnergyStart());
+    }
+}
