@@ -55,7 +55,7 @@ public final class ActorsCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         ActorsSettings settings = settings();
-        return ExperimentCommand.run(spec, err, common.out, settings.heap(), settings.quick(), settings.plans(),
+        return ExperimentCommand.run(spec, err, common, settings.heap(), settings.quick(), settings.plans(),
                 (machine, before, after, records) -> new ActorsReport(settings, machine, before, after, records).files());
     }
 
