@@ -74,6 +74,6 @@ public final class ActorsCommand implements Callable<Integer> {
                 CommonOptions.checkedList(CommonOptions.resolve(cellsPerActor, quick, QUICK_CELLS_PER_ACTOR, CELLS_PER_ACTOR), 1,
                         "--cells-per-actor"),
                 CommonOptions.checkedList(threads != null ? threads : defaultThreads, 1, "--threads"),
-                common.trials(2, 3), common.seed, common.heap(), common.warmup(0, 10_000), CommonOptions.commandLine(spec), quick);
+                common.trials(2, 3), common.seed, common.heap(), common.warmup(0, 10_000), carom.lab.LabMain.commandLine(spec), quick);
     }
 }

@@ -103,12 +103,4 @@ final class CommonOptions {
         return stripped;
     }
 
-    /** How the command was given, for the report. */
-    static String commandLine(picocli.CommandLine.Model.CommandSpec spec) {
-        StringBuilder sb = new StringBuilder("carom");
-        for (String arg : spec.commandLine().getParseResult().originalArgs()) {
-            sb.append(' ').append(arg.matches("[A-Za-z0-9_./=,:+-]+") ? arg : "'" + arg.replace("'", "'\\''") + "'");
-        }
-        return sb.toString();
-    }
 }

@@ -95,6 +95,6 @@ public final class ThesisCommand implements Callable<Integer> {
                 CommonOptions.atLeast(threads != null ? threads : Runtime.getRuntime().availableProcessors(), 1, "--threads"),
                 CommonOptions.atLeast(CommonOptions.resolve(cellsPerActor, quick, QUICK_CELLS_PER_ACTOR, CELLS_PER_ACTOR), 1,
                         "--cells-per-actor"),
-                common.seed, common.heap(), common.warmup(0, 10_000), CommonOptions.commandLine(spec), quick);
+                common.seed, common.heap(), common.warmup(0, 10_000), carom.lab.LabMain.commandLine(spec), quick);
     }
 }
