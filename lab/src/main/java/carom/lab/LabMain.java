@@ -7,6 +7,7 @@ import carom.lab.experiment.ExperimentCommand;
 import carom.lab.experiment.ExperimentWorker;
 import carom.lab.experiment.ThesisCommand;
 import carom.lab.study.AccuracyCommand;
+import carom.lab.study.eos.EosCommand;
 import carom.lab.study.AccuracyWorker;
 import carom.lab.study.StudyCommand;
 import java.io.PrintStream;
@@ -34,6 +35,15 @@ public final class LabMain implements Runnable {
 
     @Option(names = {"-h", "--help"}, usageHelp = true, description = "Show this help message and exit.")
     boolean help;
+
+    /** How a lab command was given, for its report: {@code carom} and the arguments, quoted for a POSIX shell where needed. */
+    public static String commandLine(CommandSpec spec) {
+        StringBuilder sb = new StringBuilder("carom");
+        for (String arg : spec.commandLine().getParseResult().originalArgs()) {
+            sb.append(' ').append(arg.matches("[A-Za-z0-9_./=,:+-]+") ? arg : "'" + arg.replace("'", "'\\''") + "'");
+        }
+        return sb.toString();
+    }
 
     public static void main(String[] args) {
         // Always exit: Akka's and the virtual-thread scheduler's threads must not keep a worker alive.
@@ -80,6 +90,9 @@ public final class LabMain implements Runnable {
             }
             if (cls == AccuracyCommand.class) {
                 return cls.cast(new AccuracyCommand(err));
+            }
+            if (cls == EosCommand.class) {
+                return cls.cast(new EosCommand(err));
             }
             return CommandLine.defaultFactory().create(cls);
         }

@@ -16,6 +16,7 @@ import java.awt.geom.Rectangle2D;
 import java.awt.image.BufferedImage;
 import java.util.List;
 import java.util.Locale;
+import java.util.function.IntFunction;
 
 /**
  * Draws one state of a scene's discs with Java2D: white background, the box (solid outline for walls,
@@ -47,7 +48,7 @@ public final class SceneRenderer {
      * Where things go in the picture. The longer box side is {@code size} pixels; the box sits below a
      * caption band of two text lines, with {@code margin} pixels around it, centred horizontally.
      */
-    record Layout(Box box, int size, double scale, int margin, int fontPx, int captionHeight,
+    public record Layout(Box box, int size, double scale, int margin, int fontPx, int captionHeight,
                   int width, int height, double left, double top) {
         static Layout of(Box box, int size) {
             double scale = size / Math.max(box.width(), box.height());
@@ -72,6 +73,11 @@ public final class SceneRenderer {
         /** Pixel row of world ordinate {@code y} (y points up in the world, down in the image). */
         double py(double y) {
             return top + (box.height() - y) * scale;
+        }
+
+        /** Right end of the room the caption's lines may use. */
+        public int captionRight() {
+            return width - margin;
         }
 
         Rectangle2D boxRect() {
@@ -113,6 +119,29 @@ public final class SceneRenderer {
 
     /** As {@link #draw(Scene, Discs, String, ColourMode, double, int)}, for a state that comes without its scene file (a trajectory). */
     public static BufferedImage draw(Subject scene, Discs discs, String timeLabel, ColourMode mode, double topSpeed, int size) {
+        int[] mobileRank = mobileRanks(scene.species());
+        double speedScale = topSpeed > 0 ? 1.0 / topSpeed : 0;
+        IntFunction<Color> fillOf = mode == ColourMode.SPEED
+                ? i -> Colours.speed(Math.hypot(discs.vx[i], discs.vy[i]) * speedScale)
+                : i -> Colours.species(mobileRank[discs.species[i]]);
+        Key key = mode == ColourMode.SPEED
+                ? (g, fm, layout, x, baseline) -> drawSpeedKey(g, fm, layout, x, baseline, topSpeed, scene.hasFixedDiscs())
+                : (g, fm, layout, x, baseline) -> drawSpeciesKey(g, fm, layout, x, baseline, scene.species());
+        return draw(scene, discs, timeLabel, fillOf, key, size);
+    }
+
+    /** The caption's second line: what the colours mean, drawn from {@code x} at {@code baseline}. */
+    @FunctionalInterface
+    public interface Key {
+        void draw(Graphics2D g, FontMetrics fm, Layout layout, int x, int baseline);
+    }
+
+    /**
+     * Draws {@code discs} with each mobile disc filled by {@code fillOf} (disc index to colour; fixed discs
+     * stay grey) and {@code key} as the caption's second line: for pictures coloured by a quantity of the
+     * caller's (the local bond order of the equation-of-state study, for one).
+     */
+    public static BufferedImage draw(Subject scene, Discs discs, String timeLabel, IntFunction<Color> fillOf, Key key, int size) {
         Layout layout = Layout.of(scene.box(), size);
         BufferedImage image = new BufferedImage(layout.width(), layout.height(), BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();
@@ -124,10 +153,10 @@ public final class SceneRenderer {
             g.setColor(Colours.BACKGROUND);
             g.fillRect(0, 0, layout.width(), layout.height());
 
-            drawDiscs(g, scene, discs, layout, mode, topSpeed);
+            drawDiscs(g, scene, discs, layout, fillOf);
             drawBox(g, layout);
             try {
-                drawCaption(g, scene, discs, layout, timeLabel, mode, topSpeed);
+                drawCaption(g, scene, discs, layout, timeLabel, key);
             } catch (RuntimeException | InternalError e) {
                 // No usable font on this machine (headless JDK without fontconfig): the picture goes
                 // without its caption rather than not at all.
@@ -138,15 +167,13 @@ public final class SceneRenderer {
         return image;
     }
 
-    private static void drawDiscs(Graphics2D g, Subject scene, Discs d, Layout layout, ColourMode mode, double topSpeed) {
+    private static void drawDiscs(Graphics2D g, Subject scene, Discs d, Layout layout, IntFunction<Color> fillOf) {
         Shape oldClip = g.getClip();
         Box box = scene.box();
         if (box.periodic()) {
             // Wrapped images end at the box edge, as the discs they stand for do.
             g.clip(layout.boxRect());
         }
-        int[] mobileRank = mobileRanks(scene.species());
-        double speedScale = topSpeed > 0 ? 1.0 / topSpeed : 0;
         // Mobile discs first, fixed ones on top so that they stay crisp.
         for (int pass = 0; pass < 2; pass++) {
             boolean fixedPass = pass == 1;
@@ -161,9 +188,7 @@ public final class SceneRenderer {
                     fill = Colours.FIXED_FILL;
                     outline = Colours.FIXED_OUTLINE;
                 } else {
-                    fill = mode == ColourMode.SPEED
-                            ? Colours.speed(Math.hypot(d.vx[i], d.vy[i]) * speedScale)
-                            : Colours.species(mobileRank[d.species[i]]);
+                    fill = fillOf.apply(i);
                     outline = Colours.outlineOf(fill);
                 }
                 double r = d.radius[i];
@@ -230,8 +255,7 @@ public final class SceneRenderer {
         g.draw(layout.boxRect());
     }
 
-    private static void drawCaption(Graphics2D g, Subject scene, Discs d, Layout layout, String timeLabel,
-                                     ColourMode mode, double topSpeed) {
+    private static void drawCaption(Graphics2D g, Subject scene, Discs d, Layout layout, String timeLabel, Key key) {
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, layout.fontPx()));
         FontMetrics fm = g.getFontMetrics();
         int x0 = layout.margin();
@@ -244,11 +268,7 @@ public final class SceneRenderer {
         if (countX > x0 + fm.stringWidth(scene.name() + "   t = " + timeLabel) + layout.fontPx()) {
             g.drawString(count, countX, line1);
         }
-        if (mode == ColourMode.SPEED) {
-            drawSpeedKey(g, fm, layout, x0, line2, topSpeed, scene.hasFixedDiscs());
-        } else {
-            drawSpeciesKey(g, fm, layout, x0, line2, scene.species());
-        }
+        key.draw(g, fm, layout, x0, line2);
     }
 
     /** One coloured dot and name per species, left to right. */

@@ -55,7 +55,7 @@ public final class ActorsCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         ActorsSettings settings = settings();
-        return ExperimentCommand.run(spec, err, common.out, settings.heap(), settings.quick(), settings.plans(),
+        return ExperimentCommand.run(spec, err, common, settings.heap(), settings.quick(), settings.plans(),
                 (machine, before, after, records) -> new ActorsReport(settings, machine, before, after, records).files());
     }
 
@@ -74,6 +74,6 @@ public final class ActorsCommand implements Callable<Integer> {
                 CommonOptions.checkedList(CommonOptions.resolve(cellsPerActor, quick, QUICK_CELLS_PER_ACTOR, CELLS_PER_ACTOR), 1,
                         "--cells-per-actor"),
                 CommonOptions.checkedList(threads != null ? threads : defaultThreads, 1, "--threads"),
-                common.trials(2, 3), common.seed, common.heap(), common.warmup(0, 10_000), CommonOptions.commandLine(spec), quick);
+                common.trials(2, 3), common.seed, common.heap(), common.warmup(0, 10_000), carom.lab.LabMain.commandLine(spec), quick);
     }
 }

@@ -44,7 +44,8 @@ final class ActorsReport {
                 .append("The thesis's open question (Schrock 2016, section 5.1, item 2): \"A comparison of the parallelization ")
                 .append("techniques with varying number of cores would be interesting. How does the ratio of actors to cores ")
                 .append("effect performance?\" Measured by\n\n```\n").append(settings.commandLine()).append("\n```\n\n");
-        md.append(ReportParts.machine(machine, settings.heap(), String.join(", ", settings.threads().stream().map(String::valueOf).toList()), loadBefore, loadAfter).markdown()).append('\n');
+        md.append(ReportParts.machine(machine, settings.heap(), String.join(", ", settings.threads().stream().map(String::valueOf).toList()),
+                settings.threads().stream().mapToInt(Integer::intValue).max().orElse(1), loadBefore, loadAfter).markdown()).append('\n');
         md.append("Workload: the thesis's (`StandardScenes.thesis`), N = ").append(settings.discs()).append(", ")
                 .append(settings.trials()).append(" trial(s) per configuration (trial t: seed ").append(settings.seed())
                 .append(" + t - 1). Each engine and thread count runs in a JVM of its own (the virtual-thread scheduler fixes ")

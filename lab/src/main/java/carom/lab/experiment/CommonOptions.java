@@ -37,6 +37,11 @@ final class CommonOptions {
             + "the runs in this JVM where they can be. To try the command, not to measure.")
     boolean quick;
 
+    @Option(names = "--require-quiet", description = "Refuse to start (error, exit status 2) when the one-minute load average "
+            + "is " + Machine.QUIET_LOAD + " or more: another process would share the cores. Without it such a run goes ahead "
+            + "and its report says the machine was shared.")
+    boolean requireQuiet;
+
     /** {@code given} if not null, else the quick or the full default. */
     static <T> T resolve(T given, boolean quick, T quickDefault, T fullDefault) {
         return given != null ? given : quick ? quickDefault : fullDefault;
@@ -98,12 +103,4 @@ final class CommonOptions {
         return stripped;
     }
 
-    /** How the command was given, for the report. */
-    static String commandLine(picocli.CommandLine.Model.CommandSpec spec) {
-        StringBuilder sb = new StringBuilder("carom");
-        for (String arg : spec.commandLine().getParseResult().originalArgs()) {
-            sb.append(' ').append(arg.matches("[A-Za-z0-9_./=,:+-]+") ? arg : "'" + arg.replace("'", "'\\''") + "'");
-        }
-        return sb.toString();
-    }
 }

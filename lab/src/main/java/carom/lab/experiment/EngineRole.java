@@ -5,9 +5,10 @@ import java.util.Optional;
 /**
  * Which of the thesis's three algorithms each of our engines stands for, so that the report sets the
  * right published column beside it. {@code fast} is our own exact serial engine, compared with the
- * thesis's single-thread model as {@code serial} is. Engines with no counterpart (such as the
- * fixed-step {@code stepped}) have no place in the thesis's tables; a new concurrency model gets a
- * line in {@link #of}.
+ * thesis's single-thread model as {@code serial} is. Engines with no counterpart (the exact parallel
+ * {@code slabs}, the fixed-step {@code stepped}) are "beyond the thesis": the report gives them a table
+ * of their own beside the thesis's fastest model; a new concurrency model that has a counterpart gets
+ * a line in {@link #of}.
  */
 enum EngineRole {
     SINGLE_THREAD("Single", "4.1", false),
@@ -37,14 +38,29 @@ enum EngineRole {
         });
     }
 
-    /** Whether the engine runs on several threads (false for an engine without a counterpart). */
+    /** Engines beyond the thesis that the experiment runs by default: the exact parallel one. */
+    static final java.util.List<String> BEYOND_BY_DEFAULT = java.util.List.of("slabs");
+
+    /**
+     * Whether the engine runs on several threads: as its counterpart does, or, beyond the thesis, when
+     * the engine takes more than one thread.
+     */
     static boolean isParallel(String engine) {
-        return of(engine).map(r -> r.parallel).orElse(false);
+        return of(engine).map(r -> r.parallel)
+                .orElseGet(() -> carom.engines.EngineCatalog.byName(engine).threadsFor(2) > 1);
     }
 
-    /** The engines that have a counterpart, in the order of {@code carom engines}. */
+    /** Whether the engine has no counterpart in the thesis. */
+    static boolean beyondThesis(String engine) {
+        return of(engine).isEmpty();
+    }
+
+    /**
+     * The default engines, in the order of {@code carom engines}: those that have a counterpart, and
+     * {@link #BEYOND_BY_DEFAULT}.
+     */
     static java.util.List<String> engines() {
         return carom.engines.EngineCatalog.all().stream().map(carom.core.engine.Engine::name)
-                .filter(name -> of(name).isPresent()).toList();
+                .filter(name -> of(name).isPresent() || BEYOND_BY_DEFAULT.contains(name)).toList();
     }
 }

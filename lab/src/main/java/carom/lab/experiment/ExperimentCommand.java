@@ -1,5 +1,7 @@
 package carom.lab.experiment;
 
+import carom.core.BadInputException;
+
 import carom.app.Main;
 import carom.lab.report.OutputFolder;
 import carom.lab.run.Machine;
@@ -38,11 +40,16 @@ public final class ExperimentCommand implements Runnable {
      * What every experiment does: checks the output folder, runs the plans in child JVMs with the load
      * average read before and after, writes the report folder and says what was written.
      */
-    static int run(CommandSpec spec, PrintStream err, Path out, String heap, boolean quick, List<ChildPlan> plans,
+    static int run(CommandSpec spec, PrintStream err, CommonOptions common, String heap, boolean quick, List<ChildPlan> plans,
                    Report report) {
+        Path out = common.out;
         OutputFolder.check(out, "--out");
         Machine machine = Machine.current();
         double loadBefore = Machine.loadAverage();
+        if (common.requireQuiet && loadBefore >= Machine.QUIET_LOAD) {
+            throw new BadInputException(String.format(java.util.Locale.ROOT, "--require-quiet: the load average is %.2f on %d cores "
+                    + "(%.1f or more means another process is running); nothing was run", loadBefore, machine.cores(), Machine.QUIET_LOAD));
+        }
         ExperimentRunner.Outcome outcome = new ExperimentRunner(heap, err, quick).run(plans);
         double loadAfter = Machine.loadAverage();
         Map<String, byte[]> files = report.files(machine, loadBefore, loadAfter, outcome.records());

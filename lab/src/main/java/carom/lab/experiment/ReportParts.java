@@ -25,7 +25,7 @@ final class ReportParts {
     }
 
     /** What the report says of the machine and the run's conditions. */
-    static Table machine(Machine machine, String heap, String threads, double loadBefore, double loadAfter) {
+    static Table machine(Machine machine, String heap, String threads, int ownThreads, double loadBefore, double loadAfter) {
         Table t = new Table("", "this run");
         t.add("machine", machine.cores() + " cores (" + machine.cpu() + "), " + machine.memory());
         t.add("JVM", machine.jvm());
@@ -33,6 +33,8 @@ final class ReportParts {
         t.add("heap of each child JVM", "-Xmx" + heap);
         t.add("threads", threads);
         t.add("load average (1 min) before / after", Table.readable(loadBefore) + " / " + Table.readable(loadAfter));
+        String shared = machine.sharedVerdict(loadBefore, loadAfter, ownThreads);
+        t.add("machine to itself", shared == null ? "yes, as far as the load average tells" : "**no**: " + shared);
         return t;
     }
 

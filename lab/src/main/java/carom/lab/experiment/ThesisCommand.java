@@ -1,6 +1,5 @@
 package carom.lab.experiment;
 
-import carom.core.BadInputException;
 import java.io.PrintStream;
 import java.util.List;
 import java.util.concurrent.Callable;
@@ -54,7 +53,8 @@ public final class ThesisCommand implements Callable<Integer> {
     boolean noLarge;
 
     @Option(names = "--engines", split = ",", paramLabel = "NAME,...",
-            description = "Engines to run (default: those with a counterpart in the thesis: serial, fast, stripes, akka, vthreads).")
+            description = "Engines to run (default: those with a counterpart in the thesis, serial, fast, stripes, akka and vthreads, "
+                    + "and slabs, beyond the thesis: any engine without a counterpart gets a table of its own).")
     List<String> engines;
 
     @Option(names = "--threads", paramLabel = "K",
@@ -76,7 +76,7 @@ public final class ThesisCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         ThesisSettings settings = settings();
-        return ExperimentCommand.run(spec, err, common.out, settings.heap(), settings.quick(), settings.plans(),
+        return ExperimentCommand.run(spec, err, common, settings.heap(), settings.quick(), settings.plans(),
                 (machine, before, after, records) -> new ThesisReport(settings, machine, before, after, records).files());
     }
 
@@ -89,18 +89,12 @@ public final class ThesisCommand implements Callable<Integer> {
             throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--no-large and --large-sizes contradict each other");
         }
         List<String> names = CommonOptions.checkedEngines(engines != null ? engines : EngineRole.engines());
-        for (String name : names) {
-            if (EngineRole.of(name).isEmpty()) {
-                throw new BadInputException("--engines: engine " + name + " has no counterpart in the thesis (those that have: "
-                        + String.join(", ", EngineRole.engines()) + ")");
-            }
-        }
         return new ThesisSettings(mainSizes, common.trials(2, 5), large,
                 CommonOptions.atLeast(largeTrials != null ? largeTrials : 2, 1, "--large-trials"),
                 names,
                 CommonOptions.atLeast(threads != null ? threads : Runtime.getRuntime().availableProcessors(), 1, "--threads"),
                 CommonOptions.atLeast(CommonOptions.resolve(cellsPerActor, quick, QUICK_CELLS_PER_ACTOR, CELLS_PER_ACTOR), 1,
                         "--cells-per-actor"),
-                common.seed, common.heap(), common.warmup(0, 10_000), CommonOptions.commandLine(spec), quick);
+                common.seed, common.heap(), common.warmup(0, 10_000), carom.lab.LabMain.commandLine(spec), quick);
     }
 }

@@ -24,6 +24,9 @@ public final class Charts {
     public static final int WIDTH = 900;
     public static final int HEIGHT = 560;
     /** A marker per line besides its colour, so that lines that coincide stay apart; grey squares are references. */
+    /** Markers of reference lines, in order: a plot with one reference gets squares. */
+    private static final Marker[] REFERENCE_MARKERS = {SeriesMarkers.SQUARE, SeriesMarkers.DIAMOND, SeriesMarkers.TRIANGLE_UP,
+        SeriesMarkers.TRIANGLE_DOWN};
     private static final Marker[] MARKERS = {SeriesMarkers.CIRCLE, SeriesMarkers.DIAMOND, SeriesMarkers.TRIANGLE_UP,
         SeriesMarkers.TRIANGLE_DOWN, SeriesMarkers.CROSS, SeriesMarkers.PLUS};
 
@@ -114,12 +117,14 @@ public final class Charts {
         ChartStyle.xAxis(chart, xAxis);
         ChartStyle.yAxis(chart, yAxis);
         int index = 0;
+        int references = 0;
         for (Line line : f.lines()) {
             if (line.x().isEmpty()) {
                 continue; // XChart refuses an empty series; the report's tables say what is missing
             }
             Color c = line.reference() ? ChartStyle.GUIDE : ChartStyle.PALETTE[index % ChartStyle.PALETTE.length];
-            Marker marker = line.reference() ? SeriesMarkers.SQUARE : MARKERS[index % MARKERS.length];
+            // Several references in one plot (published series) tell apart by their markers.
+            Marker marker = line.reference() ? REFERENCE_MARKERS[references++ % REFERENCE_MARKERS.length] : MARKERS[index % MARKERS.length];
             if (!line.reference()) {
                 index++;
             }

@@ -29,6 +29,32 @@ public record Machine(int cores, String cpu, String jvm, String os, long physica
         return load < 0 ? Double.NaN : load;
     }
 
+    /**
+     * A one-minute load average at or above this before a measurement means another process was
+     * already running: the measurement would share the cores with it.
+     */
+    public static final double QUIET_LOAD = 0.5;
+
+    /**
+     * Whether the load averages read before and after a measurement say that another process shared
+     * the cores: already busy before it started ({@link #QUIET_LOAD} or more), or afterwards above what
+     * the measurement's own {@code ownThreads} busy threads explain (plus one for the JVM's own GC and
+     * JIT threads). Null when quiet; otherwise a sentence for the report. The one-minute average lags,
+     * so this flags, it does not prove: a quiet verdict is necessary for trust, not sufficient.
+     */
+    public String sharedVerdict(double loadBefore, double loadAfter, int ownThreads) {
+        double ownLoad = Math.min(cores, ownThreads) + 1;
+        if (loadBefore >= QUIET_LOAD) {
+            return String.format(Locale.ROOT, "shared: the load average was %.2f on %d cores before the first run, so another "
+                    + "process was using them; treat the times as upper bounds and rerun on a quiet machine", loadBefore, cores);
+        }
+        if (loadAfter > ownLoad) {
+            return String.format(Locale.ROOT, "shared: the load average was %.2f on %d cores after the last run, above the %.0f "
+                    + "this measurement's own threads explain; treat the times as upper bounds", loadAfter, cores, ownLoad);
+        }
+        return null;
+    }
+
     /** Half the machine's memory, in whole GiB (at least 1): the default heap of each child JVM. */
     public static String defaultHeap() {
         long gib = physicalMemory() >> 30;

@@ -26,8 +26,8 @@ import org.junit.jupiter.params.provider.ValueSource;
  * in --quick mode: the folder holds what the report promises, and bad options never start a run.
  */
 class ExperimentCommandTest {
-    private static final List<String> ENGINES = List.of("serial", "fast", "stripes", "akka", "vthreads");
-    private static final List<String> PARALLEL = List.of("stripes", "akka", "vthreads");
+    private static final List<String> ENGINES = List.of("serial", "fast", "stripes", "akka", "vthreads", "slabs");
+    private static final List<String> PARALLEL = List.of("stripes", "akka", "vthreads", "slabs");
     private static final List<String> QUICK_SIZES = List.of("16", "200", "400");
     private static final List<String> QUICK_LARGE_SIZES = List.of("600", "800");
 
@@ -42,9 +42,9 @@ class ExperimentCommandTest {
 
         assertThat(r.status()).as(r.err()).isZero();
         assertThat(r.err()).isEmpty(); // no progress bar off a terminal
-        assertThat(r.out()).contains("wrote " + out).contains("42 of 42 runs measured");
+        assertThat(r.out()).contains("wrote " + out).contains("52 of 52 runs measured");
         List<String> expected = new ArrayList<>(List.of("report.md", "runs.csv", "table-4.1-single-thread.csv",
-                "table-4.2-non-actor.csv", "table-4.3-actor.csv", "table-4.4-large.csv"));
+                "table-4.2-non-actor.csv", "table-4.3-actor.csv", "table-4.4-large.csv", "table-beyond-thesis.csv"));
         List<String> plots = new ArrayList<>(List.of("time-all-engines", "time-parallel-engines", "messages-per-collision"));
         ENGINES.forEach(e -> plots.add("time-" + e));
         plots.forEach(p -> expected.addAll(List.of(p + ".png", p + ".svg")));
@@ -62,6 +62,8 @@ class ExperimentCommandTest {
         assertOurRows(out.resolve("table-4.2-non-actor.csv"), List.of("stripes"), QUICK_SIZES, 11);
         assertOurRows(out.resolve("table-4.3-actor.csv"), List.of("akka", "vthreads"), QUICK_SIZES, 11);
         assertOurRows(out.resolve("table-4.4-large.csv"), PARALLEL, QUICK_LARGE_SIZES, 32);
+        // slabs, beyond the thesis, beside the thesis's fastest model where the thesis has the size (16 only)
+        assertOurRows(out.resolve("table-beyond-thesis.csv"), List.of("slabs"), QUICK_SIZES, 1);
         for (Map<String, String> row : csv(out.resolve("table-4.3-actor.csv"))) {
             if (row.get("source").equals("carom") && !row.get("n").equals("16")) {
                 assertThat(Double.parseDouble(row.get("messages_per_collision"))).isPositive();
@@ -70,7 +72,7 @@ class ExperimentCommandTest {
         }
 
         List<Map<String, String>> runs = csv(out.resolve("runs.csv"));
-        assertThat(runs).hasSize(2 * 3 * 2 + 3 * (3 + 2) * 2); // serial engines: 3 sizes; parallel: 3 + 2 sizes; 2 trials
+        assertThat(runs).hasSize(2 * 3 * 2 + 4 * (3 + 2) * 2); // serial engines: 3 sizes; parallel: 3 + 2 sizes; 2 trials
         assertThat(runs).allSatisfy(run -> {
             assertThat(run.get("skipped")).isEmpty();
             assertThat(Double.parseDouble(run.get("wall_ms"))).isPositive();

@@ -67,5 +67,10 @@ class ThesisNumbersTest {
         assertThat(EngineRole.of("something-new")).isEmpty();
         assertThat(EngineRole.isParallel("serial")).isFalse();
         assertThat(EngineRole.isParallel("stripes")).isTrue();
+        // beyond the thesis: slabs runs by default, on several threads; stepped only when asked for
+        assertThat(EngineRole.beyondThesis("slabs")).isTrue();
+        assertThat(EngineRole.isParallel("slabs")).isTrue();
+        assertThat(EngineRole.isParallel("stepped")).isFalse();
+        assertThat(EngineRole.engines()).contains("slabs").doesNotContain("stepped");
     }
 }

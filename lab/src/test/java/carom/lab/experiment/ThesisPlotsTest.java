@@ -3,6 +3,7 @@ package carom.lab.experiment;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import carom.lab.report.Charts;
+import carom.lab.report.Table;
 import carom.lab.run.Machine;
 import carom.lab.run.TrialRecord;
 import java.util.ArrayList;
@@ -17,7 +18,8 @@ class ThesisPlotsTest {
 
     /** Two trials per engine and size, serial about a millisecond, akka hundreds. */
     private static List<TrialRecord> records() {
-        Map<String, Double> msPerDisc = Map.of("serial", 0.004, "fast", 0.003, "stripes", 0.03, "akka", 0.6, "vthreads", 0.2);
+        Map<String, Double> msPerDisc = Map.of("serial", 0.004, "fast", 0.003, "stripes", 0.03, "akka", 0.6, "vthreads", 0.2,
+                "slabs", 0.002);
         List<TrialRecord> records = new ArrayList<>();
         for (String engine : EngineRole.engines()) {
             List<Integer> sizes = new ArrayList<>(SIZES);
@@ -56,6 +58,10 @@ class ThesisPlotsTest {
     void thePerEnginePlotsHaveOneScaleAndNoThesisRowAtNZero() {
         for (String engine : EngineRole.engines()) {
             Charts.Figure f = figures().get("time-" + engine);
+            if (EngineRole.beyondThesis(engine)) {
+                assertThat(f.lines()).as(engine + ": no thesis counterpart, no thesis line").hasSize(1);
+                continue;
+            }
             assertThat(f.lines()).as(engine).hasSize(2);
             assertThat(f.lines().get(1).reference()).isTrue();
             assertThat(f.lines()).allSatisfy(l -> assertThat(l.x()).as(l.name()).allSatisfy(x -> assertThat(x).isPositive()));
@@ -65,6 +71,23 @@ class ThesisPlotsTest {
             assertThat(ThesisReport.thesisLine(role, 3_000_000).x()).as(role.name())
                     .isNotEmpty().allSatisfy(x -> assertThat(x).isGreaterThanOrEqualTo(16));
         }
+    }
+
+    @Test
+    void enginesBeyondTheThesisGetATableOfTheirOwnBesideTheThesissFastestModel() {
+        ThesisSettings settings = new ThesisSettings(SIZES, 2, LARGE, 2, EngineRole.engines(), 2, 16, 1, "1g", 0,
+                "carom experiment thesis", false);
+        Map<String, byte[]> files = new ThesisReport(settings, Machine.current(), 0, 0, records()).files();
+        String report = new String(files.get(ThesisReport.REPORT), java.nio.charset.StandardCharsets.UTF_8);
+        String csv = new String(files.get(ThesisReport.BEYOND_TABLE), java.nio.charset.StandardCharsets.UTF_8);
+
+        assertThat(report).contains("## Beyond the thesis: slabs").contains("slabs speed-up")
+                .contains("slabs (ms, beyond the thesis)");
+        double fastestAt16 = java.util.Arrays.stream(EngineRole.values())
+                .flatMap(role -> ThesisNumbers.table(role).stream()).filter(r -> r.discs() == 16)
+                .mapToDouble(r -> r.stats().mean()).min().orElseThrow();
+        assertThat(csv).contains("16,thesis fastest,thesis,5," + Table.plain(fastestAt16) + ",")
+                .contains("16,slabs,carom,2,");
     }
 
     @Test

@@ -1,0 +1,54 @@
+package carom.lab.study.eos;
+
+import java.util.List;
+
+/**
+ * Published equation-of-state points of equal hard discs, as βPσ² (σ the diameter) against packing
+ * fraction, with their source and system size: what the study plots beside its own.
+ */
+final class EosLiterature {
+    /** One published point. */
+    record Point(double phi, double betaPSigma2, String source) {
+    }
+
+    /** A published series: one source and system size. */
+    record Series(String name, List<Point> points) {
+    }
+
+    private EosLiterature() {
+    }
+
+    /**
+     * The fluid (Kolafa and Rottner 2006, the values carom's physics tests use, given there as Z and
+     * converted here), the HistoricDisks data set (Engel et al. 2013, Li et al. 2022) at N = 870, and its
+     * N = 1024² runs through the liquid-hexatic loop.
+     */
+    static List<Series> all() {
+        return List.of(
+                new Series("fluid: Kolafa-Rottner 2006, Bernard-Krauth 2011", List.of(
+                        fromZ(0.30, 2.0633, "KR2006"), fromZ(0.50, 4.1069, "KR2006"), fromZ(0.65, 8.4078, "KR2006"),
+                        fromZ(0.68, 9.8328, "BK2011"))),
+                new Series("HistoricDisks N = 870", List.of(
+                        new Point(0.670, 7.986735, "HistoricDisks N=870"), new Point(0.680, 8.513233, "HistoricDisks N=870"))),
+                new Series("HistoricDisks N = 1024²", List.of(
+                        new Point(0.698, 9.169342, "HistoricDisks N=1024^2"), new Point(0.700, 9.185405, "HistoricDisks N=1024^2"),
+                        new Point(0.708, 9.184959, "HistoricDisks N=1024^2"), new Point(0.716, 9.18327, "HistoricDisks N=1024^2"),
+                        new Point(0.720, 9.23083, "HistoricDisks N=1024^2"))));
+    }
+
+    private static Point fromZ(double phi, double z, String source) {
+        return new Point(phi, EosScene.betaPSigma2(z, phi), source);
+    }
+
+    /** The published point at {@code phi} (to 1e-9), of any series, or null. */
+    static Point at(double phi) {
+        for (Series s : all()) {
+            for (Point p : s.points()) {
+                if (Math.abs(p.phi() - phi) < 1e-9) {
+                    return p;
+                }
+            }
+        }
+        return null;
+    }
+}
