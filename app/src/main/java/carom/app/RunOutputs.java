@@ -13,7 +13,7 @@ import java.nio.file.Path;
 /**
  * What a finished run leaves, as {@code simulate} leaves it: the readable summary on stdout when no file
  * is asked for, else the report folder, the final state and the JSON summary staged in that order (the
- * summary last, so that it certifies the others). Used by {@code resume}; the caller commits.
+ * summary last, so that it certifies the others). Used by {@code simulate} and {@code resume}; the caller commits.
  */
 final class RunOutputs {
     private RunOutputs() {
@@ -40,6 +40,7 @@ final class RunOutputs {
             files.stage(out, w -> FinalStateCsv.write(result.finalState(), w));
         }
         if (summary != null) {
+            // Staged last, so renamed last: a summary on disk means the files it describes are there too.
             ObjectNode json = SummaryJson.toJson(scene.name(), scene.size(), threadsUsed, result, energy, checks);
             files.stage(summary, w -> SummaryJson.write(json, w));
         }

@@ -9,7 +9,6 @@ import carom.core.engine.RunStopped;
 import carom.core.engine.Sampler;
 import carom.core.engine.Tunables;
 import carom.core.engine.WorkEstimate;
-import carom.core.engine.Energy;
 import carom.core.observe.jfr.CaromRecording;
 import carom.app.checkpoint.CheckpointFile;
 import carom.app.checkpoint.CheckpointOptions;
@@ -21,7 +20,6 @@ import carom.app.report.RunRecord;
 import carom.core.scene.Scene;
 import carom.core.scene.SceneReader;
 import carom.engines.EngineCatalog;
-import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.io.UncheckedIOException;
@@ -193,31 +191,13 @@ final class SimulateCommand implements Callable<Integer> {
                 files.stageFile(jfr, recording::dump);
             }
             int used = result.threadsUsed(engine.threadsFor(workers));
-            Energy energy = Energy.of(scene, result);
-            FinalChecks checks = FinalChecks.of(scene, result.finalState());
-            if (out == null && summary == null) {
-                ReadableSummary.print(scene.name(), scene.size(), used, result, energy, checks, spec.commandLine().getOut(),
-                        stdoutCharset);
-            }
-            if (observing != null) {
-                // run.json says what made the folder, for 'carom report'.
-                RunRecord record = new RunRecord(Provenance.commandLine(
-                        spec.commandLine().getParseResult().originalArgs()), engine.name(), scene.name(), sceneFile,
-                        scene.size(), scene.until(), every, List.of(observe.split(",")).stream().map(String::strip).toList(),
-                        Provenance.machine());
-                files.stageFolder(report, folder -> {
-                    observing.writeInto(folder);
-                    record.writeInto(folder);
-                });
-            }
-            if (out != null) {
-                files.stage(out, w -> FinalStateCsv.write(result.finalState(), w));
-            }
-            if (summary != null) {
-                // Staged last, so renamed last: a summary on disk means the files it describes are there too.
-                ObjectNode json = SummaryJson.toJson(scene.name(), scene.size(), used, result, energy, checks);
-                files.stage(summary, w -> SummaryJson.write(json, w));
-            }
+            // run.json says what made the report folder, for 'carom report'.
+            RunRecord record = observing == null ? null : new RunRecord(Provenance.commandLine(
+                    spec.commandLine().getParseResult().originalArgs()), engine.name(), scene.name(), sceneFile,
+                    scene.size(), scene.until(), every, List.of(observe.split(",")).stream().map(String::strip).toList(),
+                    Provenance.machine());
+            RunOutputs.stage(files, scene, used, result, observing, record, report, out, summary, spec.commandLine().getOut(),
+                    stdoutCharset);
             files.commit();
         } catch (RunStopped stopped) {
             // Nothing but the checkpoint is written: the run is not over.
