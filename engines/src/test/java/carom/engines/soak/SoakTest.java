@@ -71,7 +71,9 @@ class SoakTest {
         Soak soak = new Soak(engineName, start);
         while (soak.collisions < target && soak.segments < 10 * SEGMENTS) {
             double left = SEGMENTS - Math.min(soak.segments, SEGMENTS - 1);
-            soak.segment((target - soak.collisions) / left / rate);
+            // Never a sliver: a last segment of a few collisions may have none, which is no failure.
+            double collisionsNext = Math.max((target - soak.collisions) / left, target / SEGMENTS / 10);
+            soak.segment(collisionsNext / rate);
             rate = soak.collisions / soak.time;
         }
         soak.report("dense gas N " + DENSE_N + " phi " + DENSE_PHI);
