@@ -44,8 +44,9 @@ import org.junit.jupiter.params.provider.MethodSource;
  * (skipped where that does not stop a writer: as root) and {@code /proc}, where nobody, root included,
  * can create a file.
  *
- * <p>The default suite runs a few kills of each kind; {@code -Pfaults} runs every command with both
- * signals at both moments.
+ * <p>The default suite runs three kills, the full disk for {@code simulate} and every read-only case;
+ * {@code -Pfaults} (tag {@code faults}) runs every command with both signals at both moments and the full
+ * disk for the other commands.
  */
 class FaultsTest {
     /** Discs of the scene whose final state takes a while to write. */
