@@ -8,22 +8,29 @@ import java.io.OutputStreamWriter;
 import java.io.UncheckedIOException;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.AccessDeniedException;
 import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.DirectoryStream;
+import java.nio.file.FileSystemException;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
 import java.time.Duration;
 import java.time.Instant;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.HashSet;
 import java.util.HexFormat;
 import java.util.List;
 import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ThreadLocalRandom;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import java.util.stream.Stream;
 
 /**
  * Output files that appear whole or not at all. Each file is first written to a hidden temporary
@@ -36,11 +43,12 @@ import java.util.regex.Pattern;
  * from the same run, even if the process was killed between two renames. ({@code simulate} stages its
  * summary last.)
  *
- * <p>A process killed while writing (SIGKILL, a power cut) cannot delete its temporary files. They are
- * named {@code .TARGET.carom-PID-NS-RANDOM.tmp} (PID the writer's process id, NS its pid namespace),
- * and the next output into the same directory removes those of a process that no longer runs, and any
- * of them a day old (a process id reused since, another machine sharing the directory). Nothing else
- * is ever touched.
+ * <p>A process asked to stop (SIGTERM, SIGINT: Ctrl-C) removes its temporaries on the way out. One
+ * killed outright (SIGKILL, a power cut) cannot. They are named {@code .TARGET.carom-PID-NS-RANDOM.tmp}
+ * (PID the writer's process id, NS its pid namespace; a staged folder is named so too), and the next
+ * output into the same directory removes those of a process that no longer runs, and any of them a day
+ * old (a process id reused since, another machine sharing the directory). Nothing else is ever touched:
+ * only regular files and real folders (never a symbolic link) of exactly that naming.
  */
 public final class AtomicOutput implements AutoCloseable {
     /** Writes one file's content. */
@@ -66,9 +74,23 @@ public final class AtomicOutput implements AutoCloseable {
     /** Characters of the target's name kept in a temporary's name, so that it stays within a file name's limit. */
     private static final int NAME_CHARS_KEPT = 120;
 
+    /** Outputs not yet closed, whose temporaries the shutdown hook removes when the JVM is asked to stop. */
+    private static final Set<AtomicOutput> OPEN = ConcurrentHashMap.newKeySet();
+
+    static {
+        Runtime.getRuntime().addShutdownHook(new Thread(() -> OPEN.forEach(AtomicOutput::close), "carom-remove-temporaries"));
+    }
+
+    /** Guarded by {@code this}: the shutdown hook reads it from its own thread. */
     private final List<Staged> staged = new ArrayList<>();
     /** Directories already cleared of debris by this output. */
     private final Set<Path> swept = new HashSet<>();
+    /** Guarded by {@code this}: once closed (by the run or the shutdown hook), nothing new is staged. */
+    private boolean closed;
+
+    public AtomicOutput() {
+        OPEN.add(this);
+    }
 
     /**
      * Bad input unless {@code target} can be created or replaced: its directory exists and is writable
@@ -90,9 +112,9 @@ public final class AtomicOutput implements AutoCloseable {
 
     /** Writes {@code content} to a temporary file beside {@code target}. */
     public void stage(Path target, Content content) {
-        Path temp = newTemp(target);
+        Path temp = newTemp(target, false);
         try (Writer w = new BufferedWriter(new OutputStreamWriter(Files.newOutputStream(temp,
-                StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE), StandardCharsets.UTF_8), BUFFER)) {
+                StandardOpenOption.WRITE), StandardCharsets.UTF_8), BUFFER)) {
             content.writeTo(w);
         } catch (IOException e) {
             throw cannotWrite(target, e);
@@ -101,7 +123,7 @@ public final class AtomicOutput implements AutoCloseable {
 
     /** Has {@code content} write a temporary file beside {@code target}. */
     public void stageFile(Path target, FileContent content) {
-        Path temp = newTemp(target);
+        Path temp = newTemp(target, false);
         try {
             content.writeTo(temp);
         } catch (IOException e) {
@@ -114,10 +136,10 @@ public final class AtomicOutput implements AutoCloseable {
      * trajectory); the caller closes it, and {@link #commit} moves it into place with the others.
      */
     public Writer stream(Path target) {
-        Path temp = newTemp(target);
+        Path temp = newTemp(target, false);
         try {
             return new BufferedWriter(new OutputStreamWriter(Files.newOutputStream(temp,
-                    StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE), StandardCharsets.UTF_8), BUFFER);
+                    StandardOpenOption.WRITE), StandardCharsets.UTF_8), BUFFER);
         } catch (IOException e) {
             throw cannotWrite(target, e);
         }
@@ -135,9 +157,8 @@ public final class AtomicOutput implements AutoCloseable {
      * at all.
      */
     public void stageFolder(Path target, FolderContent content) {
-        Path temp = newTemp(target);
+        Path temp = newTemp(target, true);
         try {
-            Files.createDirectory(temp);
             content.writeInto(temp);
         } catch (IOException e) {
             throw cannotWrite(target, e);
@@ -166,12 +187,34 @@ public final class AtomicOutput implements AutoCloseable {
     }
 
     private static UncheckedIOException cannotWrite(Path target, IOException e) {
-        return new UncheckedIOException("cannot write " + Quoted.fileName(target.toString()) + ": "
-                + Quoted.fileName(String.valueOf(e.getMessage())), e);
+        return new UncheckedIOException("cannot write " + Quoted.fileName(target.toString()) + ": " + why(e), e);
     }
 
-    /** Names a temporary file beside {@code target} and remembers it (also for {@link #close}). */
-    private Path newTemp(Path target) {
+    /**
+     * What went wrong, in words: the system's reason (No space left on device, File too large, Read-only
+     * file system) where Java kept it; Java's exceptions for a missing file or a refused permission carry
+     * only the path.
+     */
+    public static String why(IOException e) {
+        if (e instanceof AccessDeniedException) {
+            return "permission denied";
+        }
+        if (e instanceof NoSuchFileException) {
+            return "no such file or directory";
+        }
+        if (e instanceof FileSystemException fs && fs.getReason() != null) {
+            return Quoted.fileName(fs.getReason());
+        }
+        return Quoted.fileName(String.valueOf(e.getMessage()));
+    }
+
+    /**
+     * Creates an empty temporary file (or folder) beside {@code target} and remembers it (also for
+     * {@link #close}). Created and remembered in one step, and never once closed, so that the shutdown
+     * hook's {@link #close} misses none: writers then open it without creating it, and one the hook
+     * removed under them fails instead of coming back.
+     */
+    private Path newTemp(Path target, boolean folder) {
         Path absolute = target.toAbsolutePath();
         if (swept.add(absolute.getParent())) {
             removeStaleTemps(absolute.getParent());
@@ -179,7 +222,21 @@ public final class AtomicOutput implements AutoCloseable {
         // Created by name rather than Files.createTempFile, so the file gets the usual permissions
         // (umask) instead of owner-only ones, and keeps them after the rename.
         Path temp = tempFor(absolute);
-        staged.add(new Staged(temp, absolute));
+        synchronized (this) {
+            try {
+                if (closed) {
+                    throw new IOException("carom is stopping");
+                }
+                if (folder) {
+                    Files.createDirectory(temp);
+                } else {
+                    Files.createFile(temp);
+                }
+            } catch (IOException e) {
+                throw cannotWrite(target, e);
+            }
+            staged.add(new Staged(temp, absolute));
+        }
         return temp;
     }
 
@@ -192,26 +249,41 @@ public final class AtomicOutput implements AutoCloseable {
     }
 
     /**
-     * Deletes the temporary files in {@code dir} that a killed writer left: those {@link #TEMP_NAME}
-     * matches whose process is gone (same pid namespace) or that are {@link #STALE_ANYWAY} old.
-     * Best effort: a file that cannot be read or deleted stays, and no failure here stops the output.
+     * Deletes the temporary files and staged folders in {@code dir} that a killed writer left: those
+     * {@link #TEMP_NAME} matches whose process is gone (same pid namespace) or that are
+     * {@link #STALE_ANYWAY} old (a folder by its own time stamp, which a writer's new files refresh).
+     * Symbolic links are never followed nor removed. Best effort: whatever cannot be read or deleted
+     * stays, and no failure here stops the output.
      */
     public static void removeStaleTemps(Path dir) {
         Instant old = Instant.now().minus(STALE_ANYWAY);
         try (DirectoryStream<Path> files = Files.newDirectoryStream(dir, ".*.carom-*.tmp")) {
             for (Path file : files) {
                 Matcher m = TEMP_NAME.matcher(file.getFileName().toString());
-                if (!m.matches() || !Files.isRegularFile(file)) {
+                boolean folder = Files.isDirectory(file, LinkOption.NOFOLLOW_LINKS);
+                if (!m.matches() || !folder && !Files.isRegularFile(file, LinkOption.NOFOLLOW_LINKS)) {
                     continue;
                 }
                 boolean ownersGone = m.group(2).equals(Namespace.ID) && !alive(m.group(1));
-                if (ownersGone || Files.getLastModifiedTime(file).toInstant().isBefore(old)) {
-                    Files.deleteIfExists(file);
+                if (ownersGone || Files.getLastModifiedTime(file, LinkOption.NOFOLLOW_LINKS).toInstant().isBefore(old)) {
+                    deleteTree(file);
                 }
             }
         } catch (IOException | RuntimeException e) {
             // Debris stays for a later run; this run's own output is what matters.
         }
+    }
+
+    /** Deletes a file, or a folder with everything in it (links as links, never what they point to). */
+    private static void deleteTree(Path root) throws IOException {
+        if (Files.isDirectory(root, LinkOption.NOFOLLOW_LINKS)) {
+            try (Stream<Path> tree = Files.walk(root)) {
+                for (Path p : tree.sorted(Comparator.reverseOrder()).toList()) {
+                    Files.deleteIfExists(p);
+                }
+            }
+        }
+        Files.deleteIfExists(root);
     }
 
     private static boolean alive(String pid) {
@@ -226,7 +298,7 @@ public final class AtomicOutput implements AutoCloseable {
      * Moves every staged file into place, in the order staged, the last one (the certificate) only
      * after an old file of its name is gone and every other one is in place.
      */
-    public void commit() {
+    public synchronized void commit() {
         try {
             if (staged.size() > 1) {
                 Files.deleteIfExists(staged.getLast().target());
@@ -256,21 +328,23 @@ public final class AtomicOutput implements AutoCloseable {
         }
     }
 
-    /** Removes whatever was staged but not moved into place. */
+    /**
+     * Removes whatever was staged but not moved into place. Also called by the shutdown hook while the
+     * run's thread may still be writing: a file deleted under a writer is gone all the same, and a
+     * folder still filling may keep a file or two for the next run to sweep.
+     */
     @Override
-    public void close() {
+    public synchronized void close() {
+        closed = true;
+        OPEN.remove(this);
         for (Staged s : staged) {
-            try {
-                if (Files.isDirectory(s.temp())) {
-                    try (var files = Files.walk(s.temp())) {
-                        for (Path f : files.sorted(java.util.Comparator.reverseOrder()).toList()) {
-                            Files.deleteIfExists(f);
-                        }
-                    }
+            // A folder may still be filling (the hook's case): a few rounds take what came meanwhile.
+            for (int round = 0; round < 5 && Files.exists(s.temp(), LinkOption.NOFOLLOW_LINKS); round++) {
+                try {
+                    deleteTree(s.temp());
+                } catch (IOException | UncheckedIOException e) {
+                    // Nothing more to do: the failure that brought us here is the one to report.
                 }
-                Files.deleteIfExists(s.temp());
-            } catch (IOException e) {
-                // Nothing more to do: the failure that brought us here is the one to report.
             }
         }
     }

@@ -10,8 +10,9 @@ import picocli.CommandLine.UnmatchedArgumentException;
 
 /**
  * Turns every way a command can fail into one {@code error: } line on stderr and an exit status:
- * 2 for bad input (the user can fix it), 1 for a failure of carom itself or of the file system. Stack traces are for
- * developers only ({@code CAROM_DEBUG=1}); users get the one line.
+ * 2 for bad input and for an output that cannot be written (a full disk, a read-only folder: the user can
+ * fix either), 1 for a failure of carom itself. Stack traces are for developers only ({@code CAROM_DEBUG=1});
+ * users get the one line.
  *
  * <p>Every message goes out through one door, {@link #errorLine}: {@code error: } and the message with
  * control characters escaped, cut to {@link #MAX_LINE_CHARS} and then saying how long it was, so that
@@ -61,10 +62,10 @@ final class ErrorReporting {
             return Main.BAD_INPUT;
         }
         if (t instanceof java.io.UncheckedIOException io) {
-            // The disc is full or a file vanished: the environment failed, not carom, and not the input.
+            // The disc is full, a folder is read-only or a file vanished: the user's to fix, not carom's.
             errorLine(io.getMessage());
             traceIfDebugging(io);
-            return Main.INTERNAL_FAILURE;
+            return Main.BAD_INPUT;
         }
         for (Throwable c = t; c != null; c = c.getCause()) {
             if (c instanceof OutOfMemoryError oom) {

@@ -23,7 +23,7 @@ import picocli.CommandLine.Spec;
                 "  carom study accuracy            engines' errors against the serial engine",
                 "  carom bench ARGS                JMH benchmarks (ARGS are JMH's own)"})
 public final class Main implements Runnable {
-    /** Exit status for a bad scene, bad option or other bad input. */
+    /** Exit status for a bad scene, bad option or other bad input, and for an output that cannot be written. */
     public static final int BAD_INPUT = 2;
     /** Exit status for a failure inside carom itself. */
     public static final int INTERNAL_FAILURE = 1;

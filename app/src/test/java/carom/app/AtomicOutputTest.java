@@ -175,9 +175,36 @@ class AtomicOutputTest {
         for (String name : others) {
             Files.setLastModifiedTime(Files.writeString(dir.resolve(name), "not ours"), old);
         }
-        Files.createDirectory(dir.resolve(".d.csv.carom-" + dead + "-" + AtomicOutput.Namespace.ID + "-0123456789abcdef.tmp"));
+        // Folders of any other naming, and a link of our naming (to a folder of someone else's).
+        Path notOurs = Files.createDirectory(dir.resolve(".report.carom-" + dead + ".tmp"));
+        Files.writeString(notOurs.resolve("keep.csv"), "not ours");
+        Files.setLastModifiedTime(notOurs, old);
+        Path elsewhere = Files.createDirectory(dir.resolve("elsewhere"));
+        Files.writeString(elsewhere.resolve("keep.csv"), "not ours");
+        Files.createSymbolicLink(dir.resolve(".d.carom-" + dead + "-" + AtomicOutput.Namespace.ID + "-0123456789abcdef.tmp"),
+                elsewhere);
         AtomicOutput.removeStaleTemps(dir);
-        assertThat(filesIn(dir)).hasSize(others.size() + 1);
+        assertThat(filesIn(dir)).hasSize(others.size() + 3);
+        assertThat(elsewhere.resolve("keep.csv")).exists();
+        assertThat(notOurs.resolve("keep.csv")).exists();
+    }
+
+    /** A report folder staged by a killed run ({@code simulate --report}) goes with everything in it. */
+    @Test
+    void aStagedFolderOfAnEndedProcessGoesWholeWithTheNextOutputThere() throws Exception {
+        Path stale = Files.createDirectory(dir.resolve(".report.carom-" + deadPid() + "-" + AtomicOutput.Namespace.ID
+                + "-0123456789abcdef.tmp"));
+        Files.writeString(stale.resolve("gr.csv"), "half a table");
+        Files.createDirectory(stale.resolve("deeper"));
+        Path live = Files.createDirectory(AtomicOutput.tempFor(dir.resolve("report")));
+        Files.writeString(live.resolve("gr.csv"), "being written");
+        try (AtomicOutput files = new AtomicOutput()) {
+            files.stageFolder(dir.resolve("new-report"), folder -> Files.writeString(folder.resolve("gr.csv"), "whole"));
+            files.commit();
+        }
+        assertThat(stale).doesNotExist();
+        assertThat(live.resolve("gr.csv")).as("a live writer's folder is left alone").exists();
+        assertThat(filesIn(dir)).containsExactlyInAnyOrder("new-report", live.getFileName().toString());
     }
 
     /**

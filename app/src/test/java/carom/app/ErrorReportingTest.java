@@ -45,10 +45,10 @@ class ErrorReportingTest {
     }
 
     @Test
-    void fileSystemFailureIsStatusOne() {
+    void fileSystemFailureIsStatusTwo() {
         int status = reporting(false).report(new UncheckedIOException("cannot write out.csv: No space left on device",
                 new IOException("No space left on device")));
-        assertThat(status).isEqualTo(1);
+        assertThat(status).as("the user can free space or pick another folder").isEqualTo(2);
         assertThat(text.toString()).startsWith("error: cannot write out.csv: No space left on device");
     }
 

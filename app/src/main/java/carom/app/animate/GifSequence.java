@@ -10,6 +10,7 @@ import javax.imageio.ImageTypeSpecifier;
 import javax.imageio.ImageWriter;
 import javax.imageio.metadata.IIOMetadata;
 import javax.imageio.metadata.IIOMetadataNode;
+import javax.imageio.stream.FileImageOutputStream;
 import javax.imageio.stream.ImageOutputStream;
 
 /**
@@ -39,10 +40,10 @@ final class GifSequence implements AutoCloseable {
     static GifSequence create(Path file, int delayCentiseconds, String comment) throws IOException {
         ImageWriter writer = ImageIO.getImageWritersByFormatName("gif").next();
         Files.deleteIfExists(file);
-        ImageOutputStream out = ImageIO.createImageOutputStream(file.toFile());
-        if (out == null) {
-            throw new IOException("cannot open " + file + " for writing");
-        }
+        // Created here, not by ImageIO.createImageOutputStream: that one prints the stack trace of a file
+        // it cannot open to System.err and returns null, where Files says why (permission denied, ...).
+        Files.createFile(file);
+        ImageOutputStream out = new FileImageOutputStream(file.toFile());
         writer.setOutput(out);
         writer.prepareWriteSequence(null);
         return new GifSequence(out, writer, delayCentiseconds, comment);

@@ -14,6 +14,7 @@ import javax.imageio.ImageIO;
 import javax.imageio.ImageWriteParam;
 import javax.imageio.ImageWriter;
 import javax.imageio.stream.ImageOutputStream;
+import javax.imageio.stream.MemoryCacheImageOutputStream;
 
 /**
  * PNG bytes of a picture, kept small: a picture of discs has a few main colours and their
@@ -92,7 +93,8 @@ final class PngEncoder {
     private static byte[] write(BufferedImage image) {
         ImageWriter writer = ImageIO.getImageWritersByFormatName("png").next();
         ByteArrayOutputStream bytes = new ByteArrayOutputStream(1 << 16);
-        try (ImageOutputStream out = ImageIO.createImageOutputStream(bytes)) {
+        // A memory cache, not ImageIO's default of a file in java.io.tmpdir, which a full /tmp would fail.
+        try (ImageOutputStream out = new MemoryCacheImageOutputStream(bytes)) {
             writer.setOutput(out);
             ImageWriteParam param = writer.getDefaultWriteParam();
             param.setCompressionMode(ImageWriteParam.MODE_EXPLICIT);

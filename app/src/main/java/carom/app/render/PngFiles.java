@@ -5,21 +5,18 @@ import carom.core.BadInputException;
 import carom.core.Quoted;
 import java.io.IOException;
 import java.io.UncheckedIOException;
-import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
 /**
  * Writes a set of files into one directory all together or not at all: each goes to a hidden temporary
  * file beside its target, and only when every one is written are they renamed into place. A directory
- * created for them is removed again if they could not all be written. Temporary files are named, and
- * those a killed writer left are removed, as {@link AtomicOutput} does it.
+ * created for them is removed again if they could not all be written. The files are staged by
+ * {@link AtomicOutput}, which names the temporaries and removes those a killed writer left.
  */
 final class PngFiles {
     private PngFiles() {
@@ -65,60 +62,37 @@ final class PngFiles {
     static List<Path> writeAll(Path dir, Map<String, byte[]> files) {
         Path absolute = dir.toAbsolutePath().normalize();
         boolean created = false;
-        Map<Path, Path> staged = new LinkedHashMap<>();
         boolean done = false;
-        try {
-            if (Files.isDirectory(absolute)) {
-                AtomicOutput.removeStaleTemps(absolute);
-            } else {
+        try (AtomicOutput staged = new AtomicOutput()) {
+            if (!Files.isDirectory(absolute)) {
                 Files.createDirectory(absolute);
                 created = true;
             }
-            for (Map.Entry<String, byte[]> f : files.entrySet()) {
-                Path target = absolute.resolve(f.getKey());
-                Path temp = AtomicOutput.tempFor(target);
-                staged.put(temp, target);
-                Files.write(temp, f.getValue(), StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
-            }
             List<Path> written = new ArrayList<>();
-            for (Map.Entry<Path, Path> s : staged.entrySet()) {
-                move(s.getKey(), s.getValue());
-                written.add(dir.resolve(s.getValue().getFileName()));
+            for (Map.Entry<String, byte[]> f : files.entrySet()) {
+                staged.stageFile(absolute.resolve(f.getKey()), temp -> Files.write(temp, f.getValue(),
+                        StandardOpenOption.WRITE, StandardOpenOption.TRUNCATE_EXISTING));
+                written.add(dir.resolve(f.getKey()));
             }
+            staged.commit();
             done = true;
             return written;
         } catch (IOException e) {
             throw new UncheckedIOException("cannot write pictures in " + Quoted.fileName(dir.toString()) + ": "
-                    + Quoted.fileName(String.valueOf(e.getMessage())), e);
+                    + AtomicOutput.why(e), e);
         } finally {
-            if (!done) {
-                cleanUp(staged.keySet(), created ? absolute : null);
+            if (!done && created) {
+                removeIfEmpty(absolute);
             }
         }
     }
 
-    private static void move(Path temp, Path target) throws IOException {
+    /** A directory created for the pictures goes again when they could not all be written. */
+    private static void removeIfEmpty(Path createdDir) {
         try {
-            Files.move(temp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-        } catch (AtomicMoveNotSupportedException e) {
-            Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING);
-        }
-    }
-
-    private static void cleanUp(Iterable<Path> temps, Path createdDir) {
-        for (Path t : temps) {
-            try {
-                Files.deleteIfExists(t);
-            } catch (IOException e) {
-                // The failure that brought us here is the one to report.
-            }
-        }
-        if (createdDir != null) {
-            try {
-                Files.deleteIfExists(createdDir);
-            } catch (IOException e) {
-                // Not empty (some file already moved in) or gone: leave it.
-            }
+            Files.deleteIfExists(createdDir);
+        } catch (IOException e) {
+            // Not empty (some file already moved in) or gone: leave it.
         }
     }
 }
