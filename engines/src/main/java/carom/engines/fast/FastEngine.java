@@ -15,6 +15,8 @@ import java.util.List;
  * events instead of time steps, Paul's O(1) calendar queue, and discs renumbered along a Morton curve
  * so that neighbours sit close in memory. Gives the serial reference's final state to rounding.
  *
+ * <p>Scenes with the growth effect run as a {@link GrowthRun} (same kernel, staged cells, thermostat).
+ *
  * <p>Tunables: {@code cellFactor} (cell side over the largest diameter, at least 1, default 1);
  * {@code auditEnergy} (test mode: check after every collision that energy did not grow; O(N) each).
  *
@@ -55,8 +57,16 @@ public final class FastEngine implements Engine {
     }
 
     @Override
+    public boolean supportsGrowth() {
+        return true;
+    }
+
+    @Override
     public RunResult run(Scene scene, RunOptions options) {
         checkSupports(scene);
+        if (scene.effects().grows()) {
+            return new GrowthRun(scene, options, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY).run();
+        }
         return new FastRun(scene, options).run();
     }
 }
