@@ -26,7 +26,7 @@ public interface Engine {
     default void checkSupports(Scene scene) {
         if (scene.effects().grows() && !supportsGrowth()) {
             throw new carom.core.BadInputException("effects.growth: engine " + name()
-                    + " does not simulate growing discs (engines that do: fast)");
+                    + " does not simulate growing discs (engines that do: fast, slabs)");
         }
     }
 

@@ -4,7 +4,6 @@ import static carom.engines.kernel.DiscTable.HIT;
 import static carom.engines.kernel.DiscTable.RECHECK;
 import static carom.engines.kernel.DiscTable.RESYNC_SPANS;
 
-import carom.core.BadInputException;
 import carom.core.engine.Counter;
 import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
@@ -20,6 +19,7 @@ import carom.engines.kernel.CalendarQueue;
 import carom.engines.kernel.CellPredictor;
 import carom.engines.kernel.DiscMotion;
 import carom.engines.kernel.DiscTable;
+import carom.engines.kernel.GrowthStages;
 import carom.engines.kernel.KernelTunables;
 import java.util.HashMap;
 import java.util.Map;
@@ -32,9 +32,8 @@ import java.util.Map;
  * <p>What growth adds to that loop, and where:
  * <ul>
  *   <li><b>Stages.</b> The grid's cells must stay at least cellFactor times the largest diameter wide,
- *       which grows. Each stage builds a {@link DiscTable} whose cells hold the largest disc up to 5%
- *       bigger than now (or more where the grid's cap makes cells wider) and ends before the discs
- *       outgrow them ({@link DiscTable#largestRadiusHeld}): every disc is advanced to that time and the
+ *       which grows: the run goes in stages ({@link GrowthStages}), each a table whose cells hold the
+ *       discs a little bigger than at its start; at its end every disc is advanced to that time and the
  *       next stage built from the state. Local clocks count from the stage's start, and are
  *       re-anchored every {@link DiscTable#RESYNC_SPANS} calendar spans as in {@code fast}, with the
  *       growth's anchor moved too ({@link DiscTable#anchorGrowth}).</li>
@@ -59,15 +58,11 @@ public final class GrowthRun {
         UNTIL, PRESSURE
     }
 
-    /** How much bigger than the largest disc now a stage's cells are planned for. */
-    static final double STAGE_MARGIN = 1.05;
-
     private final Scene scene;
     private final int n;
     private final double until;
-    private final double growth;
-    private final double cellFactor;
-    private final double largestStartRadius;
+    /** How stages are planned, and the thermostat. */
+    private final GrowthStages plan;
     private final double stopPressure;
     private final double energyCap;
     private final ProgressListener progress;
@@ -124,12 +119,10 @@ public final class GrowthRun {
     public GrowthRun(Scene scene, RunOptions options, double stopPressure, double energyCap) {
         this.scene = scene;
         this.until = options.until();
-        this.growth = scene.effects().growth();
-        this.cellFactor = KernelTunables.CELL_FACTOR.of(options);
         this.stopPressure = stopPressure;
         this.state = scene.newDiscs();
         this.n = state.n;
-        this.largestStartRadius = state.maxRadius();
+        this.plan = new GrowthStages(scene, state.maxRadius(), KernelTunables.CELL_FACTOR.of(options));
         this.energyStart = Observables.kineticEnergy(state);
         this.momentumStart = Observables.momentum(state);
         this.energyCap = energyStart > 0 ? energyCap : Double.POSITIVE_INFINITY;
@@ -156,7 +149,8 @@ public final class GrowthRun {
             out.t[i] = stoppedAt;
         }
         double energyEnd = Observables.kineticEnergy(out);
-        Pressure pressure = VirialAccumulator.pressureOf(virial, scene, out, energyStart, energyEnd);
+        // No run-long pressure: the density changes all along; Z is per thermostat interval (compress).
+        Pressure pressure = null;
         Map<String, Long> counters = new HashMap<>();
         counters.put(Counter.EVENTS.key, events);
         counters.put(Counter.CELL_CROSSINGS.key, crossings);
@@ -193,36 +187,18 @@ public final class GrowthRun {
         return rescalings;
     }
 
-    /**
-     * Builds the stage that starts at absolute {@code at} from {@link #state}: a table whose cells hold
-     * the largest disc {@link #STAGE_MARGIN} times bigger than now, every mobile disc predicted.
-     */
+    /** Builds the stage that starts at absolute {@code at} from {@link #state}, every mobile disc predicted. */
     private void build(double at) {
         if (motion != null) {
             energyAddedEarlierStages += motion.energyAdded();
-        }
-        double largest = largestStartRadius * (1 + growth * at);
-        double planned = largest * STAGE_MARGIN;
-        if (scene.box().periodic()) {
-            // The nearest image must stay unique: the box wider than two diameters (SPEC, box).
-            double boxLimit = Math.min(scene.box().width(), scene.box().height()) / 4;
-            if (!(largest < boxLimit)) {
-                throw new BadInputException(String.format(java.util.Locale.ROOT,
-                        "effects.growth: at t = %s the largest disc (radius %s) has outgrown the periodic box "
-                                + "(which must exceed twice the largest diameter); lower until", at, largest));
-            }
-            planned = Math.min(planned, largest + 0.5 * (boxLimit - largest));
-        }
-        epoch = at;
-        table = new DiscTable(scene, state, cellFactor, planned);
-        table.anchorGrowth(at);
-        if (motion != null) {
             predictions += predictor.predictions();
         }
+        epoch = at;
+        table = plan.table(state, at);
         motion = new DiscMotion(table);
         predictor = new CellPredictor(motion);
         queue = table.newCalendar(n);
-        stageEnd = (table.largestRadiusHeld() / largestStartRadius - 1) / growth;
+        stageEnd = plan.end(table);
         stages++;
         for (int i = 0; i < n; i++) {
             if (table.invMass(i) > 0) {
@@ -360,18 +336,9 @@ public final class GrowthRun {
         intervalAddedTimesAge = 0;
     }
 
-    /** The thermostat: every velocity times one factor that brings the kinetic energy back to its start. */
+    /** The thermostat ({@link GrowthStages#rescale}): the kinetic energy back to its initial value. */
     private void rescale() {
-        double now = Observables.kineticEnergy(state);
-        if (!(now > 0) || !(energyStart > 0)) {
-            return;
-        }
-        double factor = Math.sqrt(energyStart / now);
-        for (int i = 0; i < n; i++) {
-            state.vx[i] *= factor;
-            state.vy[i] *= factor;
-        }
-        energyRemoved += now - energyStart;
+        energyRemoved += GrowthStages.rescale(state, energyStart);
         kinetic = energyStart;
         intervalEnergy = kinetic;
         rescalings++;
@@ -381,7 +348,7 @@ public final class GrowthRun {
     private void resync(double now) {
         motion.rebase(now, null, n);
         epoch += now;
-        table.anchorGrowth(epoch);
+        table.shiftGrowthAnchor(now);
         replan(0);
     }
 
@@ -390,12 +357,9 @@ public final class GrowthRun {
         resyncAt = now + RESYNC_SPANS * span;
     }
 
-    /** Radii of {@code d} at absolute {@code at}: the scene's R(0) (1 + G at). */
+    /** Radii of {@code d} at absolute {@code at}. */
     private void grownRadii(Discs d, double at) {
-        double scale = 1 + growth * at;
-        for (int i = 0; i < n; i++) {
-            d.radius[i] = state.radius[i] * scale;
-        }
+        plan.grownRadii(state, d, at);
     }
 
     private static void copyInto(Discs from, Discs to) {

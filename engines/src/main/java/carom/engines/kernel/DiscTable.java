@@ -3,6 +3,7 @@ package carom.engines.kernel;
 import carom.core.BadInputException;
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
+import carom.core.physics.GrowthLaw;
 import carom.core.physics.Physics;
 import carom.core.physics.Restitution;
 import carom.core.scene.Scene;
@@ -74,6 +75,8 @@ public final class DiscTable {
     public final boolean growing;
     final double growthRate;
     double growthScale = 1;
+    /** The absolute time of local time 0, as far as growth is concerned. */
+    private double growthEpoch;
 
     // The kernel's own: the records, the grid, and what the hot paths copy.
     final Scene scene;
@@ -247,7 +250,29 @@ public final class DiscTable {
      * R(0) (1 + G epoch + G t) at local t. Engines call it whenever they re-anchor clocks.
      */
     public void anchorGrowth(double epoch) {
+        growthEpoch = epoch;
         growthScale = 1 + growthRate * epoch;
+    }
+
+    /** {@link #anchorGrowth} after the engine shifted its clocks so that local {@code now} became 0. */
+    public void shiftGrowthAnchor(double now) {
+        anchorGrowth(growthEpoch + now);
+    }
+
+    /**
+     * With growth: time from local {@code now} until the discs in slots a and b of {@code d} touch
+     * ({@link GrowthLaw#timeToContact}), their positions at their own clocks {@code d.t}, their radii
+     * R(0), the nearest image; for code that predicts on copies of records rather than on the records
+     * (slabs' cross-domain predictions and window checks).
+     */
+    public double growingContactTime(Discs d, int a, int b, double now) {
+        double xa = d.x[a] + d.vx[a] * (now - d.t[a]);
+        double ya = d.y[a] + d.vy[a] * (now - d.t[a]);
+        double dx = boundary.separationX(d.x[b] + d.vx[b] * (now - d.t[b]) - xa);
+        double dy = boundary.separationY(d.y[b] + d.vy[b] * (now - d.t[b]) - ya);
+        double sigma0 = d.radius[a] + d.radius[b];
+        return GrowthLaw.timeToContact(dx, dy, d.vx[b] - d.vx[a], d.vy[b] - d.vy[a],
+                sigma0 * (growthScale + growthRate * now), sigma0 * growthRate);
     }
 
     private static long cellsAlong(double length, double minCell) {

@@ -57,8 +57,16 @@ public final class SlabsEngine implements Engine {
     }
 
     @Override
+    public boolean supportsGrowth() {
+        return true;
+    }
+
+    @Override
     public RunResult run(Scene scene, RunOptions options) {
         checkSupports(scene);
+        if (scene.effects().grows()) {
+            return new SlabsGrowthRun(scene, options).run();
+        }
         return new SlabsRun(scene, options).run();
     }
 }

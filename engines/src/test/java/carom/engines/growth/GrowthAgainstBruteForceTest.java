@@ -11,8 +11,12 @@ import carom.core.scene.Scene;
 import carom.core.scene.SceneBuilder;
 import carom.core.scene.Species;
 import carom.core.state.Discs;
+import carom.core.engine.Engine;
 import carom.engines.fast.FastEngine;
-import org.junit.jupiter.api.Test;
+import carom.engines.slabs.SlabsEngine;
+import java.util.List;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
 
 /**
  * The growing-contact arithmetic of the fast engine against a brute-force reference that shares none
@@ -39,11 +43,16 @@ class GrowthAgainstBruteForceTest {
                 .effects(Effects.NONE.withGrowth(G)).until(until).build();
     }
 
-    @Test
-    void threeGrowingDiscsMatchTheBruteForceReference() {
+    static List<Engine> engines() {
+        return List.of(new FastEngine(), new SlabsEngine());
+    }
+
+    @ParameterizedTest
+    @MethodSource("engines")
+    void threeGrowingDiscsMatchTheBruteForceReference(Engine engine) {
         double until = 6;
         Scene scene = threeDiscs(until);
-        RunResult fast = new FastEngine().run(scene, RunOptions.until(until));
+        RunResult fast = engine.run(scene, RunOptions.until(until).withThreads(2));
         Reference ref = new Reference(scene.newDiscs());
         ref.runTo(until);
         assertThat(ref.collisions).as("reference collisions").isGreaterThanOrEqualTo(8);
