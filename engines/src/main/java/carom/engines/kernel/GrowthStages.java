@@ -40,7 +40,8 @@ public final class GrowthStages {
         double planned = largest * MARGIN;
         if (scene.box().periodic()) {
             double boxLimit = Math.min(scene.box().width(), scene.box().height()) / 4;
-            if (!(largest < boxLimit)) {
+            // Stages halve the room left, so the limit is met to 1e-9 after some 30 of them.
+            if (!(largest < boxLimit * (1 - 1e-9))) {
                 throw new BadInputException(String.format(Locale.ROOT,
                         "effects.growth: at t = %s the largest disc (radius %s) has outgrown the periodic box "
                                 + "(which must exceed twice the largest diameter); lower until", at, largest));
