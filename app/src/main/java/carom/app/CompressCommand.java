@@ -107,7 +107,12 @@ final class CompressCommand implements Callable<Integer> {
             }
             Packing packing = Packing.of(scene, result, run, toPressure);
             if (out == null && summary == null) {
-                packing.print(spec.commandLine().getOut());
+                PrintWriter stdout = spec.commandLine().getOut();
+                packing.print(stdout);
+                // No file asked for: the packing itself follows the summary, after a blank line.
+                stdout.println();
+                writePacking(result.finalState(), stdout);
+                stdout.flush();
             }
             if (out != null) {
                 files.stage(out, w -> writePacking(result.finalState(), w));
