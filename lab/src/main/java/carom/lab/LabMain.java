@@ -81,6 +81,9 @@ public final class LabMain implements Runnable {
             if (cls == AccuracyCommand.class) {
                 return cls.cast(new AccuracyCommand(err));
             }
+            if (cls == carom.lab.eos.EosCommand.class) {
+                return cls.cast(new carom.lab.eos.EosCommand(err));
+            }
             return CommandLine.defaultFactory().create(cls);
         }
     }

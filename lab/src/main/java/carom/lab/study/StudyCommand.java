@@ -5,16 +5,16 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 
-/** {@code carom study}: studies that compare engines; so far {@code accuracy}. */
+/** {@code carom study}: studies that compare engines ({@code accuracy}) and physics ({@code eos}). */
 @Command(name = "study", mixinStandardHelpOptions = true,
         description = "Studies comparing carom's engines (and a peer library).",
-        subcommands = AccuracyCommand.class)
+        subcommands = {AccuracyCommand.class, carom.lab.eos.EosCommand.class})
 public final class StudyCommand implements Runnable {
     @Spec
     CommandSpec spec;
 
     @Override
     public void run() {
-        throw new ParameterException(spec.commandLine(), "missing study: use 'carom study accuracy --out DIR'");
+        throw new ParameterException(spec.commandLine(), "missing study: use 'carom study accuracy --out DIR' or 'carom study eos --out DIR'");
     }
 }
