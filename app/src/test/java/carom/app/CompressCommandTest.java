@@ -105,6 +105,22 @@ class CompressCommandTest {
     }
 
     @Test
+    void simulateWithGrowthRescalesAtEverySampleAndSaysWhyEnergyDrifts() throws IOException {
+        Path scene = Scenes.write(dir, "grow.json", growing(3));
+        Path summary = dir.resolve("s.json");
+        Cli written = Cli.run("simulate", scene.toString(), "--every", "1", "--summary", summary.toString());
+        assertThat(written.status()).as(written.err()).isZero();
+        JsonNode s = new ObjectMapper().readTree(summary.toFile());
+        // Samples at t = 0, 1, 2, 3: four rescalings; the last leaves the initial kinetic energy.
+        assertThat(s.get("counters").get("rescalings").asLong()).isEqualTo(4);
+        assertThat(s.get("kineticEnergy").get("final").asDouble())
+                .isCloseTo(s.get("kineticEnergy").get("initial").asDouble(), org.assertj.core.api.Assertions.within(1e-9));
+        Cli printed = Cli.run("simulate", scene.toString());
+        assertThat(printed.status()).as(printed.err()).isZero();
+        assertThat(printed.out()).contains("growth: collisions add energy");
+    }
+
+    @Test
     void discsThatOutgrowAPeriodicBoxStopWithAnError() {
         // 4 discs of radius 0.5 in a 3 x 3 box: the box must stay wider than two diameters (radius < 0.75).
         Path scene = Scenes.write(dir, "tiny.json", """

@@ -156,8 +156,8 @@ public final class GrowthRun {
         counters.put(Counter.CELL_CROSSINGS.key, crossings);
         counters.put(Counter.STALE_EVENTS.key, staleEvents);
         counters.put(Counter.PREDICTIONS.key, predictions);
-        counters.put("growthStages", stages);
-        counters.put("rescalings", rescalings);
+        counters.put(Counter.GROWTH_STAGES.key, stages);
+        counters.put(Counter.RESCALINGS.key, rescalings);
         return new RunResult("fast", true, out, stoppedAt, pairCollisions, wallCollisions, events, energyStart,
                 energyEnd, momentumStart, Observables.momentum(out), pressure, 0, seconds, Map.copyOf(counters));
     }

@@ -86,8 +86,8 @@ final class SlabsGrowthRun {
         }
         Discs out = state.copy();
         plan.grownRadii(state, out, until);
-        counters.put("growthStages", stages);
-        counters.put("rescalings", rescalings);
+        counters.put(Counter.GROWTH_STAGES.key, stages);
+        counters.put(Counter.RESCALINGS.key, rescalings);
         return new RunResult("slabs", true, out, until, pairs, walls, events, energyStart,
                 Observables.kineticEnergy(out), momentumStart, Observables.momentum(out), null, 0, seconds,
                 Map.copyOf(counters));

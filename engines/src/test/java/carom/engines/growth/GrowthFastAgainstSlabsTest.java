@@ -3,6 +3,7 @@ package carom.engines.growth;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
+import carom.core.engine.Counter;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
@@ -36,7 +37,7 @@ class GrowthFastAgainstSlabsTest {
         assertThat(slabs.counters().get("windows")).as("windows").isPositive();
         assertThat(slabs.pairCollisions()).isEqualTo(fast.pairCollisions());
         assertThat(slabs.wallCollisions()).isEqualTo(fast.wallCollisions());
-        assertThat(fast.counters().get("growthStages")).as("stages").isGreaterThan(1);
+        assertThat(fast.counter(Counter.GROWTH_STAGES, 0)).as("stages").isGreaterThan(1);
         Discs a = fast.finalState();
         Discs b = slabs.finalState();
         for (int i = 0; i < a.n; i++) {
