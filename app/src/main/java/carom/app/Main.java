@@ -15,7 +15,7 @@ import picocli.CommandLine.Spec;
         mixinStandardHelpOptions = true,
         versionProvider = VersionProvider.class,
         description = "Exact event-driven simulation of hard discs in 2D.",
-        subcommands = {SimulateCommand.class, ResumeCommand.class, EnginesCommand.class, carom.app.render.RenderCommand.class,
+        subcommands = {SimulateCommand.class, ResumeCommand.class, CompressCommand.class, EnginesCommand.class, carom.app.render.RenderCommand.class,
                 carom.app.animate.AnimateCommand.class, carom.app.report.ReportCommand.class,
                 carom.app.analyze.AnalyzeCommand.class},
         footer = {"", "Measurements are the lab's (lab/target/carom-lab.jar; ./carom runs it):",
@@ -44,7 +44,7 @@ public final class Main implements Runnable {
     /** {@code carom} alone: say which commands exist rather than doing nothing. */
     @Override
     public void run() {
-        throw new ParameterException(spec.commandLine(), "missing command: use 'carom simulate SCENE.json', 'carom resume FILE.ckpt', 'carom render SCENE.json --at T1,T2 --out DIR', 'carom animate SCENE.json --out movie.gif', 'carom report DIR... --out PAGE.html', 'carom analyze FILE.jfr' or 'carom engines' (measurements: 'carom experiment thesis', 'carom study accuracy', 'carom bench')");
+        throw new ParameterException(spec.commandLine(), "missing command: use 'carom simulate SCENE.json', 'carom resume FILE.ckpt', 'carom compress SCENE.json --to-pressure P', 'carom render SCENE.json --at T1,T2 --out DIR', 'carom animate SCENE.json --out movie.gif', 'carom report DIR... --out PAGE.html', 'carom analyze FILE.jfr' or 'carom engines' (measurements: 'carom experiment thesis', 'carom study accuracy', 'carom bench')");
     }
 
     /** Hands the raw streams to the command that needs to know what they are. */
@@ -56,6 +56,9 @@ public final class Main implements Runnable {
             }
             if (cls == ResumeCommand.class) {
                 return cls.cast(new ResumeCommand(out, err));
+            }
+            if (cls == CompressCommand.class) {
+                return cls.cast(new CompressCommand(err));
             }
             if (cls == carom.app.animate.AnimateCommand.class) {
                 return cls.cast(new carom.app.animate.AnimateCommand(err));

@@ -42,7 +42,9 @@ final class ReadableSummary {
         line(out, "energy initial", energy(energy.initial(), r.kineticEnergyStart(), potential));
         line(out, "energy final", energy(energy.end(), r.kineticEnergyEnd(), potential));
         line(out, "energy drift", Double.isNaN(energy.drift()) ? "undefined (gravity in a periodic box)"
-                : String.format(Locale.ROOT, "%.3e", energy.drift()));
+                : String.format(Locale.ROOT, "%.3e", energy.drift())
+                + (r.has(carom.core.engine.Counter.GROWTH_STAGES)
+                ? "  (growth: collisions add energy, the thermostat at --every takes it out)" : ""));
         line(out, "momentum initial", vector(r.momentumStart()));
         line(out, "momentum final", vector(r.momentumEnd()));
         Pressure p = r.pressure();

@@ -175,6 +175,10 @@ final class SimulateCommand implements Callable<Integer> {
                  Writer frames = trajectory == null ? null : files.stream(trajectory)) {
                 RunOptions options = new RunOptions(scene.until(), workers, bar, tunables);
                 Sampler sampler = Observing.both(frames == null ? null : new TrajectoryXyz(scene, frames), observing);
+                if (sampler == null && every != null && scene.effects().grows()) {
+                    // With growth, --every is also the thermostat's interval: sample for it alone.
+                    sampler = (t, state, virialSum) -> { };
+                }
                 if (sampler != null) {
                     options = options.withSamples(every, sampler);
                 }

@@ -19,6 +19,10 @@ public enum Counter {
     COLLISIONS_BEFORE_RESUME("collisionsBeforeResume",
             "collisions before the checkpoint a resumed run started from (collisions per second count the rest)"),
 
+    // Runs with growth (fast, slabs).
+    GROWTH_STAGES("growthStages", "stages of a growth run: cell grids rebuilt as the discs grew, and at samples"),
+    RESCALINGS("rescalings", "thermostat rescalings of the kinetic energy (growth runs)"),
+
     // Step-grid engines (serial, stripes, the actor engines).
     STEPS("steps", "time steps of the grid"),
     EARLY_STEP_ENDS("earlyStepEnds", "steps ended early because a disc became faster than the step allows (serial)"),

@@ -20,10 +20,19 @@ public interface Engine {
 
     /**
      * Throws {@link carom.core.BadInputException} if the scene needs an effect this engine does not
-     * simulate. Called before any output is written; {@link #run} calls it too. Every engine so far
-     * simulates all of SPEC's effects, so the default accepts every scene.
+     * simulate. Called before any output is written; {@link #run} calls it too. The default accepts
+     * every effect but growth, which only engines that say {@link #supportsGrowth} simulate.
      */
     default void checkSupports(Scene scene) {
+        if (scene.effects().grows() && !supportsGrowth()) {
+            throw new carom.core.BadInputException("effects.growth: engine " + name()
+                    + " does not simulate growing discs (engines that do: fast, slabs)");
+        }
+    }
+
+    /** Whether this engine simulates the {@code growth} effect (radii growing in time). */
+    default boolean supportsGrowth() {
+        return false;
     }
 
     /**

@@ -28,6 +28,34 @@ public final class StateChecks {
         return deepest[0];
     }
 
+    /**
+     * The smallest gap as a fraction of the contact distance: (|rj - ri| - Ri - Rj) / (Ri + Rj) over the
+     * pairs in neighbouring cells (every pair closer than a largest diameter), and in a walled box
+     * (distance to the wall - R) / R; negative for an overlap, +Infinity if no pair is that close and
+     * there are no walls. What a jammed packing is judged by: rounding leaves about 1e-15.
+     */
+    public static double smallestGap(Discs d, Box box) {
+        double[] smallest = {Double.POSITIVE_INFINITY};
+        if (!box.periodic()) {
+            smallest[0] = -deepestSignedWallOverlap(d, box);
+        }
+        NeighbourPairs.forEach(d, box.width(), box.height(), box.periodic(), (i, j, dx, dy) -> {
+            double sigma = d.radius[i] + d.radius[j];
+            smallest[0] = Math.min(smallest[0], (Math.sqrt(dx * dx + dy * dy) - sigma) / sigma);
+        });
+        return smallest[0];
+    }
+
+    private static double deepestSignedWallOverlap(Discs d, Box box) {
+        double deepest = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i < d.n; i++) {
+            double r = d.radius[i];
+            double nearest = Math.min(Math.min(d.x[i], box.width() - d.x[i]), Math.min(d.y[i], box.height() - d.y[i]));
+            deepest = Math.max(deepest, (r - nearest) / r);
+        }
+        return deepest;
+    }
+
     private static double deepestWallOverlap(Discs d, Box box) {
         double deepest = 0;
         for (int i = 0; i < d.n; i++) {

@@ -11,9 +11,22 @@ package carom.core.scene;
  * @param wallRestitution normal restitution of wall collisions, in [0, 1]
  * @param tc              TC-model time (Luding and McNamara): a collision within tc of a participant's
  *                        previous one is elastic; 0 switches the model off
+ * @param growth          Lubachevsky-Stillinger growth rate G: every radius is R(0)(1 + G t) at absolute
+ *                        time t; 0 (off) or a finite number > 0
  */
-public record Effects(double gravityX, double gravityY, double restitution, double wallRestitution, double tc) {
-    public static final Effects NONE = new Effects(0, 0, 1, 1, 0);
+public record Effects(double gravityX, double gravityY, double restitution, double wallRestitution, double tc,
+                      double growth) {
+    public static final Effects NONE = new Effects(0, 0, 1, 1, 0, 0);
+
+    /** Effects without growth. */
+    public Effects(double gravityX, double gravityY, double restitution, double wallRestitution, double tc) {
+        this(gravityX, gravityY, restitution, wallRestitution, tc, 0);
+    }
+
+    /** Whether radii grow during the run ({@code growth} > 0). */
+    public boolean grows() {
+        return growth != 0;
+    }
 
     public boolean hasGravity() {
         return gravityX != 0 || gravityY != 0;
@@ -32,14 +45,18 @@ public record Effects(double gravityX, double gravityY, double restitution, doub
     }
 
     public Effects withGravity(double gx, double gy) {
-        return new Effects(gx, gy, restitution, wallRestitution, tc);
+        return new Effects(gx, gy, restitution, wallRestitution, tc, growth);
     }
 
     public Effects withRestitution(double pairs, double walls) {
-        return new Effects(gravityX, gravityY, pairs, walls, tc);
+        return new Effects(gravityX, gravityY, pairs, walls, tc, growth);
     }
 
     public Effects withTc(double newTc) {
-        return new Effects(gravityX, gravityY, restitution, wallRestitution, newTc);
+        return new Effects(gravityX, gravityY, restitution, wallRestitution, newTc, growth);
+    }
+
+    public Effects withGrowth(double rate) {
+        return new Effects(gravityX, gravityY, restitution, wallRestitution, tc, rate);
     }
 }

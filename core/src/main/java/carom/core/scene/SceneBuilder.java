@@ -159,6 +159,13 @@ public final class SceneBuilder {
         if (!(effects.tc() >= 0) || Double.isInfinite(effects.tc())) {
             throw new BadInputException("effects.tc: must be a finite number >= 0, got " + effects.tc());
         }
+        if (!(effects.growth() >= 0) || Double.isInfinite(effects.growth())) {
+            throw new BadInputException("effects.growth: must be a finite number > 0, got " + effects.growth());
+        }
+        if (effects.grows() && effects.hasGravity()) {
+            throw new BadInputException("effects.growth: growth under gravity is not supported (compression "
+                    + "to jamming runs without gravity)");
+        }
         for (int b = 0; b < blocks.size(); b++) {
             GenerateBlock block = blocks.get(b);
             String path = "generate[" + b + "]";

@@ -54,7 +54,7 @@ public final class SceneReader {
     private static final Set<String> GENERATE_KEYS = Set.of("species", "fractions", "count", "layout", "jitter", "velocity", "seed");
     private static final Set<String> UNIFORM_KEYS = Set.of("distribution", "scale");
     private static final Set<String> MAXWELL_KEYS = Set.of("distribution", "temperature");
-    private static final List<String> EFFECTS = List.of("gravity", "restitution", "wallRestitution", "tc");
+    private static final List<String> EFFECTS = List.of("gravity", "restitution", "wallRestitution", "tc", "growth");
     /** Species names an "unknown species" message lists before it just counts them. */
     private static final int DECLARED_NAMES_SHOWN = 10;
 
@@ -261,7 +261,15 @@ public final class SceneReader {
         }
         double restitution = optionalNumber(e, "effects", "restitution", 1);
         double wallRestitution = optionalNumber(e, "effects", "wallRestitution", 1);
-        return effects.withRestitution(restitution, wallRestitution).withTc(optionalNumber(e, "effects", "tc", 0));
+        effects = effects.withRestitution(restitution, wallRestitution).withTc(optionalNumber(e, "effects", "tc", 0));
+        if (e.has("growth")) {
+            double growth = requiredNumber(e, "effects", "growth");
+            if (!(growth > 0)) {
+                throw new BadInputException("effects.growth: must be a finite number > 0, got " + growth);
+            }
+            effects = effects.withGrowth(growth);
+        }
+        return effects;
     }
 
     /** {@code species}: one name, or a list of distinct names (a mixture, which then needs {@code fractions}). */

@@ -481,7 +481,33 @@ class SceneReaderTest {
     @ValueSource(strings = {"friction", "Gravity", "restitutionWall", "tC", ""})
     void unknownEffectsListTheKnownOnes(String effect) {
         rejected(base(root -> at(root, "/effects").put(effect, 1)),
-                "effects." + effect + ": unknown effect (known: gravity, restitution, wallRestitution, tc)");
+                "effects." + effect + ": unknown effect (known: gravity, restitution, wallRestitution, tc, growth)");
+    }
+
+    @Test
+    void growthIsReadWithoutGravity() {
+        Scene scene = SceneReader.parse(base(root -> {
+            at(root, "/").set("effects", value("{\"growth\": 0.01}"));
+        }));
+        assertThat(scene.effects().growth()).isEqualTo(0.01);
+        assertThat(scene.effects().grows()).isTrue();
+        assertThat(SceneReader.parse(BASE).effects().grows()).isFalse();
+    }
+
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', textBlock = """
+            0       | effects.growth: must be a finite number > 0, got 0.0
+            -0.5    | effects.growth: must be a finite number > 0, got -0.5
+            "fast"  | effects.growth: must be a number
+            """)
+    void badGrowthNamesItsPath(String growth, String message) {
+        rejected(base(root -> at(root, "/").set("effects", value("{\"growth\": " + growth + "}"))), message);
+    }
+
+    @Test
+    void growthUnderGravityIsRefused() {
+        rejected(base(root -> at(root, "/effects").put("growth", 0.1)),
+                "effects.growth: growth under gravity is not supported");
     }
 
     @ParameterizedTest

@@ -27,6 +27,7 @@ import static carom.engines.kernel.DiscTable.Y;
 
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
+import carom.core.physics.GrowthLaw;
 import carom.core.physics.PairLaw;
 import carom.core.state.Discs;
 
@@ -70,6 +71,9 @@ public final class CellPredictor {
     private final Boundary.Walls walls;
     private final int[] around;
     private final int[][] ahead;
+    /** The growth effect: predictions go through {@link GrowthLaw} (see {@link DiscTable#growing}). */
+    private final boolean growing;
+    private final DiscTable table;
     /** Owning domain of each column, or null if every column is seen; this predictor's domain. */
     private final int[] colOwner;
     private final int owner;
@@ -121,6 +125,8 @@ public final class CellPredictor {
         this.walls = table.walls;
         this.around = table.around;
         this.ahead = table.ahead;
+        this.growing = table.growing;
+        this.table = table;
         this.colOwner = colOwner;
         this.owner = owner;
         this.edgeCol = edgeCol;
@@ -315,6 +321,9 @@ public final class CellPredictor {
 
     /** {@link Flight#timeToContact} of discs i and j (i in slot 0 unless straightImages). */
     private double contactTime(int i, int j, double now, double horizon) {
+        if (growing) {
+            return growingContactTime(i, j, now);
+        }
         if (!straightImages) {
             load(j, 1);
             return flight.timeToContact(pair, 0, 1, now, horizon, boundary);
@@ -332,6 +341,15 @@ public final class CellPredictor {
 
     /** {@link Flight#timeToWall} of disc i (in slot 0 unless straightImages). */
     private double wallTime(int i, int wall, double now) {
+        if (growing) {
+            // Growth runs only in straight flight (the reader refuses it under gravity).
+            int at = i * stride;
+            double dt = now - rec[at + T];
+            double r0 = radius(i);
+            return GrowthLaw.timeToWall(wall, rec[at + X] + rec[at + VX] * dt, rec[at + Y] + rec[at + VY] * dt,
+                    rec[at + VX], rec[at + VY], r0 * (table.growthScale + table.growthRate * now),
+                    r0 * table.growthRate, width, height);
+        }
         if (!straightImages) {
             return flight.timeToWall(pair, 0, wall, now, walls);
         }
@@ -380,6 +398,10 @@ public final class CellPredictor {
      */
     private void scan(int i, double now, double horizon, int base, int[] cells, double[] shiftX, double[] shiftY,
                       int m) {
+        if (growing) {
+            growingScan(i, now, base, cells, m);
+            return;
+        }
         double best = found;
         int bestP = foundP;
         // All heads first: independent loads whose cache misses overlap (at large N each is one).
@@ -427,6 +449,41 @@ public final class CellPredictor {
                             best = t;
                             bestP = j;
                         }
+                    }
+                }
+            }
+        }
+        found = best;
+        foundP = bestP;
+    }
+
+    /**
+     * {@link GrowthLaw#timeToContact} of discs i and j at local {@code now} on the records, through the
+     * nearest image (the image of the cell scan whenever an axis has 4 cells or more).
+     */
+    private double growingContactTime(int i, int j, double now) {
+        int at = i * stride;
+        int jt = j * stride;
+        double dx = boundary.separationX(rec[jt + X] + rec[jt + VX] * (now - rec[jt + T])
+                - (rec[at + X] + rec[at + VX] * (now - rec[at + T])));
+        double dy = boundary.separationY(rec[jt + Y] + rec[jt + VY] * (now - rec[jt + T])
+                - (rec[at + Y] + rec[at + VY] * (now - rec[at + T])));
+        double sigma0 = radius(i) + radius(j);
+        return GrowthLaw.timeToContact(dx, dy, rec[jt + VX] - rec[at + VX], rec[jt + VY] - rec[at + VY],
+                sigma0 * (table.growthScale + table.growthRate * now), sigma0 * table.growthRate);
+    }
+
+    /** {@link #scan} with growing radii: every disc of cells {@code base + cells[k]}, k < m. */
+    private void growingScan(int i, double now, int base, int[] cells, int m) {
+        double best = found;
+        int bestP = foundP;
+        for (int k = 0; k < m; k++) {
+            for (int j = cellHead[base + cells[k]]; j != NIL; j = ir[j * IS + CNEXT]) {
+                if (j != i) {
+                    double t = growingContactTime(i, j, now);
+                    if (t < best) {
+                        best = t;
+                        bestP = j;
                     }
                 }
             }

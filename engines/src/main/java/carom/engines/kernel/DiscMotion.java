@@ -22,6 +22,7 @@ import static carom.engines.kernel.DiscTable.Y;
 import carom.core.engine.StallGuard;
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
+import carom.core.physics.GrowthLaw;
 import carom.core.physics.PairLaw;
 import carom.core.physics.Restitution;
 import carom.core.scene.Scene;
@@ -58,6 +59,15 @@ public final class DiscMotion {
     /** Scene id of each internal disc: where the final state puts it. */
     private final int[] sceneIds;
 
+    /** The growth effect: collisions bounce off growing surfaces (see {@link DiscTable#growing}). */
+    private final boolean growing;
+    /**
+     * Kinetic energy the collisions of this thread added (growth pushes discs apart), and that of the
+     * last collision alone: growth runs keep their energy account with it.
+     */
+    private double energyAdded;
+    private double lastEnergyAdded;
+
     /** Slots 0 and 1: discs copied in for core physics that works on {@link Discs}. */
     final Discs pair = new Discs(2);
 
@@ -80,6 +90,17 @@ public final class DiscMotion {
         this.restitution = table.restitution;
         this.gravity = table.acceleration > 0;
         this.sceneIds = table.sceneIds();
+        this.growing = table.growing;
+    }
+
+    /** Kinetic energy added by this thread's collisions so far (growth runs; 0 otherwise). */
+    public double energyAdded() {
+        return energyAdded;
+    }
+
+    /** Kinetic energy added by the last collision (growth runs; 0 otherwise). */
+    public double lastEnergyAdded() {
+        return lastEnergyAdded;
     }
 
     double radius(int i) {
@@ -151,6 +172,9 @@ public final class DiscMotion {
             double dist = Math.sqrt(dx * dx + dy * dy);
             guard.pegContact(abs, a, b, dx / dist, dy / dist, rec[at + VX], rec[at + VY], dist);
         }
+        if (growing) {
+            return collideGrowing(a, b, at, bt, dx, dy, e, abs, bMobile);
+        }
         // On the records, not through the pair window: no copies in and out at every collision.
         double w = PairLaw.collide(rec, at + VX, bt + VX, rec, at + VY, bt + VY, invMass(a), invMass(b), dx, dy, e);
         restitution.collided(a, abs);
@@ -162,6 +186,29 @@ public final class DiscMotion {
         return w;
     }
 
+    /** {@link #collidePair} of growing discs (both advanced): the impulse, the energy it added, the virial. */
+    private double collideGrowing(int a, int b, int at, int bt, double dx, double dy, double e, double abs,
+                                  boolean bMobile) {
+        double ima = invMass(a);
+        double imb = invMass(b);
+        double before = kinetic(at, ima) + kinetic(bt, imb);
+        double sigmaRate = (radius(a) + radius(b)) * table.growthRate;
+        double j = GrowthLaw.collide(rec, at + VX, bt + VX, rec, at + VY, bt + VY, ima, imb, dx, dy, e, sigmaRate);
+        lastEnergyAdded = kinetic(at, ima) + kinetic(bt, imb) - before;
+        energyAdded += lastEnergyAdded;
+        restitution.collided(a, abs);
+        ir[a * IS + COUNT]++;
+        if (bMobile) {
+            restitution.collided(b, abs);
+            ir[b * IS + COUNT]++;
+        }
+        return j * Math.sqrt(dx * dx + dy * dy);
+    }
+
+    private double kinetic(int at, double invMass) {
+        return invMass > 0 ? 0.5 * (rec[at + VX] * rec[at + VX] + rec[at + VY] * rec[at + VY]) / invMass : 0;
+    }
+
     /**
      * Bounces disc i off wall {@code wall} at local {@code now} (absolute {@code abs}): advanced,
      * reflected, restitution told, its collision counter bumped; under gravity the contact goes to
@@ -170,6 +217,18 @@ public final class DiscMotion {
     public void collideWall(int i, int wall, double now, double abs, StallGuard guard) {
         advance(i, now);
         double e = restitution.wall(i, abs);
+        if (growing) {
+            int at = i * stride;
+            double im = invMass(i);
+            double before = kinetic(at, im);
+            int axis = wall == Boundary.LEFT || wall == Boundary.RIGHT ? VX : VY;
+            rec[at + axis] = GrowthLaw.wallBounce(wall, rec[at + axis], radius(i) * table.growthRate, e);
+            lastEnergyAdded = kinetic(at, im) - before;
+            energyAdded += lastEnergyAdded;
+            restitution.collided(i, abs);
+            ir[i * IS + COUNT]++;
+            return;
+        }
         load(i, 0);
         if (gravity) {
             guard.wallContact(abs, i, wall, pair.vx[0], pair.vy[0]);

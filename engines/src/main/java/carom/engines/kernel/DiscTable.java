@@ -3,6 +3,7 @@ package carom.engines.kernel;
 import carom.core.BadInputException;
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
+import carom.core.physics.GrowthLaw;
 import carom.core.physics.Physics;
 import carom.core.physics.Restitution;
 import carom.core.scene.Scene;
@@ -66,6 +67,16 @@ public final class DiscTable {
     public final int rows;
     /** Re-predict the whole neighbourhood after a crossing (gravity with fixed discs; small grids). */
     public final boolean fullOnCross;
+    /**
+     * The growth effect: radii are R(0) (growthScale + growthRate t) at local time t, where R(0) is
+     * what the records hold; growthScale is 1 + G epoch ({@link #anchorGrowth}). Without growth the
+     * rate is 0 and no prediction or collision looks at either.
+     */
+    public final boolean growing;
+    final double growthRate;
+    double growthScale = 1;
+    /** The absolute time of local time 0, as far as growth is concerned. */
+    private double growthEpoch;
 
     // The kernel's own: the records, the grid, and what the hot paths copy.
     final Scene scene;
@@ -117,6 +128,15 @@ public final class DiscTable {
      * every PARTNER {@link #NONE}, no event scheduled (every EV +Infinity).
      */
     public DiscTable(Scene scene, Discs src, double cellFactor) {
+        this(scene, src, cellFactor, src.maxRadius());
+    }
+
+    /**
+     * A table whose cells hold discs up to radius {@code cellRadius} (at least the largest now): a run
+     * with growth plans its cells for the radius the discs reach before it rebuilds the table
+     * ({@link #largestRadiusHeld}).
+     */
+    public DiscTable(Scene scene, Discs src, double cellFactor, double cellRadius) {
         this.scene = scene;
         this.n = src.n;
         Physics physics = Physics.of(scene);
@@ -132,7 +152,7 @@ public final class DiscTable {
         this.width = scene.box().width();
         this.height = scene.box().height();
         // A hair wider than the diameter, so that rounding at a cell side can never hide a contact.
-        double minCell = 2 * src.maxRadius() * cellFactor * (1 + 1e-9);
+        double minCell = 2 * cellRadius * cellFactor * (1 + 1e-9);
         long c = cellsAlong(width, minCell);
         long r = cellsAlong(height, minCell);
         long cap = Math.max(64, 4L * n);
@@ -146,7 +166,7 @@ public final class DiscTable {
         this.rows = (int) Math.min(r, AXIS_MASK);
         this.cellW = width / cols;
         this.cellH = height / rows;
-        double maxDiameter = 2 * src.maxRadius();
+        double maxDiameter = 2 * cellRadius;
         this.recheckX = periodic && cols < 4 ? 0.5 * (0.5 * width - maxDiameter) : 0;
         this.recheckY = periodic && rows < 4 ? 0.5 * (0.5 * height - maxDiameter) : 0;
         this.straight = flight instanceof Flight.Straight;
@@ -161,6 +181,10 @@ public final class DiscTable {
         ahead[CROSS_UP] = new int[] {cols - 1, cols, cols + 1};
         this.ir = new int[Math.multiplyExact(n, IS)];
         Arrays.fill(cellHead, NIL);
+        this.growthRate = scene.effects().growth();
+        this.growing = growthRate > 0;
+        this.cellFactor = cellFactor;
+        this.cellRadius = cellRadius;
 
         boolean shared = true;
         for (int i = 1; i < n && shared; i++) {
@@ -196,6 +220,59 @@ public final class DiscTable {
         for (int i = 0; i < n; i++) {
             ir[i * IS + PARTNER] = NONE;
         }
+    }
+
+    private final double cellFactor;
+    private final double cellRadius;
+
+    /**
+     * The largest radius a disc may reach while this table's cells stay valid: cells at least
+     * cellFactor diameters wide on every axis with more than one cell, and, on a periodic axis of
+     * fewer than 4 cells, no more than the radius the rechecks were planned for.
+     */
+    public double largestRadiusHeld() {
+        double held = Double.POSITIVE_INFINITY;
+        double perDiameter = 2 * cellFactor * (1 + 1e-9);
+        if (cols > 1) {
+            held = Math.min(held, cellW / perDiameter);
+        }
+        if (rows > 1) {
+            held = Math.min(held, cellH / perDiameter);
+        }
+        if (hasRechecks()) {
+            held = Math.min(held, cellRadius);
+        }
+        return held;
+    }
+
+    /**
+     * Re-anchors growth at a new epoch: local time 0 is absolute time {@code epoch}, so radii are
+     * R(0) (1 + G epoch + G t) at local t. Engines call it whenever they re-anchor clocks.
+     */
+    public void anchorGrowth(double epoch) {
+        growthEpoch = epoch;
+        growthScale = 1 + growthRate * epoch;
+    }
+
+    /** {@link #anchorGrowth} after the engine shifted its clocks so that local {@code now} became 0. */
+    public void shiftGrowthAnchor(double now) {
+        anchorGrowth(growthEpoch + now);
+    }
+
+    /**
+     * With growth: time from local {@code now} until the discs in slots a and b of {@code d} touch
+     * ({@link GrowthLaw#timeToContact}), their positions at their own clocks {@code d.t}, their radii
+     * R(0), the nearest image; for code that predicts on copies of records rather than on the records
+     * (slabs' cross-domain predictions and window checks).
+     */
+    public double growingContactTime(Discs d, int a, int b, double now) {
+        double xa = d.x[a] + d.vx[a] * (now - d.t[a]);
+        double ya = d.y[a] + d.vy[a] * (now - d.t[a]);
+        double dx = boundary.separationX(d.x[b] + d.vx[b] * (now - d.t[b]) - xa);
+        double dy = boundary.separationY(d.y[b] + d.vy[b] * (now - d.t[b]) - ya);
+        double sigma0 = d.radius[a] + d.radius[b];
+        return GrowthLaw.timeToContact(dx, dy, d.vx[b] - d.vx[a], d.vy[b] - d.vy[a],
+                sigma0 * (growthScale + growthRate * now), sigma0 * growthRate);
     }
 
     private static long cellsAlong(double length, double minCell) {

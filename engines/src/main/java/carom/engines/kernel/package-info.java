@@ -34,6 +34,11 @@
  *       unchanged, so every other old candidate is still later than that one). Under gravity with
  *       fixed discs the whole neighbourhood is re-predicted, because a mobile-fixed contact is only
  *       searched up to the disc's next crossing (the {@code horizon} of the quartic search).</li>
+ *   <li>Growth (the {@code growth} effect): the records hold R(0); a table knows the growth rate and
+ *       the absolute time of its local 0 ({@code DiscTable.anchorGrowth}, moved at every re-anchoring of
+ *       clocks), predicts contacts of growing discs with {@link carom.core.physics.GrowthLaw} and
+ *       collides them by its surface bounce; a run plans its tables' cells for the radius the discs
+ *       reach before the next rebuild ({@link carom.engines.kernel.GrowthStages}).</li>
  * </ul>
  *
  * <h2>Record layout</h2>
@@ -59,7 +64,8 @@
  *
  * <h2>Invariants</h2>
  * <ul>
- *   <li>Cells are at least the largest diameter wide, so touching discs are always in neighbouring
+ *   <li>Cells are at least the largest diameter wide (with growth: the largest the table was planned
+ *       for, {@code DiscTable.largestRadiusHeld}), so touching discs are always in neighbouring
  *       cells; a disc changes cell only at its crossing event (its logical cell may differ from the
  *       cell of its rounded position by rounding, which no prediction depends on).</li>
  *   <li>A disc's scheduled time is at most the time of its next real event (every contact is found

@@ -29,6 +29,8 @@ final class CrossPredictions {
     private final Flight flight;
     private final Boundary boundary;
     private final boolean fullOnCross;
+    /** The growth effect: contacts of growing discs ({@link DiscTable#growingContactTime}). */
+    private final boolean growing;
     private final CrossHeap heap;
     /** Scratch for serial contact tests. */
     private final Discs xpair = new Discs(2);
@@ -43,6 +45,7 @@ final class CrossPredictions {
         this.flight = table.flight;
         this.boundary = table.boundary;
         this.fullOnCross = table.fullOnCross;
+        this.growing = table.growing;
         this.heap = new CrossHeap(table.n);
     }
 
@@ -151,7 +154,8 @@ final class CrossPredictions {
                 }
                 for (int j = table.firstInCell(c, r); j != DiscTable.NIL; j = table.nextInCell(j)) {
                     reader.load(xpair, j, 1);
-                    double t = now + flight.timeToContact(xpair, 0, 1, now, horizon, boundary);
+                    double t = now + (growing ? table.growingContactTime(xpair, 0, 1, now)
+                            : flight.timeToContact(xpair, 0, 1, now, horizon, boundary));
                     if (t < best) {
                         best = t;
                         bestP = j;

@@ -62,6 +62,11 @@ public final class SlabsEngine implements Engine {
     }
 
     @Override
+    public boolean supportsGrowth() {
+        return true;
+    }
+
+    @Override
     public RunResult resume(Scene scene, RunOptions options, byte[] saved) {
         checkSupports(scene);
         SlabsRun run = new SlabsRun(scene, options);
@@ -72,6 +77,13 @@ public final class SlabsEngine implements Engine {
     @Override
     public RunResult run(Scene scene, RunOptions options) {
         checkSupports(scene);
+        if (scene.effects().grows()) {
+            if (options.checkpoints() != null) {
+                // A growth run rebuilds its table in stages; saving a stage's state is not built yet.
+                throw new carom.core.BadInputException("--checkpoint: runs with growing discs cannot be checkpointed yet");
+            }
+            return new SlabsGrowthRun(scene, options).run();
+        }
         return new SlabsRun(scene, options).run();
     }
 }

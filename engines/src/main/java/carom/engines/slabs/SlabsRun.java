@@ -123,12 +123,20 @@ final class SlabsRun {
     private final SlabsCheckpoint checkpoints;
 
     SlabsRun(Scene scene, RunOptions options) {
+        this(scene, options, null);
+    }
+
+    /**
+     * A run on {@code prebuilt}, a table laid out from the scene's discs (a stage of a growth run,
+     * {@link SlabsGrowthRun}), or on its own table if null.
+     */
+    SlabsRun(Scene scene, RunOptions options, DiscTable prebuilt) {
         long constructing = System.nanoTime();
         this.scene = scene;
         this.until = options.until();
         // The initial discs are needed only here: the run holds its records, not a second copy.
         Discs src = scene.newDiscs();
-        this.table = new DiscTable(scene, src, KernelTunables.CELL_FACTOR.of(options));
+        this.table = prebuilt != null ? prebuilt : new DiscTable(scene, src, KernelTunables.CELL_FACTOR.of(options));
         this.n = table.n;
         this.audit = Tunables.AUDIT_ENERGY.of(options) ? EnergyAudit.forScene(scene) : null;
         this.progress = options.progress();
@@ -550,6 +558,7 @@ final class SlabsRun {
                 cross.rebase(now);
             }
             clock.shift(now);
+            table.shiftGrowthAnchor(now);
             sampleLocal = samples.next() - clock.epoch;
         }
         replan(now);

@@ -157,7 +157,8 @@ final class WindowVerifier {
         if (!(from <= to)) {
             return;
         }
-        double t = from + flight.timeToContact(seg, 0, 1, from, to, boundary);
+        double t = from + (table.growing ? table.growingContactTime(seg, 0, 1, from)
+                : flight.timeToContact(seg, 0, 1, from, to, boundary));
         if (t <= to && t < violationT) {
             violationT = t;
             violationX = x;

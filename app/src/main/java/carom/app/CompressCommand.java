@@ -1,0 +1,199 @@
+package carom.app;
+
+import carom.core.BadInputException;
+import carom.core.Quoted;
+import carom.core.engine.Energy;
+import carom.core.engine.RunOptions;
+import carom.core.engine.RunResult;
+import carom.core.observe.StateChecks;
+import carom.core.scene.Scene;
+import carom.core.scene.SceneReader;
+import carom.core.state.Discs;
+import carom.engines.fast.GrowthRun;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.io.PrintWriter;
+import java.io.Writer;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code carom compress}: grow the discs of a scene with the {@code growth} effect (Lubachevsky-Stillinger)
+ * on the {@code fast} engine until the reduced pressure Z over the last thermostat interval exceeds
+ * {@code --to-pressure} or the scene's {@code until} comes, and write the packing.
+ *
+ * <p>The thermostat rescales the kinetic energy to its initial value at every {@code --every} sample and
+ * whenever the kinetic energy has doubled since the last rescaling ({@link #ENERGY_CAP}); each rescaling
+ * ends a pressure interval. Every stop says why: the pressure reached, {@code until} reached, or (as bad
+ * input, exit status 2) a pair stuck in endlessly many collisions at one instant, named. Output files
+ * appear whole or not at all ({@link AtomicOutput}), the summary last.
+ */
+@Command(name = "compress", mixinStandardHelpOptions = true, sortOptions = false,
+        description = "Grow the discs of a scene with effects.growth until the reduced pressure exceeds --to-pressure "
+                + "(or the scene's until); print or write the packing.")
+final class CompressCommand implements Callable<Integer> {
+    /** The thermostat also rescales when the kinetic energy has grown this many times since the last rescaling. */
+    static final double ENERGY_CAP = 2;
+
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "SCENE.json", description = "The scene file (with effects.growth).")
+    String sceneFile;
+
+    @Option(names = "--to-pressure", paramLabel = "P", required = true,
+            description = "Stop once the reduced pressure Z = PA/(NkT) over the last thermostat interval exceeds P.")
+    double toPressure;
+
+    @Option(names = "--every", paramLabel = "DT",
+            description = "Thermostat interval: rescale the kinetic energy to its initial value at t = DT, 2 DT, ... "
+                    + "(it also rescales whenever the kinetic energy doubled).")
+    Double every;
+
+    @Option(names = "--out", paramLabel = "PACKING.csv", description = "Write the packing here (id,x,y,radius).")
+    Path out;
+
+    @Option(names = "--summary", paramLabel = "S.json", description = "Write the summary here as JSON.")
+    Path summary;
+
+    private final PrintStream err;
+
+    CompressCommand(PrintStream err) {
+        this.err = err;
+    }
+
+    @Override
+    public Integer call() throws IOException {
+        if (!(toPressure > 0) || Double.isInfinite(toPressure)) {
+            throw new BadInputException("--to-pressure: must be a finite number > 0, got " + toPressure);
+        }
+        if (every != null && (!(every > 0) || Double.isInfinite(every))) {
+            throw new BadInputException("--every: must be a finite number > 0, got " + every);
+        }
+        if (out != null && summary != null && out.toAbsolutePath().normalize().equals(summary.toAbsolutePath().normalize())) {
+            throw new BadInputException("--out and --summary name the same file " + Quoted.fileName(out.toString()));
+        }
+        if (out != null) {
+            AtomicOutput.checkWritable(out, "--out");
+        }
+        if (summary != null) {
+            AtomicOutput.checkWritable(summary, "--summary");
+        }
+        SceneFile file = new SceneFile(sceneFile);
+        Scene scene = file.about(() -> SceneReader.read(file.path()));
+        if (!scene.effects().grows()) {
+            throw new BadInputException(Quoted.fileName(sceneFile)
+                    + ": effects.growth: compress needs a scene with a growth rate (\"effects\": {\"growth\": G})");
+        }
+        try (AtomicOutput files = new AtomicOutput()) {
+            GrowthRun run;
+            RunResult result;
+            try (ProgressBar bar = ProgressBar.forRun(err, scene.until())) {
+                RunOptions options = new RunOptions(scene.until(), 1, bar, Map.of());
+                if (every != null) {
+                    // The samples are the thermostat's times; nothing else is taken from them.
+                    options = options.withSamples(every, (t, state, virialSum) -> { });
+                }
+                run = new GrowthRun(scene, options, toPressure, ENERGY_CAP);
+                result = file.about(run::run);
+            }
+            Packing packing = Packing.of(scene, result, run, toPressure);
+            if (out == null && summary == null) {
+                PrintWriter stdout = spec.commandLine().getOut();
+                packing.print(stdout);
+                // No file asked for: the packing itself follows the summary, after a blank line.
+                stdout.println();
+                writePacking(result.finalState(), stdout);
+                stdout.flush();
+            }
+            if (out != null) {
+                files.stage(out, w -> writePacking(result.finalState(), w));
+            }
+            if (summary != null) {
+                ObjectNode json = SummaryJson.toJson(scene.name(), scene.size(), 1, result, Energy.of(scene, result),
+                        FinalChecks.of(scene, result.finalState()));
+                packing.addTo(json.putObject("compression"));
+                files.stage(summary, w -> SummaryJson.write(json, w));
+            }
+            files.commit();
+        }
+        return 0;
+    }
+
+    /** PACKING.csv: {@code id,x,y,radius}, numbers that parse back to the same double. */
+    static void writePacking(Discs d, Writer w) throws IOException {
+        w.write("id,x,y,radius\n");
+        StringBuilder row = new StringBuilder(96);
+        for (int i = 0; i < d.n; i++) {
+            row.setLength(0);
+            row.append(i).append(',').append(d.x[i]).append(',').append(d.y[i]).append(',').append(d.radius[i])
+                    .append('\n');
+            w.append(row);
+        }
+    }
+
+    /** What a compression ended with, and why. */
+    record Packing(String stop, String why, double time, double packingStart, double packingFraction,
+                   double compressibility, long pairCollisions, long wallCollisions, double smallestGap,
+                   double energyAdded, double energyRemoved, long rescalings, double wallSeconds) {
+        static Packing of(Scene scene, RunResult r, GrowthRun run, double toPressure) {
+            Discs d = r.finalState();
+            double covered = 0;
+            for (int i = 0; i < d.n; i++) {
+                covered += Math.PI * d.radius[i] * d.radius[i];
+            }
+            double z = run.lastCompressibility();
+            boolean pressure = run.stop() == GrowthRun.Stop.PRESSURE;
+            String why = pressure
+                    ? String.format(Locale.ROOT, "pressure reached: Z = %.6g > %s at t = %s", z, toPressure, r.until())
+                    : String.format(Locale.ROOT, "until reached: t = %s with Z = %.6g, not above %s", r.until(), z,
+                    toPressure);
+            return new Packing(pressure ? "pressure" : "until", why, r.until(), scene.packingFraction(),
+                    covered / scene.box().area(), z, r.pairCollisions(), r.wallCollisions(),
+                    StateChecks.smallestGap(d, scene.box()), run.energyAdded(), run.energyRemoved(), run.rescalings(),
+                    r.wallSeconds());
+        }
+
+        void print(PrintWriter out) {
+            out.println("stop                  " + why);
+            out.println("packing fraction      " + packingFraction + "  (from " + packingStart + ")");
+            out.println("reduced pressure Z    " + compressibility);
+            out.println("pair collisions       " + pairCollisions);
+            out.println("wall collisions       " + wallCollisions);
+            out.println("smallest gap          " + smallestGap + " of a contact distance");
+            out.println("energy added          " + energyAdded + " by collisions, " + energyRemoved
+                    + " taken by the thermostat (" + rescalings + " rescalings)");
+            out.println("wall seconds          " + String.format(Locale.ROOT, "%.3f", wallSeconds));
+            out.flush();
+        }
+
+        void addTo(ObjectNode json) {
+            json.put("stop", stop);
+            json.put("why", why);
+            put(json, "time", time);
+            put(json, "packingFractionInitial", packingStart);
+            put(json, "packingFraction", packingFraction);
+            put(json, "Z", compressibility);
+            put(json, "smallestGap", smallestGap);
+            put(json, "energyAddedByCollisions", energyAdded);
+            put(json, "energyRemovedByThermostat", energyRemoved);
+            json.put("rescalings", rescalings);
+        }
+
+        private static void put(ObjectNode json, String key, double v) {
+            if (Double.isFinite(v)) {
+                json.put(key, v);
+            } else {
+                json.putNull(key);
+            }
+        }
+    }
+}
