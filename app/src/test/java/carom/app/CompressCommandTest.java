@@ -121,6 +121,18 @@ class CompressCommandTest {
     }
 
     @Test
+    void aGrowingRunCannotBeCheckpointedYet() {
+        Path scene = Scenes.write(dir, "growing.json", growing(1));
+        Path ckpt = dir.resolve("run.ckpt");
+        for (String engine : new String[] {"fast", "slabs"}) {
+            assertRejected(Cli.run("simulate", scene.toString(), "--engine", engine, "--checkpoint", ckpt.toString(),
+                    "--out", dir.resolve("f.csv").toString()), "error: ", "growing.json");
+            assertThat(Cli.run("simulate", scene.toString(), "--engine", engine, "--checkpoint", ckpt.toString()).firstErrorLine())
+                    .contains("--checkpoint: runs with growing discs cannot be checkpointed yet");
+        }
+    }
+
+    @Test
     void discsThatOutgrowAPeriodicBoxStopWithAnError() {
         // 4 discs of radius 0.5 in a 3 x 3 box: the box must stay wider than two diameters (radius < 0.75).
         Path scene = Scenes.write(dir, "tiny.json", """
