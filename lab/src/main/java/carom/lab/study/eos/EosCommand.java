@@ -34,6 +34,8 @@ public final class EosCommand implements Callable<Integer> {
     static final List<Double> PHIS = List.of(0.30, 0.40, 0.50, 0.60, 0.65, 0.68, 0.69, 0.70, 0.705, 0.71, 0.715, 0.72, 0.73, 0.74);
     static final List<Double> QUICK_PHIS = List.of(0.30, 0.70, 0.72);
     static final List<Double> SNAPSHOTS = List.of(0.70, 0.71, 0.72);
+    static final String CRYSTAL = "crystal";
+    static final String FLUID = "fluid";
 
     @Spec
     CommandSpec spec;
@@ -75,6 +77,11 @@ public final class EosCommand implements Callable<Integer> {
 
     @Option(names = "--seed", paramLabel = "S", defaultValue = "1", description = "Seed of the starting velocities (default ${DEFAULT-VALUE}).")
     long seed;
+
+    @Option(names = "--start", paramLabel = "crystal|fluid", defaultValue = CRYSTAL,
+            description = "Each point's start: a triangular crystal (default), or a liquid melted at 0.60 and compressed to "
+                    + "the packing fraction by growing the discs. The two agreeing is the test that a point is in equilibrium.")
+    String start;
 
     @Option(names = "--snapshots", split = ",", paramLabel = "PHI",
             description = "Packing fractions whose final state is drawn coloured by local ψ6 (default 0.70,0.71,0.72; those in --phis).")
@@ -161,8 +168,15 @@ public final class EosCommand implements Callable<Integer> {
         if (b < 2 || b > 1_000_000) {
             throw new BadInputException("--blocks: must be 2 to 1000000, got " + b);
         }
+        if (!start.equals(CRYSTAL) && !start.equals(FLUID)) {
+            throw new BadInputException("--start: " + carom.core.Quoted.of(start) + " is neither crystal nor fluid");
+        }
+        if (start.equals(FLUID) && !e.supportsGrowth()) {
+            throw new BadInputException("--start fluid: engine " + engine + " does not simulate growing discs, which make the "
+                    + "liquid start (use fast or slabs)");
+        }
         List<Double> snaps = snapshots != null ? snapshots : quick ? chosenPhis.stream().filter(p -> p >= 0.70).toList() : SNAPSHOTS;
-        return new EosSettings(n, chosenPhis, engine, e.threadsFor(k), block, w, minEq, maxEq, b, seed, snaps,
+        return new EosSettings(n, chosenPhis, engine, e.threadsFor(k), block, w, minEq, maxEq, b, seed, start, snaps,
                 carom.lab.LabMain.commandLine(spec), quick);
     }
 

@@ -71,9 +71,13 @@ final class EosReport {
                 .append(String.format(Locale.ROOT, "- load average (1 min) before / after: %.2f / %.2f; machine to itself: %s%n",
                         loadBefore, loadAfter, shared == null ? "yes, as far as the load average tells" : "**no**: " + shared))
                 .append(String.format(Locale.ROOT, "- N = %d equal discs (diameter σ = 1, mass 1, kT = 1) in a periodic box with the "
-                        + "aspect ratio of a triangular crystal (%d rows of %d), started as that crystal with Maxwell velocities "
-                        + "(seed %d); engine `%s` on %d thread(s)%n", settings.discs(), EosScene.side(settings.discs()),
-                        EosScene.side(settings.discs()), settings.seed(), settings.engine(), settings.threads()))
+                        + "aspect ratio of a triangular crystal (%d rows of %d), %s, Maxwell velocities (seed %d); engine `%s` "
+                        + "on %d thread(s)%n", settings.discs(), EosScene.side(settings.discs()), EosScene.side(settings.discs()),
+                        settings.start().equals(EosCommand.FLUID) ? String.format(Locale.ROOT, "started as a liquid (the "
+                                + "crystal melted at %.2f for t = %s, then compressed to each packing fraction by growing the "
+                                + "discs at rate %s and shrunk back with the box)", EosScene.MELT_PHI, Table.readable(EosScene.MELT_TIME),
+                                Table.readable(EosScene.GROWTH_RATE)) : "started as that crystal",
+                        settings.seed(), settings.engine(), settings.threads()))
                 .append(String.format(Locale.ROOT, "- blocks of about %s collisions per disc; equilibrated when Z and |ψ6| over the "
                         + "last %d blocks agree with the %d before within 2 combined standard errors (|ψ6|'s floored at %s), after "
                         + "at least %s collisions per disc; a point still drifting at %s is measured anyway and flagged; then %d "
@@ -129,12 +133,12 @@ final class EosReport {
     }
 
     private Table csv() {
-        Table t = new Table("phi", "n", "z", "z_error", "betaP_sigma2", "betaP_sigma2_error", "psi6", "psi6_error", "equilibrated",
+        Table t = new Table("phi", "n", "start", "z", "z_error", "betaP_sigma2", "betaP_sigma2_error", "psi6", "psi6_error", "equilibrated",
                 "equilibration_collisions_per_disc", "measurement_collisions_per_disc", "blocks", "block_time", "pair_collisions",
                 "engine_seconds", "literature_betaP_sigma2", "literature_source");
         for (EosPoint p : points) {
             EosLiterature.Point lit = EosLiterature.at(p.phi());
-            t.add(Table.plain(p.phi()), Integer.toString(settings.discs()), Table.plain(p.z()), Table.plain(p.zError()),
+            t.add(Table.plain(p.phi()), Integer.toString(settings.discs()), settings.start(), Table.plain(p.z()), Table.plain(p.zError()),
                     Table.plain(p.betaPSigma2()), Table.plain(p.betaPSigma2Error()), Table.plain(p.psi6()), Table.plain(p.psi6Error()),
                     Boolean.toString(p.equilibrated()), Table.plain(p.equilibrationPerDisc()), Table.plain(p.measurementPerDisc()),
                     Integer.toString(p.blocks()), Table.plain(p.blockTime()), Long.toString(p.pairCollisions()),
@@ -191,7 +195,7 @@ final class EosReport {
     private List<Charts.Line> pressureLines(double from) {
         List<EosPoint> shown = points.stream().filter(p -> p.phi() >= from).toList();
         List<Charts.Line> lines = new ArrayList<>();
-        lines.add(new Charts.Line("carom, " + settings.engine() + ", N = " + settings.discs(), shown.stream().map(EosPoint::phi).toList(),
+        lines.add(new Charts.Line("carom, " + settings.engine() + ", N = " + settings.discs() + ", " + settings.start() + " start", shown.stream().map(EosPoint::phi).toList(),
                 shown.stream().map(EosPoint::betaPSigma2).toList(), shown.stream().map(EosPoint::betaPSigma2Error).toList(), false));
         for (EosLiterature.Series s : EosLiterature.all()) {
             List<EosLiterature.Point> ps = s.points().stream().filter(p -> p.phi() >= from).toList();

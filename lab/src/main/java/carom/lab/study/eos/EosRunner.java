@@ -39,7 +39,8 @@ final class EosRunner {
 
     /** The point at {@code phi}; {@code status} hears a line per block (for the progress display). */
     EosPoint measure(double phi, java.util.function.Consumer<String> status) {
-        Scene scene = EosScene.crystal(settings.discs(), phi, settings.seed());
+        Scene scene = settings.start().equals(EosCommand.FLUID) ? EosScene.fluid(settings.discs(), phi, settings.seed(), engine, threads)
+                : EosScene.crystal(settings.discs(), phi, settings.seed());
         int n = scene.newDiscs().n;
         BondOrder bondOrder = new BondOrder();
         double clock = 0;

@@ -15,12 +15,13 @@ import java.util.List;
  * @param maxEquilibration  collisions per disc after which a point is measured anyway, flagged as not equilibrated
  * @param blocks            measurement blocks
  * @param seed              seed of the starting velocities
+ * @param start             {@code crystal} or {@code fluid} ({@link EosScene#crystal}, {@link EosScene#fluid})
  * @param snapshots         packing fractions whose final state is drawn coloured by local ψ6
  * @param commandLine       the command as given, for the report
  * @param quick             --quick: a try of the command, not a measurement
  */
 record EosSettings(int discs, List<Double> phis, String engine, int threads, double blockCollisions, int window,
-                   double minEquilibration, double maxEquilibration, int blocks, long seed, List<Double> snapshots,
+                   double minEquilibration, double maxEquilibration, int blocks, long seed, String start, List<Double> snapshots,
                    String commandLine, boolean quick) {
     EosSettings {
         phis = phis.stream().sorted().toList();

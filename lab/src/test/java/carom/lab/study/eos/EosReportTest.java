@@ -14,7 +14,7 @@ class EosReportTest {
 
     private static EosReport report(List<EosPoint> points) {
         EosSettings settings = new EosSettings(256, points.stream().map(EosPoint::phi).toList(), "fast", 1, 20, 5, 100, 5000, 20, 1,
-                List.of(), "carom study eos", false);
+                "crystal", List.of(), "carom study eos", false);
         return new EosReport(settings, points, new Machine(2, "cpu", "jvm", "os", 1L << 30), 0, 1);
     }
 

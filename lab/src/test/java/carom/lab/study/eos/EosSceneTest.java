@@ -51,6 +51,30 @@ class EosSceneTest {
     }
 
     @ParameterizedTest
+    @CsvSource({"fast, 1", "slabs, 2"})
+    void aLiquidStartIsAtThePackingFractionWithoutOverlapAndDisordered(String engine, int threads) {
+        Scene scene = EosScene.fluid(256, 0.70, 3, carom.engines.EngineCatalog.byName(engine), threads);
+        Discs d = scene.newDiscs();
+
+        assertThat(scene.packingFraction()).isCloseTo(0.70, within(1e-9));
+        double closest = Double.POSITIVE_INFINITY;
+        for (int i = 0; i < d.n; i++) {
+            for (int j = i + 1; j < d.n; j++) {
+                double dx = d.x[j] - d.x[i];
+                double dy = d.y[j] - d.y[i];
+                dx -= scene.box().width() * Math.rint(dx / scene.box().width());
+                dy -= scene.box().height() * Math.rint(dy / scene.box().height());
+                closest = Math.min(closest, Math.hypot(dx, dy));
+            }
+        }
+        assertThat(closest).as("closest pair, in diameters").isGreaterThanOrEqualTo(1.0);
+        carom.core.observe.sample.BondOrder order = new carom.core.observe.sample.BondOrder();
+        order.accept(carom.core.observe.sample.Sample.of(0, scene.box(), d));
+        // a melted and compressed liquid: far from the crystal's |psi6| of 1
+        assertThat(order.values()[0]).isLessThan(0.5);
+    }
+
+    @ParameterizedTest
     @ValueSource(ints = {2, 9, 81, 100 - 1, 0})
     void onlyTheSquareOfAnEvenNumberFits(int n) {
         assertThatThrownBy(() -> EosScene.side(n)).isInstanceOf(BadInputException.class).hasMessageContaining("--n");

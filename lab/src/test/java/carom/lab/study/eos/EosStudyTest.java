@@ -55,7 +55,8 @@ class EosStudyTest {
         "--phis;0.95;--phis: 0.95 is not a packing fraction",
         "--engine;akka;--engine: akka is relaxed",
         "--blocks;1;--blocks: must be 2 to 1000000",
-        "--block-collisions;NaN;--block-collisions: must be a number > 0"})
+        "--block-collisions;NaN;--block-collisions: must be a number > 0",
+        "--start;glass;--start: 'glass' is neither crystal nor fluid"})
     void badOptionsAreOneErrorLineAndStatusTwo(String option, String value, String message) {
         Path out = dir.resolve("never");
 
