@@ -17,6 +17,10 @@ public enum Counter {
     BYTES("bytes", "heap held by the run's disc and queue arrays"),
     BYTES_PER_DISC("bytesPerDisc", "the same over the number of discs, rounded"),
 
+    // Exact engines under gravity: resting contact.
+    SLEEPS("sleeps", "discs put to sleep at rest on a wall, a fixed disc or a sleeping disc (under gravity)"),
+    WAKES("wakes", "sleeping discs woken by a collision with a disc that is awake"),
+
     // Step-grid engines (serial, stripes, the actor engines).
     STEPS("steps", "time steps of the grid"),
     EARLY_STEP_ENDS("earlyStepEnds", "steps ended early because a disc became faster than the step allows (serial)"),

@@ -117,9 +117,13 @@ final class FastRun {
         counters.put(Counter.RESYNCS.key, resyncs);
         counters.put(Counter.BYTES.key, bytes());
         counters.put(Counter.BYTES_PER_DISC.key, n == 0 ? 0 : Math.round((double) bytes() / n));
+        if (flight.maxAcceleration() > 0) {
+            counters.put(Counter.SLEEPS.key, motion.sleeps());
+            counters.put(Counter.WAKES.key, motion.wakes());
+        }
         return new RunResult("fast", true, out, until, pairCollisions, wallCollisions, events,
                 energyStart, energyEnd, momentumStart, Observables.momentum(out), pressure, 0, seconds,
-                Map.copyOf(counters));
+                Map.copyOf(counters), motion.energyPutToRest());
     }
 
     /** Heap held by this run's per-disc and per-cell arrays, in bytes. */
@@ -199,7 +203,8 @@ final class FastRun {
             audit.check(motion.snapshot(), flight, now, abs);
         }
         queue.insert(a, predictFull(a, now));
-        if (invMass(b) > 0) {
+        // Mobile in the scene (awake or asleep): b may have woken or fallen asleep.
+        if (table.mobile(b)) {
             queue.remove(b);
             queue.insert(b, predictFull(b, now));
         }

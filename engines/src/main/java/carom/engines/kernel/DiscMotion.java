@@ -55,6 +55,12 @@ public final class DiscMotion {
     private final Restitution restitution;
     /** Under gravity every contact with something immovable is checked for rest (StallGuard). */
     private final boolean gravity;
+    /** Resting contact: each disc's inverse mass while awake (null without gravity). */
+    private final double[] awakeInvMass;
+    /** Discs this thread put to sleep and woke, and the kinetic energy put to rest by falling asleep. */
+    private long sleeps;
+    private long wakes;
+    private double energyPutToRest;
     /** Scene id of each internal disc: where the final state puts it. */
     private final int[] sceneIds;
 
@@ -79,6 +85,7 @@ public final class DiscMotion {
         this.boundary = table.boundary;
         this.restitution = table.restitution;
         this.gravity = table.acceleration > 0;
+        this.awakeInvMass = table.awakeInvMass;
         this.sceneIds = table.sceneIds();
     }
 
@@ -135,8 +142,11 @@ public final class DiscMotion {
 
     /**
      * Collides discs a and b at local {@code now} (absolute {@code abs}): both advanced, their
-     * velocities changed, restitution told, collision counters bumped (b's only if mobile); under
-     * gravity a contact with an immovable b goes to {@code guard}. Returns the collision's virial.
+     * velocities changed, restitution told, collision counters bumped (of each disc whose trajectory
+     * changed). Under gravity, a contact of a mobile disc with an immovable one (fixed, or asleep) is
+     * resting contact when {@code guard} says so: the mobile disc falls asleep instead of colliding;
+     * otherwise a sleeping partner wakes and the two collide. Either disc may be the one whose event
+     * this is (a sleeping disc predicts its contacts too). Returns the collision's virial.
      */
     public double collidePair(int a, int b, double now, double abs, StallGuard guard) {
         advance(a, now);
@@ -146,15 +156,30 @@ public final class DiscMotion {
         double dx = boundary.separationX(rec[bt + X] - rec[at + X]);
         double dy = boundary.separationY(rec[bt + Y] - rec[at + Y]);
         double e = restitution.pair(a, b, abs);
+        boolean aMobile = invMass(a) > 0;
         boolean bMobile = invMass(b) > 0;
-        if (gravity && !bMobile) {
+        if (gravity && aMobile != bMobile) {
+            int m = aMobile ? a : b;
+            int support = aMobile ? b : a;
             double dist = Math.sqrt(dx * dx + dy * dy);
-            guard.pegContact(abs, a, b, dx / dist, dy / dist, rec[at + VX], rec[at + VY], dist);
+            double toSupport = aMobile ? 1 / dist : -1 / dist;
+            int mt = m * stride;
+            if (guard.restsOnDisc(abs, dx * toSupport, dy * toSupport, rec[mt + VX], rec[mt + VY], dist)) {
+                fallAsleep(m, abs);
+                return 0;
+            }
+            if (awakeInvMass[support] > 0) {
+                wake(support);
+                aMobile = true;
+                bMobile = true;
+            }
         }
         // On the records, not through the pair window: no copies in and out at every collision.
         double w = PairLaw.collide(rec, at + VX, bt + VX, rec, at + VY, bt + VY, invMass(a), invMass(b), dx, dy, e);
-        restitution.collided(a, abs);
-        ir[a * IS + COUNT]++;
+        if (aMobile) {
+            restitution.collided(a, abs);
+            ir[a * IS + COUNT]++;
+        }
         if (bMobile) {
             restitution.collided(b, abs);
             ir[b * IS + COUNT]++;
@@ -164,20 +189,67 @@ public final class DiscMotion {
 
     /**
      * Bounces disc i off wall {@code wall} at local {@code now} (absolute {@code abs}): advanced,
-     * reflected, restitution told, its collision counter bumped; under gravity the contact goes to
-     * {@code guard}.
+     * reflected, restitution told, its collision counter bumped; under gravity it falls asleep instead
+     * when {@code guard} says it rests on the wall.
      */
     public void collideWall(int i, int wall, double now, double abs, StallGuard guard) {
         advance(i, now);
         double e = restitution.wall(i, abs);
-        load(i, 0);
-        if (gravity) {
-            guard.wallContact(abs, i, wall, pair.vx[0], pair.vy[0]);
+        int at = i * stride;
+        if (gravity && guard.restsOnWall(abs, wall, rec[at + VX], rec[at + VY])) {
+            fallAsleep(i, abs);
+            return;
         }
+        load(i, 0);
         boundary.reflect(pair, 0, wall, e);
         store(i, 0);
         restitution.collided(i, abs);
         ir[i * IS + COUNT]++;
+    }
+
+    /**
+     * Mobile disc i (advanced to now) falls asleep where it is: velocity and record inverse mass 0, its
+     * kinetic energy put to rest; its trajectory changed, so its counter is bumped.
+     */
+    private void fallAsleep(int i, double abs) {
+        int at = i * stride;
+        double vx = rec[at + VX];
+        double vy = rec[at + VY];
+        energyPutToRest += 0.5 * (vx * vx + vy * vy) / rec[at + IM];
+        sleeps++;
+        rec[at + VX] = 0;
+        rec[at + VY] = 0;
+        rec[at + IM] = 0;
+        restitution.collided(i, abs);
+        ir[i * IS + COUNT]++;
+    }
+
+    /** Sleeping disc i (advanced to now) wakes: mobile again with its own mass, at rest. */
+    private void wake(int i) {
+        rec[i * stride + IM] = awakeInvMass[i];
+        wakes++;
+    }
+
+    /** Discs this thread put to sleep. */
+    public long sleeps() {
+        return sleeps;
+    }
+
+    /** Sleeping discs this thread woke. */
+    public long wakes() {
+        return wakes;
+    }
+
+    /** Kinetic energy the discs this thread put to sleep had then, summed. */
+    public double energyPutToRest() {
+        return energyPutToRest;
+    }
+
+    /** Sets this thread's resting-contact counts back (a domain undoing events). */
+    public void setRestCounts(long sleeps, long wakes, double energyPutToRest) {
+        this.sleeps = sleeps;
+        this.wakes = wakes;
+        this.energyPutToRest = energyPutToRest;
     }
 
     /**

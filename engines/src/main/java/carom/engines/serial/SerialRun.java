@@ -7,6 +7,7 @@ import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.engine.Contacts;
+import carom.core.engine.Sleepers;
 import carom.core.engine.StallGuard;
 import carom.core.grid.CellGrid;
 import carom.core.grid.CellLists;
@@ -23,6 +24,7 @@ import carom.core.scene.Scene;
 import carom.core.state.Discs;
 import carom.engines.cells.StepGrid;
 import carom.engines.cells.ThreadedBucketQueue;
+import java.util.HashMap;
 import java.util.Map;
 
 /**
@@ -68,6 +70,8 @@ final class SerialRun {
     private final VirialAccumulator virial;
     private final StallGuard stallGuard;
     private final Contacts contacts;
+    /** Resting contact under gravity (null without gravity). */
+    private final Sleepers sleepers;
 
     private double stepEnd;
     private long pairCollisions;
@@ -97,7 +101,8 @@ final class SerialRun {
         this.progress = options.progress();
         this.virial = VirialAccumulator.forRun(until);
         this.stallGuard = new StallGuard(scene);
-        this.contacts = new Contacts(flight, boundary, stallGuard);
+        this.sleepers = acceleration > 0 ? new Sleepers(d) : null;
+        this.contacts = new Contacts(flight, boundary, stallGuard, sleepers);
     }
 
     RunResult run() {
@@ -114,12 +119,19 @@ final class SerialRun {
         for (int i = 0; i < n; i++) {
             d.t[i] = until;
         }
+        Map<String, Long> counters = new HashMap<>(Map.of(Counter.STEPS.key, steps, Counter.PREDICTIONS.key,
+                predictions, Counter.EARLY_STEP_ENDS.key, earlyStepEnds));
+        if (sleepers != null) {
+            sleepers.wakeAll(d);
+            counters.put(Counter.SLEEPS.key, sleepers.sleeps());
+            counters.put(Counter.WAKES.key, sleepers.wakes());
+        }
         double seconds = (System.nanoTime() - started) * 1e-9;
         double energyEnd = Observables.kineticEnergy(d);
         Pressure pressure = VirialAccumulator.pressureOf(virial, scene, d, energyStart, energyEnd);
         return new RunResult("serial", true, d, until, pairCollisions, wallCollisions, pairCollisions + wallCollisions,
                 energyStart, energyEnd, momentumStart, Observables.momentum(d), pressure, 0, seconds,
-                Map.of(Counter.STEPS.key, steps, Counter.PREDICTIONS.key, predictions, Counter.EARLY_STEP_ENDS.key, earlyStepEnds));
+                Map.copyOf(counters), sleepers == null ? 0 : sleepers.energyPutToRest());
     }
 
     /** Runs one step from local time 0 (absolute {@code epoch}); returns its length. */
@@ -186,9 +198,13 @@ final class SerialRun {
     }
 
     private void collidePair(double epoch, double now, int a, int b) {
+        boolean aWasMobile = d.invMass[a] > 0;
+        boolean bWasMobile = d.invMass[b] > 0;
         double w = contacts.pair(d, restitution, a, b, now, epoch + now, a, b);
-        boolean aMobile = d.invMass[a] > 0;
-        boolean bMobile = d.invMass[b] > 0;
+        // Changed: mobile before (collided, or fell asleep) or after (woke). A fixed or sleeping
+        // partner that stayed so keeps its other potentials.
+        boolean aMobile = aWasMobile || d.invMass[a] > 0;
+        boolean bMobile = bWasMobile || d.invMass[b] > 0;
         pairCollisions++;
         if (aMobile) {
             restitution.collided(a, epoch + now);
