@@ -290,6 +290,8 @@ final class Domain {
         wallCollisions = log.counterBefore(k, UndoLog.WALL_COLLISIONS);
         crossings = log.counterBefore(k, UndoLog.CROSSINGS);
         staleEvents = log.counterBefore(k, UndoLog.STALE_EVENTS);
+        motion.setRestCounts(log.counterBefore(k, UndoLog.SLEEPS), log.counterBefore(k, UndoLog.WAKES),
+                log.energyPutToRestBefore(k));
         log.truncate(k);
     }
 
@@ -319,7 +321,8 @@ final class Domain {
             audit.check(motion.snapshot(), table.flight, now, abs);
         }
         queue.insert(a, predictFull(a, now));
-        if (table.invMass(b) > 0) {
+        // Mobile in the scene (awake or asleep): b may have woken or fallen asleep.
+        if (table.mobile(b)) {
             queue.remove(b);
             queue.insert(b, predictFull(b, now));
         }

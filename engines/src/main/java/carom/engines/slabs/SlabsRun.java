@@ -15,7 +15,10 @@ import carom.core.observe.VirialAccumulator;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
 import carom.engines.kernel.DiscTable;
+import carom.core.engine.Counter;
 import java.util.Arrays;
+import java.util.HashMap;
+import java.util.Map;
 
 /**
  * One run of the slabs engine: the box cut into domains ({@link SlabColumns}), each a thread running
@@ -219,10 +222,24 @@ final class SlabsRun {
             virial.addAll(d.virial);
         }
         Pressure pressure = VirialAccumulator.pressureOf(virial, scene, out, energyStart, energyEnd);
+        Map<String, Long> reported = counters.toMap(counted, domainCount, cross == null ? 0 : cross.predictions, spins);
+        double energyPutToRest = 0;
+        if (table.flight.maxAcceleration() > 0) {
+            long sleeps = 0;
+            long wakes = 0;
+            for (Domain d : counted) {
+                sleeps += d.motion.sleeps();
+                wakes += d.motion.wakes();
+                energyPutToRest += d.motion.energyPutToRest();
+            }
+            Map<String, Long> withRest = new HashMap<>(reported);
+            withRest.put(Counter.SLEEPS.key, sleeps);
+            withRest.put(Counter.WAKES.key, wakes);
+            reported = Map.copyOf(withRest);
+        }
         return new RunResult("slabs", true, out, until, counters.pairCollisions(counted),
                 counters.wallCollisions(counted), counters.events(counted), energyStart, energyEnd, momentumStart,
-                Observables.momentum(out), pressure, 0, seconds,
-                counters.toMap(counted, domainCount, cross == null ? 0 : cross.predictions, spins));
+                Observables.momentum(out), pressure, 0, seconds, reported, energyPutToRest);
     }
 
     private void loop() {
@@ -369,7 +386,7 @@ final class SlabsRun {
     private void merge(double now) {
         counters.merges++;
         for (int i = 0; i < n; i++) {
-            if (table.invMass(i) > 0 && columns.inEdgeColumn(i)) {
+            if (table.mobile(i) && columns.inEdgeColumn(i)) {
                 table.setEventTime(i, whole.predictFull(i, now));
             }
         }
@@ -397,7 +414,7 @@ final class SlabsRun {
         startWorkers();
         whole.eventLimit = Long.MAX_VALUE;
         for (int i = 0; i < n; i++) {
-            if (table.invMass(i) == 0) {
+            if (!table.mobile(i)) {
                 continue;
             }
             int own = columns.ownerOfDisc(i);
@@ -478,7 +495,8 @@ final class SlabsRun {
         db.queue.remove(b);
         double w = da.motion.collidePair(a, b, now, abs, serialStall);
         counters.crossPairCollisions++;
-        boolean bMobile = table.invMass(b) > 0;
+        // Mobile in the scene (awake or asleep): b may have woken or fallen asleep.
+        boolean bMobile = table.mobile(b);
         serialVirial.add(abs, w);
         da.queue.insert(a, da.predictFull(a, now));
         if (bMobile) {
