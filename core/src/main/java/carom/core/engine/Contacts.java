@@ -58,7 +58,8 @@ public final class Contacts {
             if (sleepers == null) {
                 stallGuard.pegContact(time, aMobile ? idA : idB, aMobile ? idB : idA, dx * toSupport,
                         dy * toSupport, d.vx[mobile], d.vy[mobile], dist);
-            } else if (stallGuard.restsOnDisc(time, dx * toSupport, dy * toSupport, d.vx[mobile], d.vy[mobile], dist)) {
+            } else if (stallGuard.restsOnDisc(time, aMobile ? idA : idB, aMobile ? idB : idA, dx * toSupport,
+                    dy * toSupport, d.vx[mobile], d.vy[mobile], dist)) {
                 sleepers.putToSleep(d, mobile);
                 return 0;
             } else if (sleepers.asleep(d, support)) {
@@ -75,7 +76,7 @@ public final class Contacts {
         if (gravity) {
             if (sleepers == null) {
                 stallGuard.wallContact(time, id, wall, d.vx[i], d.vy[i]);
-            } else if (stallGuard.restsOnWall(time, wall, d.vx[i], d.vy[i])) {
+            } else if (stallGuard.restsOnWall(time, id, wall, d.vx[i], d.vy[i])) {
                 sleepers.putToSleep(d, i);
                 return;
             }

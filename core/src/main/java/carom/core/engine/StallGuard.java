@@ -45,7 +45,7 @@ public final class StallGuard {
         this.limit = Math.max(100_000L, 10L * scene.size());
         this.gravityX = scene.effects().gravityX();
         this.gravityY = scene.effects().gravityY();
-        this.rest = new RestRule(scene.box());
+        this.rest = new RestRule(scene.box(), scene.effects());
     }
 
     /** The partner of an event that is disc a reaching a cell side (engines that schedule crossings). */
@@ -78,19 +78,20 @@ public final class StallGuard {
      * Whether mobile disc {@code disc}, meeting wall {@code wall} (Boundary.LEFT, RIGHT, BOTTOM, TOP)
      * at absolute {@code time} with velocity (vx, vy), comes to rest on it ({@link RestRule}).
      */
-    public boolean restsOnWall(double time, int wall, double vx, double vy) {
+    public boolean restsOnWall(double time, int disc, int wall, double vx, double vy) {
         double nx = wall == 0 ? -1 : (wall == 1 ? 1 : 0);
         double ny = wall == 2 ? -1 : (wall == 3 ? 1 : 0);
-        return rest.rests(time, nx, ny, vx, vy, gravityX, gravityY, Double.POSITIVE_INFINITY);
+        return rest.judge(time, nx, ny, vx, vy, gravityX, gravityY, Double.POSITIVE_INFINITY) == RestRule.RESTS;
     }
 
     /**
-     * Whether a mobile disc with velocity (vx, vy), meeting an immovable disc at absolute {@code time},
-     * comes to rest on it: (nx, ny) is the unit vector from the disc to the support, {@code distance}
-     * their centre distance.
+     * Whether mobile disc {@code disc} with velocity (vx, vy), meeting immovable disc {@code support}
+     * at absolute {@code time}, comes to rest on it ((nx, ny) the unit vector from the disc to the
+     * support, {@code distance} their centre distance).
      */
-    public boolean restsOnDisc(double time, double nx, double ny, double vx, double vy, double distance) {
-        return rest.rests(time, nx, ny, vx, vy, gravityX, gravityY, distance);
+    public boolean restsOnDisc(double time, int disc, int support, double nx, double ny, double vx, double vy,
+                               double distance) {
+        return rest.judge(time, nx, ny, vx, vy, gravityX, gravityY, distance) == RestRule.RESTS;
     }
 
     /**
@@ -98,7 +99,7 @@ public final class StallGuard {
      * {@code disc} with wall {@code wall} in a scene with gravity; stops the run if it comes to rest.
      */
     public void wallContact(double time, int disc, int wall, double vx, double vy) {
-        if (restsOnWall(time, wall, vx, vy)) {
+        if (restsOnWall(time, disc, wall, vx, vy)) {
             throw cameToRest(time, disc, WALL_NAMES[wall] + " wall");
         }
     }
@@ -110,7 +111,7 @@ public final class StallGuard {
      */
     public void pegContact(double time, int disc, int peg, double nx, double ny, double vx, double vy,
                            double distance) {
-        if (restsOnDisc(time, nx, ny, vx, vy, distance)) {
+        if (restsOnDisc(time, disc, peg, nx, ny, vx, vy, distance)) {
             throw cameToRest(time, disc, "fixed disc " + sceneId.applyAsInt(peg));
         }
     }

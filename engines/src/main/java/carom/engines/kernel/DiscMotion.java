@@ -164,7 +164,7 @@ public final class DiscMotion {
             double dist = Math.sqrt(dx * dx + dy * dy);
             double toSupport = aMobile ? 1 / dist : -1 / dist;
             int mt = m * stride;
-            if (guard.restsOnDisc(abs, dx * toSupport, dy * toSupport, rec[mt + VX], rec[mt + VY], dist)) {
+            if (guard.restsOnDisc(abs, m, support, dx * toSupport, dy * toSupport, rec[mt + VX], rec[mt + VY], dist)) {
                 fallAsleep(m, abs);
                 return 0;
             }
@@ -196,7 +196,7 @@ public final class DiscMotion {
         advance(i, now);
         double e = restitution.wall(i, abs);
         int at = i * stride;
-        if (gravity && guard.restsOnWall(abs, wall, rec[at + VX], rec[at + VY])) {
+        if (gravity && guard.restsOnWall(abs, i, wall, rec[at + VX], rec[at + VY])) {
             fallAsleep(i, abs);
             return;
         }
