@@ -48,6 +48,21 @@ public final class Sleepers {
         }
     }
 
+    /**
+     * The discs of {@code d} as they are, each sleeping disc as a mobile one at rest at {@code time} (a
+     * copy, for the energy audit's test mode: its potential energy counts).
+     */
+    public Discs awakeCopy(Discs d, double time) {
+        Discs copy = d.copy();
+        for (int i = 0; i < d.n; i++) {
+            if (asleep(d, i)) {
+                copy.invMass[i] = awakeInvMass[i];
+                copy.t[i] = time;
+            }
+        }
+        return copy;
+    }
+
     public long sleeps() {
         return sleeps;
     }

@@ -81,7 +81,7 @@ public final class StallGuard {
     public boolean restsOnWall(double time, int disc, int wall, double vx, double vy) {
         double nx = wall == 0 ? -1 : (wall == 1 ? 1 : 0);
         double ny = wall == 2 ? -1 : (wall == 3 ? 1 : 0);
-        return rest.judge(time, nx, ny, vx, vy, gravityX, gravityY, Double.POSITIVE_INFINITY) == RestRule.RESTS;
+        return rest.rests(time, nx, ny, vx, vy, gravityX, gravityY, Double.POSITIVE_INFINITY, false);
     }
 
     /**
@@ -91,15 +91,18 @@ public final class StallGuard {
      */
     public boolean restsOnDisc(double time, int disc, int support, double nx, double ny, double vx, double vy,
                                double distance) {
-        return rest.judge(time, nx, ny, vx, vy, gravityX, gravityY, distance) == RestRule.RESTS;
+        return rest.rests(time, nx, ny, vx, vy, gravityX, gravityY, distance, false);
     }
 
     /**
      * For engines that do not model resting contact: called before every collision of mobile disc
-     * {@code disc} with wall {@code wall} in a scene with gravity; stops the run if it comes to rest.
+     * {@code disc} with wall {@code wall} in a scene with gravity; stops the run if its bounce is below
+     * resolution ({@link RestRule}; the TC model carries it through bounces shorter than tc).
      */
     public void wallContact(double time, int disc, int wall, double vx, double vy) {
-        if (restsOnWall(time, disc, wall, vx, vy)) {
+        double nx = wall == 0 ? -1 : (wall == 1 ? 1 : 0);
+        double ny = wall == 2 ? -1 : (wall == 3 ? 1 : 0);
+        if (rest.rests(time, nx, ny, vx, vy, gravityX, gravityY, Double.POSITIVE_INFINITY, true)) {
             throw cameToRest(time, disc, WALL_NAMES[wall] + " wall");
         }
     }
@@ -107,11 +110,12 @@ public final class StallGuard {
     /**
      * For engines that do not model resting contact: called before every collision of mobile disc
      * {@code disc} with fixed disc {@code peg} in a scene with gravity ((nx, ny) the unit vector from
-     * the disc to the peg, {@code distance} their centre distance); stops the run if it comes to rest.
+     * the disc to the peg, {@code distance} their centre distance); stops the run if its bounce is below
+     * resolution.
      */
     public void pegContact(double time, int disc, int peg, double nx, double ny, double vx, double vy,
                            double distance) {
-        if (restsOnDisc(time, disc, peg, nx, ny, vx, vy, distance)) {
+        if (rest.rests(time, nx, ny, vx, vy, gravityX, gravityY, distance, true)) {
             throw cameToRest(time, disc, "fixed disc " + sceneId.applyAsInt(peg));
         }
     }

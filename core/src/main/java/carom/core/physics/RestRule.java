@@ -41,10 +41,6 @@ public final class RestRule {
     /** Relative resolution of positions and times: 4096 units in the last place, 2^-40 (about 9.1e-13). */
     public static final double RESOLUTION = 0x1p-40;
 
-    /** Verdicts of {@link #judge}. */
-    public static final int BOUNCES = 0;
-    public static final int RESTS = 1;
-
     /** Bounce height below which a bounce is not resolved: {@link #RESOLUTION} times the box's larger side. */
     private final double restHeight;
     /** tc when the TC model is in use, else 0. */
@@ -56,32 +52,34 @@ public final class RestRule {
     }
 
     /**
-     * What a disc with velocity (vx, vy) meeting a support at absolute time {@code time} does:
-     * {@link #BOUNCES} or {@link #RESTS}. (nx, ny) is the unit normal from the disc
-     * into the support, (gx, gy) gravity, {@code curvature} the support's radius of curvature (the
-     * centre distance for a disc, +Infinity for a wall).
+     * Whether a disc with velocity (vx, vy) meeting a support at absolute time {@code time} rests on
+     * it. (nx, ny) is the unit normal from the disc into the support, (gx, gy) gravity,
+     * {@code curvature} the support's radius of curvature (the centre distance for a disc, +Infinity
+     * for a wall). With {@code belowResolutionOnly} only a bounce below resolution counts (for engines
+     * that stop the run at rest instead of putting the disc to sleep: under the TC model they run on
+     * through bounces shorter than tc).
      */
-    public int judge(double time, double nx, double ny, double vx, double vy, double gx, double gy,
-                     double curvature) {
+    public boolean rests(double time, double nx, double ny, double vx, double vy, double gx, double gy,
+                         double curvature, boolean belowResolutionOnly) {
         double pressing = gx * nx + gy * ny;
         if (pressing <= 0) {
-            return BOUNCES;
+            return false;
         }
         double normal = vx * nx + vy * ny;
         double u2 = normal * normal;
         double w2 = Math.max(0, vx * vx + vy * vy - u2);
         if (w2 > pressing * curvature) {
             // The support curves away faster than gravity holds the disc on it: a graze.
-            return BOUNCES;
+            return false;
         }
         double resolution = Math.max(2 * pressing * restHeight, square(0.5 * pressing * RESOLUTION * time));
-        double rest = Math.max(resolution, square(0.5 * pressing * tc));
-        if (u2 < rest && w2 < rest) {
-            return RESTS;
-        }
         // A bounce below resolution ends the disc's motion on the support even while it slides:
         // frictionless sliding contact is not modelled, and the slide's energy is put to rest too.
-        return u2 < resolution ? RESTS : BOUNCES;
+        if (u2 < resolution) {
+            return true;
+        }
+        double rest = square(0.5 * pressing * tc);
+        return !belowResolutionOnly && u2 < rest && w2 < rest;
     }
 
     private static double square(double x) {

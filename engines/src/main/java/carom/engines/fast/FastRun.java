@@ -200,7 +200,7 @@ final class FastRun {
         pairCollisions++;
         virial.add(abs, w);
         if (audit != null) {
-            audit.check(motion.snapshot(), flight, now, abs);
+            audit.check(motion.snapshot(now), flight, now, abs);
         }
         queue.insert(a, predictFull(a, now));
         // Mobile in the scene (awake or asleep): b may have woken or fallen asleep.
@@ -215,7 +215,7 @@ final class FastRun {
         motion.collideWall(i, wall, now, abs, stallGuard);
         wallCollisions++;
         if (audit != null) {
-            audit.check(motion.snapshot(), flight, now, abs);
+            audit.check(motion.snapshot(now), flight, now, abs);
         }
         queue.insert(i, predictFull(i, now));
     }

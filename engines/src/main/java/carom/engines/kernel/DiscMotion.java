@@ -323,12 +323,19 @@ public final class DiscMotion {
         }
     }
 
-    /** Every disc as {@link Discs} (the energy audit's test mode only: O(N) per call). */
-    public Discs snapshot() {
+    /**
+     * Every disc as {@link Discs} (the energy audit's test mode only: O(N) per call), a sleeping disc
+     * as a mobile one at rest at local {@code now}, so that its potential energy counts.
+     */
+    public Discs snapshot(double now) {
         int n = rec.length / stride;
         Discs all = new Discs(n);
         for (int i = 0; i < n; i++) {
             load(all, i, i);
+            if (awakeInvMass != null && all.invMass[i] == 0 && awakeInvMass[i] > 0) {
+                all.invMass[i] = awakeInvMass[i];
+                all.t[i] = now;
+            }
         }
         return all;
     }

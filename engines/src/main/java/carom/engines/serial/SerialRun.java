@@ -192,7 +192,7 @@ final class SerialRun {
                 collideWall(epoch, now, a, -1 - b);
             }
             if (audit != null) {
-                audit.check(d, flight, now, epoch + now);
+                audit.check(sleepers == null ? d : sleepers.awakeCopy(d, now), flight, now, epoch + now);
             }
         }
     }

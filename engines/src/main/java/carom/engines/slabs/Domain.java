@@ -318,7 +318,7 @@ final class Domain {
             log.setVirial(w);
         }
         if (audit != null && !logging) {
-            audit.check(motion.snapshot(), table.flight, now, abs);
+            audit.check(motion.snapshot(now), table.flight, now, abs);
         }
         queue.insert(a, predictFull(a, now));
         // Mobile in the scene (awake or asleep): b may have woken or fallen asleep.
@@ -336,7 +336,7 @@ final class Domain {
         motion.collideWall(i, wall, now, abs, stallGuard);
         wallCollisions++;
         if (audit != null && !logging) {
-            audit.check(motion.snapshot(), table.flight, now, abs);
+            audit.check(motion.snapshot(now), table.flight, now, abs);
         }
         queue.insert(i, predictFull(i, now));
     }

@@ -345,7 +345,7 @@ final class SlabsRun {
             }
             now = tStar;
             if (audit != null) {
-                audit.check(domains[0].motion.snapshot(), table.flight, now, clock.epoch + now);
+                audit.check(domains[0].motion.snapshot(now), table.flight, now, clock.epoch + now);
             }
             counters.serialNanos += System.nanoTime() - t1;
             counters.serialCpuNanos += SlabsCounters.cpuNanos() - c1;
