@@ -65,8 +65,8 @@ public final class DiscTable {
     public final int cols;
     public final int rows;
     /**
-     * Re-predict the whole neighbourhood after a crossing (gravity, where fixed or sleeping discs may
-     * be near; small grids).
+     * Re-predict the whole neighbourhood after a crossing (gravity with fixed discs; small grids; and,
+     * once a disc has fallen asleep, under gravity: {@link CellPredictor#crossAndPredict}).
      */
     public final boolean fullOnCross;
 
@@ -159,7 +159,7 @@ public final class DiscTable {
         this.recheckY = periodic && rows < 4 ? 0.5 * (0.5 * height - maxDiameter) : 0;
         this.straight = flight instanceof Flight.Straight;
         this.straightImages = straight && recheckX == 0 && recheckY == 0;
-        this.fullOnCross = acceleration > 0 || recheckX > 0 || recheckY > 0;
+        this.fullOnCross = (acceleration > 0 && scene.hasFixedDiscs()) || recheckX > 0 || recheckY > 0;
         this.cellHead = new int[cols * rows];
         this.around = new int[] {-cols - 1, -cols, -cols + 1, -1, 0, 1, cols - 1, cols, cols + 1};
         this.ahead = new int[5][];

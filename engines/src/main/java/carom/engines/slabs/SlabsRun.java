@@ -91,6 +91,8 @@ final class SlabsRun {
      * one slab, that slab itself); and the slabs, then it, for the counters.
      */
     private final Domain whole;
+    /** Whether every predictor has been told that discs sleep ({@link #noteSleepers}). */
+    private boolean sleepersNoted;
     private final Domain[] counted;
     /** When windows do not pay and the run merges ({@link MergePolicy}); whether it is merged now. */
     private final MergePolicy policy;
@@ -162,6 +164,26 @@ final class SlabsRun {
         this.verifier = many ? new WindowVerifier(table, columns, domains, marks) : null;
         this.samples = SampleSchedule.of(scene, options);
         counters.setupNanos = System.nanoTime() - constructing;
+    }
+
+    /**
+     * Once a disc has fallen asleep in any domain (or in a serial phase), every domain's predictor
+     * re-predicts in full after a crossing ({@link carom.engines.kernel.CellPredictor#sleepersMayBeNear});
+     * told here, between windows and phases, so that the run does not depend on thread timing.
+     */
+    private void noteSleepers() {
+        if (sleepersNoted) {
+            return;
+        }
+        for (Domain d : counted) {
+            if (d.motion.sleeps() > 0) {
+                for (Domain e : counted) {
+                    e.pred.sleepersMayBeNear();
+                }
+                sleepersNoted = true;
+                return;
+            }
+        }
     }
 
     private Domain ownerOf(int i) {
@@ -254,6 +276,7 @@ final class SlabsRun {
                 resync(now);
                 now = 0;
             }
+            noteSleepers();
             if (merged) {
                 // Up to the next resync, sample or the end, or until the phase's budget of events is spent.
                 double end = Math.min(Math.min(resyncAt, sampleLocal), clock.untilLocal);
