@@ -15,10 +15,7 @@ import carom.core.observe.VirialAccumulator;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
 import carom.engines.kernel.DiscTable;
-import carom.core.engine.Counter;
 import java.util.Arrays;
-import java.util.HashMap;
-import java.util.Map;
 
 /**
  * One run of the slabs engine: the box cut into domains ({@link SlabColumns}), each a thread running
@@ -244,24 +241,12 @@ final class SlabsRun {
             virial.addAll(d.virial);
         }
         Pressure pressure = VirialAccumulator.pressureOf(virial, scene, out, energyStart, energyEnd);
-        Map<String, Long> reported = counters.toMap(counted, domainCount, cross == null ? 0 : cross.predictions, spins);
-        double energyPutToRest = 0;
-        if (table.flight.maxAcceleration() > 0) {
-            long sleeps = 0;
-            long wakes = 0;
-            for (Domain d : counted) {
-                sleeps += d.motion.sleeps();
-                wakes += d.motion.wakes();
-                energyPutToRest += d.motion.energyPutToRest();
-            }
-            Map<String, Long> withRest = new HashMap<>(reported);
-            withRest.put(Counter.SLEEPS.key, sleeps);
-            withRest.put(Counter.WAKES.key, wakes);
-            reported = Map.copyOf(withRest);
-        }
         return new RunResult("slabs", true, out, until, counters.pairCollisions(counted),
                 counters.wallCollisions(counted), counters.events(counted), energyStart, energyEnd, momentumStart,
-                Observables.momentum(out), pressure, 0, seconds, reported, energyPutToRest);
+                Observables.momentum(out), pressure, 0, seconds,
+                counters.toMap(counted, domainCount, cross == null ? 0 : cross.predictions, spins,
+                        table.flight.maxAcceleration() > 0),
+                SlabsCounters.energyPutToRest(counted));
     }
 
     private void loop() {
