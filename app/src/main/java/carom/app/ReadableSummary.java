@@ -1,6 +1,7 @@
 package carom.app;
 
 import carom.core.Quoted;
+import carom.core.engine.Counter;
 import carom.core.engine.RunResult;
 import carom.core.engine.Energy;
 import carom.core.observe.Pressure;
@@ -45,6 +46,11 @@ final class ReadableSummary {
                 : String.format(Locale.ROOT, "%.3e", energy.drift())
                 + (r.has(carom.core.engine.Counter.GROWTH_STAGES)
                 ? "  (growth: collisions add energy, the thermostat at --every takes it out)" : ""));
+        if (r.has(Counter.SLEEPS)) {
+            // Resting contact: kinetic energy taken out by discs falling asleep (part of the drift).
+            line(out, "energy put to rest", String.format(Locale.ROOT, "%s  (%d discs fell asleep, %d woke)",
+                    r.energyPutToRest(), r.counter(Counter.SLEEPS, 0), r.counter(Counter.WAKES, 0)));
+        }
         line(out, "momentum initial", vector(r.momentumStart()));
         line(out, "momentum final", vector(r.momentumEnd()));
         Pressure p = r.pressure();

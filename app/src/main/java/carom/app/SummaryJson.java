@@ -1,5 +1,6 @@
 package carom.app;
 
+import carom.core.engine.Counter;
 import carom.core.engine.RunResult;
 import carom.core.engine.Energy;
 import carom.core.observe.Pressure;
@@ -48,6 +49,10 @@ final class SummaryJson {
         ObjectNode energy = root.putObject("energy");
         number(energy, "initial", total.initial());
         number(energy, "final", total.end());
+        if (r.has(Counter.SLEEPS)) {
+            // Resting contact: kinetic energy taken out by discs falling asleep (part of the drift).
+            number(energy, "putToRest", r.energyPutToRest());
+        }
         number(root, "energyDrift", total.drift());
 
         ObjectNode momentum = root.putObject("momentum");

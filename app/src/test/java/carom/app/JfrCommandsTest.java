@@ -79,7 +79,8 @@ class JfrCommandsTest {
                   "effects": { "gravity": [0, -9.81], "wallRestitution": 0.5 },
                   "until": 10 }
                 """);
-        Cli r = Cli.run("simulate", scene.toString(), "--jfr", dir.resolve("run.jfr").toString());
+        // A relaxed engine does not put a disc at rest to sleep: the bouncing ball stops its run.
+        Cli r = Cli.run("simulate", scene.toString(), "--engine", "stripes", "--jfr", dir.resolve("run.jfr").toString());
         assertRejected(r, "error: " + scene + ": disc 0");
         assertThat(filesIn(dir)).containsExactly("zeno.json");
     }

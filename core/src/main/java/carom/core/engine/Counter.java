@@ -23,6 +23,10 @@ public enum Counter {
     GROWTH_STAGES("growthStages", "stages of a growth run: cell grids rebuilt as the discs grew, and at samples"),
     RESCALINGS("rescalings", "thermostat rescalings of the kinetic energy (growth runs)"),
 
+    // Exact engines under gravity: resting contact.
+    SLEEPS("sleeps", "discs put to sleep at rest on a wall, a fixed disc or a sleeping disc (under gravity)"),
+    WAKES("wakes", "sleeping discs woken by a collision with a disc that is awake"),
+
     // Step-grid engines (serial, stripes, the actor engines).
     STEPS("steps", "time steps of the grid"),
     EARLY_STEP_ENDS("earlyStepEnds", "steps ended early because a disc became faster than the step allows (serial)"),

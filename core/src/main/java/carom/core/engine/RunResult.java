@@ -24,13 +24,27 @@ import java.util.Map;
  * @param causalityViolations events processed out of causal order (0 for exact engines)
  * @param wallSeconds        wall-clock seconds of the run itself, without reading or writing files
  * @param counters           engine-specific counters (steps, predictions, messages by type, ...)
+ * @param energyPutToRest    kinetic energy the discs had when they fell asleep (resting contact under
+ *                           gravity, {@link carom.core.physics.RestRule}), summed over the run; 0 if
+ *                           none did
  */
 public record RunResult(String engine, boolean exact, Discs finalState, double until,
                         long pairCollisions, long wallCollisions, long events,
                         double kineticEnergyStart, double kineticEnergyEnd,
                         double[] momentumStart, double[] momentumEnd,
                         Pressure pressure, long causalityViolations, double wallSeconds,
-                        Map<String, Long> counters) {
+                        Map<String, Long> counters, double energyPutToRest) {
+    /** A run in which no disc fell asleep. */
+    public RunResult(String engine, boolean exact, Discs finalState, double until,
+                     long pairCollisions, long wallCollisions, long events,
+                     double kineticEnergyStart, double kineticEnergyEnd,
+                     double[] momentumStart, double[] momentumEnd,
+                     Pressure pressure, long causalityViolations, double wallSeconds,
+                     Map<String, Long> counters) {
+        this(engine, exact, finalState, until, pairCollisions, wallCollisions, events, kineticEnergyStart,
+                kineticEnergyEnd, momentumStart, momentumEnd, pressure, causalityViolations, wallSeconds, counters, 0);
+    }
+
     public long collisions() {
         return pairCollisions + wallCollisions;
     }
@@ -46,7 +60,7 @@ public record RunResult(String engine, boolean exact, Discs finalState, double u
         more.put(Counter.COLLISIONS_BEFORE_RESUME.key, collisionsBefore);
         return new RunResult(engine, exact, finalState, until, pairCollisions, wallCollisions, events,
                 kineticEnergyStart, kineticEnergyEnd, momentumStart, momentumEnd, pressure, causalityViolations,
-                wallSeconds, Map.copyOf(more));
+                wallSeconds, Map.copyOf(more), energyPutToRest);
     }
 
     /** Causality violations per million collisions (0 for exact engines). */

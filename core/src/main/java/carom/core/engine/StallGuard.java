@@ -1,19 +1,22 @@
 package carom.core.engine;
 
+import carom.core.physics.RestRule;
+import carom.core.scene.Effects;
 import carom.core.scene.Scene;
 import java.util.function.IntUnaryOperator;
 
 /**
- * Stops a run that would otherwise stall instead of hanging, with the discs named. One per worker
- * (single writer).
+ * Resting contact and runs that would stall, for one worker (single writer).
  *
  * <ul>
- *   <li>Elastic hard discs have finitely many collisions at one instant; endlessly many means resting
- *       contact, which is not modelled ({@link #event}).</li>
- *   <li>Under gravity a disc that bounces on a wall or fixed disc gravity presses it into, so low that
- *       the bounce would rise less than rounding (1e-12 of the box), is resting or sliding on it
- *       ({@link #wallContact}, {@link #pegContact}): a dissipative disc without the TC model ends up
- *       there, and so does one stopped dead on a peg, whatever the restitution.</li>
+ *   <li>Under gravity, a disc that meets a support (a wall, a fixed disc, a sleeping disc) with a
+ *       bounce too small to resolve is at rest on it ({@link RestRule}). The exact engines ask
+ *       {@link #restsOnWall} and {@link #restsOnDisc} and put such a disc to sleep; an engine that
+ *       does not model resting contact calls {@link #wallContact} and {@link #pegContact}, which stop
+ *       the run with the disc named instead.</li>
+ *   <li>Hard discs have finitely many collisions at one instant; endlessly many means contacts that
+ *       rounding cannot resolve, or the inelastic collapse of discs with restitution below 1 without
+ *       the TC model, and {@link #event} stops the run instead of hanging.</li>
  * </ul>
  */
 public final class StallGuard {
@@ -24,7 +27,7 @@ public final class StallGuard {
     private static final String[] WALL_NAMES = {"left", "right", "bottom", "top"};
     private final double gravityX;
     private final double gravityY;
-    private final double restHeight;
+    private final RestRule rest;
     private double lastTime = Double.NaN;
     private long atLastTime;
 
@@ -42,7 +45,7 @@ public final class StallGuard {
         this.limit = Math.max(100_000L, 10L * scene.size());
         this.gravityX = scene.effects().gravityX();
         this.gravityY = scene.effects().gravityY();
-        this.restHeight = 1e-12 * Math.max(scene.box().width(), scene.box().height());
+        this.rest = new RestRule(scene.box(), scene.effects());
     }
 
     /** The partner of an event that is disc a reaching a cell side (engines that schedule crossings). */
@@ -61,56 +64,68 @@ public final class StallGuard {
         if (++atLastTime > limit) {
             String with = b >= 0 ? "disc " + sceneId.applyAsInt(b) : (b == CELL_SIDE ? "a cell side" : "wall " + (-1 - b));
             int id = sceneId.applyAsInt(a);
+            Effects e = scene.effects();
+            boolean collapse = (e.dissipativePairs() || e.dissipativeWalls()) && !(e.tc() > 0);
             throw new SimulationStuckException(String.format(
-                    "more than %d collisions at the single instant t = %s, the last between disc %d (%s) and %s: "
-                            + "resting contact is not modelled; separate the discs or give them velocities",
-                    limit, time, id, scene.originOf(id), with));
+                    "more than %d collisions at the single instant t = %s, the last between disc %d (%s) and %s: %s",
+                    limit, time, id, scene.originOf(id), with, collapse
+                            ? "discs with restitution below 1 collapse inelastically; set effects.tc > 0 (the TC model)"
+                            : "contacts that rounding cannot resolve; separate the discs or give them velocities"));
         }
     }
 
     /**
-     * Called before every collision of mobile disc {@code disc} with wall {@code wall} (Boundary.LEFT,
-     * RIGHT, BOTTOM, TOP) in a scene with gravity, with its velocity. Elastic too: a disc sliding
-     * along a floor it touches makes endless rounding-level bounces whatever the restitution.
+     * Whether mobile disc {@code disc}, meeting wall {@code wall} (Boundary.LEFT, RIGHT, BOTTOM, TOP)
+     * at absolute {@code time} with velocity (vx, vy), comes to rest on it ({@link RestRule}).
+     */
+    public boolean restsOnWall(double time, int disc, int wall, double vx, double vy) {
+        double nx = wall == 0 ? -1 : (wall == 1 ? 1 : 0);
+        double ny = wall == 2 ? -1 : (wall == 3 ? 1 : 0);
+        return rest.rests(time, nx, ny, vx, vy, gravityX, gravityY, Double.POSITIVE_INFINITY, false);
+    }
+
+    /**
+     * Whether mobile disc {@code disc} with velocity (vx, vy), meeting immovable disc {@code support}
+     * at absolute {@code time}, comes to rest on it ((nx, ny) the unit vector from the disc to the
+     * support, {@code distance} their centre distance).
+     */
+    public boolean restsOnDisc(double time, int disc, int support, double nx, double ny, double vx, double vy,
+                               double distance) {
+        return rest.rests(time, nx, ny, vx, vy, gravityX, gravityY, distance, false);
+    }
+
+    /**
+     * For engines that do not model resting contact: called before every collision of mobile disc
+     * {@code disc} with wall {@code wall} in a scene with gravity; stops the run if its bounce is below
+     * resolution ({@link RestRule}; the TC model carries it through bounces shorter than tc).
      */
     public void wallContact(double time, int disc, int wall, double vx, double vy) {
         double nx = wall == 0 ? -1 : (wall == 1 ? 1 : 0);
         double ny = wall == 2 ? -1 : (wall == 3 ? 1 : 0);
-        check(time, disc, nx, ny, vx, vy, Double.POSITIVE_INFINITY, wall, -1);
+        if (rest.rests(time, nx, ny, vx, vy, gravityX, gravityY, Double.POSITIVE_INFINITY, true)) {
+            throw cameToRest(time, disc, WALL_NAMES[wall] + " wall");
+        }
     }
 
     /**
-     * Called before every collision of mobile disc {@code disc} with fixed disc {@code peg} in a scene
-     * with gravity: (nx, ny) is the unit vector from the disc to the peg, {@code distance} their
-     * centre distance.
+     * For engines that do not model resting contact: called before every collision of mobile disc
+     * {@code disc} with fixed disc {@code peg} in a scene with gravity ((nx, ny) the unit vector from
+     * the disc to the peg, {@code distance} their centre distance); stops the run if its bounce is below
+     * resolution.
      */
     public void pegContact(double time, int disc, int peg, double nx, double ny, double vx, double vy,
-                                      double distance) {
-        check(time, disc, nx, ny, vx, vy, distance, -1, peg);
+                           double distance) {
+        if (rest.rests(time, nx, ny, vx, vy, gravityX, gravityY, distance, true)) {
+            throw cameToRest(time, disc, "fixed disc " + sceneId.applyAsInt(peg));
+        }
     }
 
-    /**
-     * At rest against a surface means: gravity presses the disc into it, the bounce would rise less
-     * than rounding, and the disc is slow enough to stay on the surface (tangential speed squared at
-     * most the pressing acceleration times the curvature radius; any speed on a flat wall). A disc
-     * that merely grazes a peg's side, or slides past it fast, is not resting.
-     */
-    private void check(double time, int disc, double nx, double ny, double vx, double vy, double curvature,
-                       int wall, int peg) {
-        double pressing = gravityX * nx + gravityY * ny;
-        if (pressing <= 0) {
-            return;
-        }
-        double normal = vx * nx + vy * ny;
-        double tangential2 = Math.max(0, vx * vx + vy * vy - normal * normal);
-        if (normal * normal < 2 * pressing * restHeight && tangential2 <= pressing * curvature) {
-            int id = sceneId.applyAsInt(disc);
-            // Named only here: no string is built per contact.
-            String against = wall >= 0 ? WALL_NAMES[wall] + " wall" : "fixed disc " + sceneId.applyAsInt(peg);
-            throw new SimulationStuckException(String.format(
-                    "disc %d (%s) came to rest against the %s at t = %s: resting and sliding contact are not "
-                            + "modelled (without the TC model, dissipative discs end up there: set effects.tc > 0)",
-                    id, scene.originOf(id), against, time));
-        }
+    private SimulationStuckException cameToRest(double time, int disc, String against) {
+        // Named only here: no string is built per contact.
+        int id = sceneId.applyAsInt(disc);
+        return new SimulationStuckException(String.format(
+                "disc %d (%s) came to rest against the %s at t = %s: this engine does not model resting "
+                        + "contact; the exact engines (fast, serial, slabs) put resting discs to sleep",
+                id, scene.originOf(id), against, time));
     }
 }

@@ -232,6 +232,10 @@ public abstract sealed class Flight permits Flight.Straight, Flight.Parabolic {
 
         @Override
         public double timeToWall(Discs d, int i, int wall, double now, Boundary.Walls walls) {
+            if (d.invMass[i] == 0) {
+                // Fixed, or asleep on the floor: gravity does not move it into a wall.
+                return Double.POSITIVE_INFINITY;
+            }
             double x = x(d, i, now);
             double y = y(d, i, now);
             double vx = vx(d, i, now);

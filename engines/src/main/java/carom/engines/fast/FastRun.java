@@ -145,6 +145,7 @@ final class FastRun {
         virial.restore(in.getDoubles(), savedUntil, in.getDouble());
         TableState.restore(table, in);
         queue.restore(in);
+        motion.restoreRestCounts(in);
         in.end();
         if (checkpoints != null) {
             checkpointIndex = Checkpoints.nextIndexAfter(time, checkpoints.every());
@@ -162,6 +163,7 @@ final class FastRun {
                 .putDoubles(virial.blockSums()).putDouble(virial.total());
         TableState.save(table, out);
         queue.save(out);
+        motion.saveRestCounts(out);
         checkpoints.save(time, out.bytes());
     }
 
@@ -193,9 +195,13 @@ final class FastRun {
         counters.put(Counter.RESYNCS.key, resyncs);
         counters.put(Counter.BYTES.key, bytes());
         counters.put(Counter.BYTES_PER_DISC.key, n == 0 ? 0 : Math.round((double) bytes() / n));
+        if (flight.maxAcceleration() > 0) {
+            counters.put(Counter.SLEEPS.key, motion.sleeps());
+            counters.put(Counter.WAKES.key, motion.wakes());
+        }
         return new RunResult("fast", true, out, until, pairCollisions, wallCollisions, events,
                 energyStart, energyEnd, momentumStart, Observables.momentum(out), pressure, 0, seconds,
-                Map.copyOf(counters));
+                Map.copyOf(counters), motion.energyPutToRest());
     }
 
     /** Heap held by this run's per-disc and per-cell arrays, in bytes. */
@@ -283,10 +289,11 @@ final class FastRun {
         pairCollisions++;
         virial.add(abs, w);
         if (audit != null) {
-            audit.check(motion.snapshot(), flight, now, abs);
+            audit.check(motion.snapshot(now), flight, now, abs);
         }
         queue.insert(a, predictFull(a, now));
-        if (invMass(b) > 0) {
+        // Mobile in the scene (awake or asleep): b may have woken or fallen asleep.
+        if (table.mobile(b)) {
             queue.remove(b);
             queue.insert(b, predictFull(b, now));
         }
@@ -297,7 +304,7 @@ final class FastRun {
         motion.collideWall(i, wall, now, abs, stallGuard);
         wallCollisions++;
         if (audit != null) {
-            audit.check(motion.snapshot(), flight, now, abs);
+            audit.check(motion.snapshot(now), flight, now, abs);
         }
         queue.insert(i, predictFull(i, now));
     }

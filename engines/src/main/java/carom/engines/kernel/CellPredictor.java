@@ -66,6 +66,12 @@ public final class CellPredictor {
     private final double recheckX;
     private final double recheckY;
     private final boolean fullOnCross;
+    /**
+     * Set once a disc may have fallen asleep where this predictor looks ({@link #sleepersMayBeNear}):
+     * a sleeping disc is a fixed one, so crossings re-predict in full from then on. Not from the start,
+     * so that a run in which nothing sleeps keeps its bits.
+     */
+    private boolean sleepersSeen;
     private final Flight flight;
     private final Boundary boundary;
     private final Boundary.Walls walls;
@@ -132,6 +138,15 @@ public final class CellPredictor {
         this.edgeCol = edgeCol;
     }
 
+    /**
+     * Discs put to sleep by another thread's {@link DiscMotion} may be among this predictor's discs
+     * (called between windows, so that every run is the same whatever the threads); this predictor's
+     * own motion's sleeps count without it.
+     */
+    public void sleepersMayBeNear() {
+        sleepersSeen = true;
+    }
+
     /** Predictions made so far (full or after a crossing). */
     public long predictions() {
         return predictions;
@@ -158,7 +173,7 @@ public final class CellPredictor {
     public double crossAndPredict(int i, double now, byte side) {
         motion.advance(i, now);
         int packed = motion.moveCell(i, side);
-        return fullOnCross ? predictFull(i, now)
+        return fullOnCross || sleepersSeen || motion.sleeps() > 0 ? predictFull(i, now)
                 : predictAfterCrossing(i, now, side, packed & AXIS_MASK, packed >>> AXIS_BITS);
     }
 

@@ -56,6 +56,12 @@ public final class DiscMotion {
     private final Restitution restitution;
     /** Under gravity every contact with something immovable is checked for rest (StallGuard). */
     private final boolean gravity;
+    /** Resting contact: each disc's inverse mass while awake (null without gravity). */
+    private final double[] awakeInvMass;
+    /** Discs this thread put to sleep and woke, and the kinetic energy put to rest by falling asleep. */
+    private long sleeps;
+    private long wakes;
+    private double energyPutToRest;
     /** Scene id of each internal disc: where the final state puts it. */
     private final int[] sceneIds;
 
@@ -89,6 +95,7 @@ public final class DiscMotion {
         this.boundary = table.boundary;
         this.restitution = table.restitution;
         this.gravity = table.acceleration > 0;
+        this.awakeInvMass = table.awakeInvMass;
         this.sceneIds = table.sceneIds();
         this.growing = table.growing;
     }
@@ -156,8 +163,11 @@ public final class DiscMotion {
 
     /**
      * Collides discs a and b at local {@code now} (absolute {@code abs}): both advanced, their
-     * velocities changed, restitution told, collision counters bumped (b's only if mobile); under
-     * gravity a contact with an immovable b goes to {@code guard}. Returns the collision's virial.
+     * velocities changed, restitution told, collision counters bumped (of each disc whose trajectory
+     * changed). Under gravity, a contact of a mobile disc with an immovable one (fixed, or asleep) is
+     * resting contact when {@code guard} says so: the mobile disc falls asleep instead of colliding;
+     * otherwise a sleeping partner wakes and the two collide. Either disc may be the one whose event
+     * this is (a sleeping disc predicts its contacts too). Returns the collision's virial.
      */
     public double collidePair(int a, int b, double now, double abs, StallGuard guard) {
         advance(a, now);
@@ -167,18 +177,33 @@ public final class DiscMotion {
         double dx = boundary.separationX(rec[bt + X] - rec[at + X]);
         double dy = boundary.separationY(rec[bt + Y] - rec[at + Y]);
         double e = restitution.pair(a, b, abs);
+        boolean aMobile = invMass(a) > 0;
         boolean bMobile = invMass(b) > 0;
-        if (gravity && !bMobile) {
+        if (gravity && aMobile != bMobile) {
+            int m = aMobile ? a : b;
+            int support = aMobile ? b : a;
             double dist = Math.sqrt(dx * dx + dy * dy);
-            guard.pegContact(abs, a, b, dx / dist, dy / dist, rec[at + VX], rec[at + VY], dist);
+            double toSupport = aMobile ? 1 / dist : -1 / dist;
+            int mt = m * stride;
+            if (guard.restsOnDisc(abs, m, support, dx * toSupport, dy * toSupport, rec[mt + VX], rec[mt + VY], dist)) {
+                fallAsleep(m, abs);
+                return 0;
+            }
+            if (awakeInvMass[support] > 0) {
+                wake(support);
+                aMobile = true;
+                bMobile = true;
+            }
         }
         if (growing) {
             return collideGrowing(a, b, at, bt, dx, dy, e, abs, bMobile);
         }
         // On the records, not through the pair window: no copies in and out at every collision.
         double w = PairLaw.collide(rec, at + VX, bt + VX, rec, at + VY, bt + VY, invMass(a), invMass(b), dx, dy, e);
-        restitution.collided(a, abs);
-        ir[a * IS + COUNT]++;
+        if (aMobile) {
+            restitution.collided(a, abs);
+            ir[a * IS + COUNT]++;
+        }
         if (bMobile) {
             restitution.collided(b, abs);
             ir[b * IS + COUNT]++;
@@ -211,14 +236,14 @@ public final class DiscMotion {
 
     /**
      * Bounces disc i off wall {@code wall} at local {@code now} (absolute {@code abs}): advanced,
-     * reflected, restitution told, its collision counter bumped; under gravity the contact goes to
-     * {@code guard}.
+     * reflected, restitution told, its collision counter bumped; under gravity it falls asleep instead
+     * when {@code guard} says it rests on the wall.
      */
     public void collideWall(int i, int wall, double now, double abs, StallGuard guard) {
         advance(i, now);
         double e = restitution.wall(i, abs);
+        int at = i * stride;
         if (growing) {
-            int at = i * stride;
             double im = invMass(i);
             double before = kinetic(at, im);
             int axis = wall == Boundary.LEFT || wall == Boundary.RIGHT ? VX : VY;
@@ -229,14 +254,70 @@ public final class DiscMotion {
             ir[i * IS + COUNT]++;
             return;
         }
-        load(i, 0);
-        if (gravity) {
-            guard.wallContact(abs, i, wall, pair.vx[0], pair.vy[0]);
+        if (gravity && guard.restsOnWall(abs, i, wall, rec[at + VX], rec[at + VY])) {
+            fallAsleep(i, abs);
+            return;
         }
+        load(i, 0);
         boundary.reflect(pair, 0, wall, e);
         store(i, 0);
         restitution.collided(i, abs);
         ir[i * IS + COUNT]++;
+    }
+
+    /**
+     * Mobile disc i (advanced to now) falls asleep where it is: velocity and record inverse mass 0, its
+     * kinetic energy put to rest; its trajectory changed, so its counter is bumped.
+     */
+    private void fallAsleep(int i, double abs) {
+        int at = i * stride;
+        double vx = rec[at + VX];
+        double vy = rec[at + VY];
+        energyPutToRest += 0.5 * (vx * vx + vy * vy) / rec[at + IM];
+        sleeps++;
+        rec[at + VX] = 0;
+        rec[at + VY] = 0;
+        rec[at + IM] = 0;
+        restitution.collided(i, abs);
+        ir[i * IS + COUNT]++;
+    }
+
+    /** Sleeping disc i (advanced to now) wakes: mobile again with its own mass, at rest. */
+    private void wake(int i) {
+        rec[i * stride + IM] = awakeInvMass[i];
+        wakes++;
+    }
+
+    /** Discs this thread put to sleep. */
+    public long sleeps() {
+        return sleeps;
+    }
+
+    /** Sleeping discs this thread woke. */
+    public long wakes() {
+        return wakes;
+    }
+
+    /** Kinetic energy the discs this thread put to sleep had then, summed. */
+    public double energyPutToRest() {
+        return energyPutToRest;
+    }
+
+    /** Writes this thread's resting-contact counts for a checkpoint (which discs sleep is in the records). */
+    public void saveRestCounts(carom.core.engine.StateBytes.Out out) {
+        out.putLong(sleeps).putLong(wakes).putDouble(energyPutToRest);
+    }
+
+    /** Reads back what {@link #saveRestCounts} wrote. */
+    public void restoreRestCounts(carom.core.engine.StateBytes.In in) {
+        setRestCounts(in.getLong(), in.getLong(), in.getDouble());
+    }
+
+    /** Sets this thread's resting-contact counts back (a domain undoing events). */
+    public void setRestCounts(long sleeps, long wakes, double energyPutToRest) {
+        this.sleeps = sleeps;
+        this.wakes = wakes;
+        this.energyPutToRest = energyPutToRest;
     }
 
     /**
@@ -310,12 +391,19 @@ public final class DiscMotion {
         }
     }
 
-    /** Every disc as {@link Discs} (the energy audit's test mode only: O(N) per call). */
-    public Discs snapshot() {
+    /**
+     * Every disc as {@link Discs} (the energy audit's test mode only: O(N) per call), a sleeping disc
+     * as a mobile one at rest at local {@code now}, so that its potential energy counts.
+     */
+    public Discs snapshot(double now) {
         int n = rec.length / stride;
         Discs all = new Discs(n);
         for (int i = 0; i < n; i++) {
             load(all, i, i);
+            if (awakeInvMass != null && all.invMass[i] == 0 && awakeInvMass[i] > 0) {
+                all.invMass[i] = awakeInvMass[i];
+                all.t[i] = now;
+            }
         }
         return all;
     }

@@ -65,7 +65,10 @@ public final class DiscTable {
     /** Grid columns and rows: cell (col, row) is {@code row * cols + col}. */
     public final int cols;
     public final int rows;
-    /** Re-predict the whole neighbourhood after a crossing (gravity with fixed discs; small grids). */
+    /**
+     * Re-predict the whole neighbourhood after a crossing (gravity with fixed discs; small grids; and,
+     * once a disc has fallen asleep, under gravity: {@link CellPredictor#crossAndPredict}).
+     */
     public final boolean fullOnCross;
     /**
      * The growth effect: radii are R(0) (growthScale + growthRate t) at local time t, where R(0) is
@@ -89,6 +92,11 @@ public final class DiscTable {
     /** Radius and inverse mass of every disc when all share them (then not in the records). */
     final double sharedRadius;
     final double sharedInvMass;
+    /**
+     * Under gravity, each disc's inverse mass while awake (0 for a fixed disc): a sleeping disc has 0
+     * in its record ({@link DiscMotion#collidePair}). Null without gravity, where no disc sleeps.
+     */
+    final double[] awakeInvMass;
     /** Straight flight: advance and predictions are inlined on the records. */
     final boolean straight;
     final int[] ir;
@@ -190,7 +198,8 @@ public final class DiscTable {
         for (int i = 1; i < n && shared; i++) {
             shared = src.radius[i] == src.radius[0] && src.invMass[i] == src.invMass[0];
         }
-        this.stride = shared ? R : IM + 1;
+        // Under gravity the inverse mass is in the record: a disc asleep has 0 there.
+        this.stride = shared && !(acceleration > 0) ? R : IM + 1;
         this.sharedRadius = shared && n > 0 ? src.radius[0] : Double.NaN;
         this.sharedInvMass = shared && n > 0 ? src.invMass[0] : Double.NaN;
         this.rec = new double[Math.multiplyExact(n, stride)];
@@ -204,7 +213,7 @@ public final class DiscTable {
             rec[at + VX] = src.vx[o];
             rec[at + VY] = src.vy[o];
             rec[at + EV] = INF; // not queued: what every CalendarQueue on the table starts from
-            if (!shared) {
+            if (stride > R) {
                 rec[at + R] = src.radius[o];
                 rec[at + IM] = src.invMass[o];
             }
@@ -219,6 +228,10 @@ public final class DiscTable {
         }
         for (int i = 0; i < n; i++) {
             ir[i * IS + PARTNER] = NONE;
+        }
+        this.awakeInvMass = acceleration > 0 ? new double[n] : null;
+        for (int k = 0; awakeInvMass != null && k < n; k++) {
+            awakeInvMass[k] = src.invMass[order[k]];
         }
     }
 
@@ -296,6 +309,19 @@ public final class DiscTable {
 
     public double invMass(int i) {
         return stride > IM ? rec[i * stride + IM] : sharedInvMass;
+    }
+
+    /**
+     * Whether disc i is mobile in the scene, awake or asleep: it has an event of its own (a sleeping
+     * disc predicts its contacts with the discs that are awake), where a fixed disc has none.
+     */
+    public boolean mobile(int i) {
+        return awakeInvMass == null ? invMass(i) > 0 : awakeInvMass[i] > 0;
+    }
+
+    /** Whether disc i is asleep: mobile in the scene and immovable now. */
+    public boolean asleep(int i) {
+        return awakeInvMass != null && awakeInvMass[i] > 0 && rec[i * stride + IM] == 0;
     }
 
     /** The column of disc i's logical cell. */

@@ -5,6 +5,7 @@ import static carom.engines.kernel.DiscTable.AXIS_MASK;
 import static carom.engines.kernel.DiscTable.CELL;
 import static carom.engines.kernel.DiscTable.CELL_MASK;
 import static carom.engines.kernel.DiscTable.COUNT;
+import static carom.engines.kernel.DiscTable.IM;
 import static carom.engines.kernel.DiscTable.IS;
 import static carom.engines.kernel.DiscTable.PARTNER;
 import static carom.engines.kernel.DiscTable.PCOUNT;
@@ -118,6 +119,7 @@ public final class SavedStates {
         d.vy[slot] = savedDoubles[at + VY];
         d.t[slot] = savedDoubles[at + T];
         d.radius[slot] = motion.radius(i);
-        d.invMass[slot] = motion.invMass(i);
+        // The inverse mass saved with the segment: a disc asleep on it had 0 (under gravity it is in the record).
+        d.invMass[slot] = stride > IM ? savedDoubles[at + IM] : motion.invMass(i);
     }
 }

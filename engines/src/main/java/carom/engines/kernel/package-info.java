@@ -32,8 +32,15 @@
  *   <li>Cell crossing: move the disc to the new cell and predict it only against the row or column
  *       of cells that enters its neighbourhood, plus its remembered best candidate (its trajectory is
  *       unchanged, so every other old candidate is still later than that one). Under gravity with
- *       fixed discs the whole neighbourhood is re-predicted, because a mobile-fixed contact is only
- *       searched up to the disc's next crossing (the {@code horizon} of the quartic search).</li>
+ *       fixed discs (or once a disc has fallen asleep) the whole neighbourhood is re-predicted, because
+ *       a mobile-fixed contact is only searched up to the disc's next crossing (the {@code horizon} of
+ *       the quartic search).</li>
+ *   <li>Resting contact (gravity): a disc that comes to rest on a wall, a fixed or a sleeping disc
+ *       falls asleep ({@link carom.engines.kernel.DiscMotion#collidePair}): inverse mass 0 in its
+ *       record (under gravity the record always holds it), velocity 0, its own mass kept in the
+ *       table. It is then a fixed disc to flight, prediction and the collision law, but keeps an event
+ *       of its own, its earliest contact with a disc that is awake, searched without a horizon; an
+ *       awake disc hitting it wakes it.</li>
  *   <li>Growth (the {@code growth} effect): the records hold R(0); a table knows the growth rate and
  *       the absolute time of its local 0 ({@code DiscTable.anchorGrowth}, moved at every re-anchoring of
  *       clocks), predicts contacts of growing discs with {@link carom.core.physics.GrowthLaw} and
@@ -70,7 +77,8 @@
  *       cell of its rounded position by rounding, which no prediction depends on).</li>
  *   <li>A disc's scheduled time is at most the time of its next real event (every contact is found
  *       from at least one side since either disc last changed trajectory or cell); fixed discs are
- *       never scheduled; a mobile disc without any event (at rest, no gravity) is not queued.</li>
+ *       never scheduled (sleeping discs are); a mobile disc without any event (at rest, no gravity)
+ *       is not queued.</li>
  *   <li>A prediction against disc j holds while j's COUNT is unchanged: every change of j's
  *       trajectory (a collision, or a move to another owner) bumps it.</li>
  *   <li>Disc i is in a queue iff its EV is finite; only the queue writes EV once the queue is

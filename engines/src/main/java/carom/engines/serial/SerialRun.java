@@ -10,6 +10,7 @@ import carom.core.engine.Checkpoints;
 import carom.core.engine.Contacts;
 import carom.core.engine.RunStopped;
 import carom.core.engine.StateBytes;
+import carom.core.engine.Sleepers;
 import carom.core.engine.StallGuard;
 import carom.core.grid.CellGrid;
 import carom.core.grid.CellLists;
@@ -27,6 +28,7 @@ import carom.core.state.Discs;
 import carom.engines.cells.StepGrid;
 import carom.engines.cells.ThreadedBucketQueue;
 import carom.engines.kernel.TableState;
+import java.util.HashMap;
 import java.util.Map;
 
 /**
@@ -78,6 +80,8 @@ final class SerialRun {
     private final VirialAccumulator virial;
     private final StallGuard stallGuard;
     private final Contacts contacts;
+    /** Resting contact under gravity (null without gravity). */
+    private final Sleepers sleepers;
 
     private final Checkpoints checkpoints;
     private static final String STATE_TAG = "serial/1";
@@ -113,7 +117,8 @@ final class SerialRun {
         this.progress = options.progress();
         this.virial = VirialAccumulator.forRun(until);
         this.stallGuard = new StallGuard(scene);
-        this.contacts = new Contacts(flight, boundary, stallGuard);
+        this.sleepers = acceleration > 0 ? new Sleepers(d) : null;
+        this.contacts = new Contacts(flight, boundary, stallGuard, sleepers);
         this.checkpoints = options.checkpoints();
         this.energyStart = Observables.kineticEnergy(d);
         this.momentumStart = Observables.momentum(d);
@@ -141,6 +146,10 @@ final class SerialRun {
         in.getDoubles(d.vy);
         java.util.Arrays.fill(d.t, 0);
         TableState.restoreRestitution(restitution, n, in);
+        if (sleepers != null) {
+            in.getDoubles(d.invMass);
+            sleepers.restore(in);
+        }
         in.end();
         long before = pairCollisions + wallCollisions;
         return run().resumedAfter(before);
@@ -153,6 +162,11 @@ final class SerialRun {
                 .putDouble(energyStart).putDouble(momentumStart[0]).putDouble(momentumStart[1])
                 .putDoubles(virial.blockSums()).putDouble(virial.total()).putDoubles(d.x).putDoubles(d.y).putDoubles(d.vx).putDoubles(d.vy);
         TableState.saveRestitution(restitution, n, out);
+        if (sleepers != null) {
+            // Sleeping discs have inverse mass 0 until they wake.
+            out.putDoubles(d.invMass);
+            sleepers.save(out);
+        }
         return out.bytes();
     }
 
@@ -187,12 +201,19 @@ final class SerialRun {
         for (int i = 0; i < n; i++) {
             d.t[i] = until;
         }
+        Map<String, Long> counters = new HashMap<>(Map.of(Counter.STEPS.key, steps, Counter.PREDICTIONS.key,
+                predictions, Counter.EARLY_STEP_ENDS.key, earlyStepEnds));
+        if (sleepers != null) {
+            sleepers.wakeAll(d);
+            counters.put(Counter.SLEEPS.key, sleepers.sleeps());
+            counters.put(Counter.WAKES.key, sleepers.wakes());
+        }
         double seconds = (System.nanoTime() - started) * 1e-9;
         double energyEnd = Observables.kineticEnergy(d);
         Pressure pressure = VirialAccumulator.pressureOf(virial, scene, d, energyStart, energyEnd);
         return new RunResult("serial", true, d, until, pairCollisions, wallCollisions, pairCollisions + wallCollisions,
                 energyStart, energyEnd, momentumStart, Observables.momentum(d), pressure, 0, seconds,
-                Map.of(Counter.STEPS.key, steps, Counter.PREDICTIONS.key, predictions, Counter.EARLY_STEP_ENDS.key, earlyStepEnds));
+                Map.copyOf(counters), sleepers == null ? 0 : sleepers.energyPutToRest());
     }
 
     /** Runs one step from local time 0 (absolute {@code epoch}); returns its length. */
@@ -253,15 +274,19 @@ final class SerialRun {
                 collideWall(epoch, now, a, -1 - b);
             }
             if (audit != null) {
-                audit.check(d, flight, now, epoch + now);
+                audit.check(sleepers == null ? d : sleepers.awakeCopy(d, now), flight, now, epoch + now);
             }
         }
     }
 
     private void collidePair(double epoch, double now, int a, int b) {
+        boolean aWasMobile = d.invMass[a] > 0;
+        boolean bWasMobile = d.invMass[b] > 0;
         double w = contacts.pair(d, restitution, a, b, now, epoch + now, a, b);
-        boolean aMobile = d.invMass[a] > 0;
-        boolean bMobile = d.invMass[b] > 0;
+        // Changed: mobile before (collided, or fell asleep) or after (woke). A fixed or sleeping
+        // partner that stayed so keeps its other potentials.
+        boolean aMobile = aWasMobile || d.invMass[a] > 0;
+        boolean bMobile = bWasMobile || d.invMass[b] > 0;
         pairCollisions++;
         if (aMobile) {
             restitution.collided(a, epoch + now);

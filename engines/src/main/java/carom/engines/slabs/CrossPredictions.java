@@ -96,7 +96,7 @@ final class CrossPredictions {
     void predictAll(double now) {
         heap.clear();
         for (int i = 0; i < table.n; i++) {
-            if (table.invMass(i) > 0 && columns.inEdgeColumn(i)) {
+            if (table.mobile(i) && columns.inEdgeColumn(i)) {
                 predict(i, now);
             }
         }
@@ -118,7 +118,8 @@ final class CrossPredictions {
      * edge columns leave the heap.
      */
     void predict(int i, double now) {
-        if (table.invMass(i) == 0) {
+        // A sleeping disc predicts its contacts with foreign discs that are awake, as in its slab.
+        if (!table.mobile(i)) {
             return;
         }
         int col = table.colOfDisc(i);

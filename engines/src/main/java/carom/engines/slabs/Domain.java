@@ -103,6 +103,7 @@ final class Domain {
         out.putLongs(new long[] {events, pairCollisions, wallCollisions, crossings, staleEvents, undoneEvents,
             eventLimit, crossSlabEvents, pred.predictions()});
         out.putDouble(span).putDoubles(virial.blockSums()).putDouble(virial.total());
+        motion.saveRestCounts(out);
     }
 
     void restore(carom.core.engine.StateBytes.In in, double savedUntil) {
@@ -122,6 +123,7 @@ final class Domain {
         pred.resumeCount(c[8]);
         span = in.getDouble();
         virial.restore(in.getDoubles(), savedUntil, in.getDouble());
+        motion.restoreRestCounts(in);
     }
 
     /** Worker thread body: run each published task, then report done, until the run shuts down. */
@@ -332,6 +334,8 @@ final class Domain {
         wallCollisions = log.counterBefore(k, UndoLog.WALL_COLLISIONS);
         crossings = log.counterBefore(k, UndoLog.CROSSINGS);
         staleEvents = log.counterBefore(k, UndoLog.STALE_EVENTS);
+        motion.setRestCounts(log.counterBefore(k, UndoLog.SLEEPS), log.counterBefore(k, UndoLog.WAKES),
+                log.energyPutToRestBefore(k));
         log.truncate(k);
     }
 
@@ -358,10 +362,11 @@ final class Domain {
             log.setVirial(w);
         }
         if (audit != null && !logging) {
-            audit.check(motion.snapshot(), table.flight, now, abs);
+            audit.check(motion.snapshot(now), table.flight, now, abs);
         }
         queue.insert(a, predictFull(a, now));
-        if (table.invMass(b) > 0) {
+        // Mobile in the scene (awake or asleep): b may have woken or fallen asleep.
+        if (table.mobile(b)) {
             queue.remove(b);
             queue.insert(b, predictFull(b, now));
         }
@@ -375,7 +380,7 @@ final class Domain {
         motion.collideWall(i, wall, now, abs, stallGuard);
         wallCollisions++;
         if (audit != null && !logging) {
-            audit.check(motion.snapshot(), table.flight, now, abs);
+            audit.check(motion.snapshot(now), table.flight, now, abs);
         }
         queue.insert(i, predictFull(i, now));
     }

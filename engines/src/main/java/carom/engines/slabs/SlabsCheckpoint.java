@@ -64,7 +64,8 @@ final class SlabsCheckpoint {
                 .putDouble(now).putDouble(run.clock.epoch).putDouble(run.resyncAt).putBoolean(run.merged)
                 .putLong(run.phaseEvents).putLong(run.phaseCrossSlabEvents).putLong(run.samples.index())
                 .putDouble(run.energyStart).putDouble(run.momentumStart[0]).putDouble(run.momentumStart[1])
-                .putDoubles(run.serialVirial.blockSums()).putDouble(run.serialVirial.total());
+                .putDoubles(run.serialVirial.blockSums()).putDouble(run.serialVirial.total())
+                .putBoolean(run.sleepersNoted);
         run.counters.save(out);
         run.policy.save(out);
         TableState.save(run.table, out);
@@ -102,6 +103,9 @@ final class SlabsCheckpoint {
         run.energyStart = in.getDouble();
         run.momentumStart = new double[] {in.getDouble(), in.getDouble()};
         run.serialVirial.restore(in.getDoubles(), savedUntil, in.getDouble());
+        if (in.getBoolean()) {
+            run.tellSleepers();
+        }
         run.counters.restore(in);
         run.policy.restore(in);
         TableState.restore(run.table, in);

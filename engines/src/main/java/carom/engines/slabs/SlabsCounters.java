@@ -100,8 +100,17 @@ final class SlabsCounters {
         return events;
     }
 
+    /** Kinetic energy put to rest by discs falling asleep, over every domain's motion. */
+    static double energyPutToRest(Domain[] domains) {
+        double sum = 0;
+        for (Domain d : domains) {
+            sum += d.motion.energyPutToRest();
+        }
+        return sum;
+    }
+
     /** Every counter the run reports, by its key. */
-    Map<String, Long> toMap(Domain[] domains, int slabs, long crossPredictions, int spins) {
+    Map<String, Long> toMap(Domain[] domains, int slabs, long crossPredictions, int spins, boolean gravity) {
         long crossings = migrations;
         long stale = 0;
         long predictions = 0;
@@ -145,6 +154,17 @@ final class SlabsCounters {
         }
         counters.put(Counter.WINDOW_CPU_NANOS.key, windowCpu);
         counters.put(Counter.BARRIER_SPINS.key, (long) spins);
+        if (gravity) {
+            // Resting contact: every domain's motion (the merged phases' one too) and the serial phases'.
+            long sleeps = 0;
+            long wakes = 0;
+            for (Domain d : domains) {
+                sleeps += d.motion.sleeps();
+                wakes += d.motion.wakes();
+            }
+            counters.put(Counter.SLEEPS.key, sleeps);
+            counters.put(Counter.WAKES.key, wakes);
+        }
         if (slabs > 1) {
             counters.put(Counter.MERGES.key, merges);
             counters.put(Counter.MERGED_EVENTS.key, domains[slabs].events);

@@ -91,6 +91,8 @@ final class SlabsRun {
      * one slab, that slab itself); and the slabs, then it, for the counters.
      */
     final Domain whole;
+    /** Whether every predictor has been told that discs sleep ({@link #noteSleepers}). */
+    boolean sleepersNoted;
     final Domain[] counted;
     /** When windows do not pay and the run merges ({@link MergePolicy}); whether it is merged now. */
     final MergePolicy policy;
@@ -178,6 +180,31 @@ final class SlabsRun {
         counters.setupNanos = System.nanoTime() - constructing;
     }
 
+    /**
+     * Once a disc has fallen asleep in any domain (or in a serial phase), every domain's predictor
+     * re-predicts in full after a crossing ({@link carom.engines.kernel.CellPredictor#sleepersMayBeNear});
+     * told here, between windows and phases, so that the run does not depend on thread timing.
+     */
+    private void noteSleepers() {
+        if (sleepersNoted) {
+            return;
+        }
+        for (Domain d : counted) {
+            if (d.motion.sleeps() > 0) {
+                tellSleepers();
+                return;
+            }
+        }
+    }
+
+    /** Tells every predictor that discs sleep (also a resumed run whose checkpoint says they had been told). */
+    void tellSleepers() {
+        for (Domain e : counted) {
+            e.pred.sleepersMayBeNear();
+        }
+        sleepersNoted = true;
+    }
+
     private Domain ownerOf(int i) {
         return domains[columns.ownerOfDisc(i)];
     }
@@ -256,7 +283,9 @@ final class SlabsRun {
         return new RunResult("slabs", true, out, until, counters.pairCollisions(counted),
                 counters.wallCollisions(counted), counters.events(counted), energyStart, energyEnd, momentumStart,
                 Observables.momentum(out), pressure, 0, seconds,
-                counters.toMap(counted, domainCount, cross == null ? 0 : cross.predictions, spins));
+                counters.toMap(counted, domainCount, cross == null ? 0 : cross.predictions, spins,
+                        table.flight.maxAcceleration() > 0),
+                SlabsCounters.energyPutToRest(counted));
     }
 
     private void loop(double now) {
@@ -270,6 +299,7 @@ final class SlabsRun {
                 resync(now);
                 now = 0;
             }
+            noteSleepers();
             if (merged) {
                 // Up to the next resync, sample or the end, or until the phase's budget of events is spent.
                 double end = Math.min(Math.min(resyncAt, sampleLocal), clock.untilLocal);
@@ -370,7 +400,7 @@ final class SlabsRun {
             }
             now = tStar;
             if (audit != null) {
-                audit.check(domains[0].motion.snapshot(), table.flight, now, clock.epoch + now);
+                audit.check(domains[0].motion.snapshot(now), table.flight, now, clock.epoch + now);
             }
             counters.serialNanos += System.nanoTime() - t1;
             counters.serialCpuNanos += SlabsCounters.cpuNanos() - c1;
@@ -411,7 +441,7 @@ final class SlabsRun {
     private void merge(double now) {
         counters.merges++;
         for (int i = 0; i < n; i++) {
-            if (table.invMass(i) > 0 && columns.inEdgeColumn(i)) {
+            if (table.mobile(i) && columns.inEdgeColumn(i)) {
                 table.setEventTime(i, whole.predictFull(i, now));
             }
         }
@@ -439,7 +469,7 @@ final class SlabsRun {
         startWorkers();
         whole.eventLimit = Long.MAX_VALUE;
         for (int i = 0; i < n; i++) {
-            if (table.invMass(i) == 0) {
+            if (!table.mobile(i)) {
                 continue;
             }
             int own = columns.ownerOfDisc(i);
@@ -520,7 +550,8 @@ final class SlabsRun {
         db.queue.remove(b);
         double w = da.motion.collidePair(a, b, now, abs, serialStall);
         counters.crossPairCollisions++;
-        boolean bMobile = table.invMass(b) > 0;
+        // Mobile in the scene (awake or asleep): b may have woken or fallen asleep.
+        boolean bMobile = table.mobile(b);
         serialVirial.add(abs, w);
         da.queue.insert(a, da.predictFull(a, now));
         if (bMobile) {

@@ -22,16 +22,22 @@ final class UndoLog {
     static final int WALL_COLLISIONS = 2;
     static final int CROSSINGS = 3;
     static final int STALE_EVENTS = 4;
-    private static final int COUNTERS = 5;
+    /** The domain's resting-contact counts before each event: discs put to sleep, discs woken. */
+    static final int SLEEPS = 5;
+    static final int WAKES = 6;
+    private static final int COUNTERS = 7;
 
     private final SlabColumns columns;
     private final DiscMarks marks;
+    /** The domain's changes to the records: its resting-contact counts are logged with each event. */
+    private final DiscMotion motion;
 
     // Events: time, the domain's counters before it, its pair collision's virial, its first entry.
     private int events;
     private double[] time = new double[64];
     private long[] counters = new long[64 * COUNTERS];
     private double[] virial = new double[64];
+    private double[] energyPutToRest = new double[64];
     private int[] firstEntry = new int[64];
 
     // Entries: the disc, its event, its previous edge-column entry, and its saved state.
@@ -48,6 +54,7 @@ final class UndoLog {
     UndoLog(DiscMotion motion, SlabColumns columns, DiscMarks marks) {
         this.columns = columns;
         this.marks = marks;
+        this.motion = motion;
         this.saved = new SavedStates(motion, 128);
     }
 
@@ -66,6 +73,7 @@ final class UndoLog {
             time = Arrays.copyOf(time, 2 * k);
             counters = Arrays.copyOf(counters, 2 * k * COUNTERS);
             virial = Arrays.copyOf(virial, 2 * k);
+            energyPutToRest = Arrays.copyOf(energyPutToRest, 2 * k);
             firstEntry = Arrays.copyOf(firstEntry, 2 * k);
         }
         time[k] = now;
@@ -74,6 +82,9 @@ final class UndoLog {
         counters[COUNTERS * k + WALL_COLLISIONS] = wallCollisions;
         counters[COUNTERS * k + CROSSINGS] = crossings;
         counters[COUNTERS * k + STALE_EVENTS] = staleEvents;
+        counters[COUNTERS * k + SLEEPS] = motion.sleeps();
+        counters[COUNTERS * k + WAKES] = motion.wakes();
+        energyPutToRest[k] = motion.energyPutToRest();
         virial[k] = 0;
         firstEntry[k] = entries;
     }
@@ -209,6 +220,11 @@ final class UndoLog {
     /** The domain counter {@code which} before event k. */
     long counterBefore(int k, int which) {
         return counters[COUNTERS * k + which];
+    }
+
+    /** The energy the domain had put to rest before event k. */
+    double energyPutToRestBefore(int k) {
+        return energyPutToRest[k];
     }
 
     /** The disc of entry e. */

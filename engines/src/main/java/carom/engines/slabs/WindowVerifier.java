@@ -76,7 +76,7 @@ final class WindowVerifier {
             UndoLog log = a.log;
             for (int q = 0; q < log.changedCount(); q++) {
                 int x = log.changed(q);
-                if (table.invMass(x) == 0) {
+                if (!table.mobile(x)) {
                     continue;
                 }
                 // Segments of x in edge columns: the current record from its clock (every event advances

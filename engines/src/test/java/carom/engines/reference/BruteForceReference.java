@@ -6,6 +6,7 @@ import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
 import carom.core.physics.PairLaw;
 import carom.core.physics.Physics;
+import carom.core.physics.RestRule;
 import carom.core.physics.Restitution;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
@@ -26,12 +27,11 @@ import carom.core.state.Discs;
  * never looks further ahead than a pair could move before another image might come into contact; when
  * nothing happens within that window it advances every disc to its end and looks again.
  *
- * <p>Resting contact is not modelled (SPEC): a dissipative disc bouncing on a wall or a fixed disc
- * without the TC model bounces ever lower, endlessly often. The judge stops such a run with
- * {@link SimulationStuckException} naming the disc, by the rule the serial engine documents: a
- * dissipative bounce against a wall or fixed disc whose normal speed would lift the disc less than
- * {@code 1e-12} of the box size. It also stops when more than {@code max(100000, 10 N)} collisions
- * happen at one instant.
+ * <p>Resting contact: under gravity a disc that comes to rest on a wall, a fixed disc or a sleeping
+ * disc ({@link RestRule}, the law the engines share) falls asleep: velocity 0, inverse mass 0 (so the
+ * laws above treat it as fixed) until a disc that stays awake hits it, which wakes it. The judge keeps
+ * its own sleep bookkeeping. It stops with {@link SimulationStuckException} when more than
+ * {@code max(100000, 10 N)} collisions happen at one instant.
  */
 public final class BruteForceReference {
     public record Result(Discs state, long pairCollisions, long wallCollisions) {
@@ -39,7 +39,6 @@ public final class BruteForceReference {
 
     /** Scenes judged here are small and short; more events than this means a loop, not physics. */
     private static final long MAX_EVENTS = 10_000_000;
-    private static final String[] WALL_NAMES = {"left", "right", "bottom", "top"};
 
     private BruteForceReference() {
     }
@@ -52,7 +51,10 @@ public final class BruteForceReference {
         Boundary.Walls walls = boundary instanceof Boundary.Walls w ? w : null;
         Restitution restitution = physics.restitution;
         double acceleration = flight.maxAcceleration();
-        double restHeight = 1e-12 * Math.max(scene.box().width(), scene.box().height());
+        RestRule rest = new RestRule(scene.box(), scene.effects());
+        double gx = scene.effects().gravityX();
+        double gy = scene.effects().gravityY();
+        double[] awakeInvMass = d.invMass.clone();
         long stuckLimit = Math.max(100_000L, 10L * d.n);
         // Periodic: a pair can meet another image than its nearest one only after their separation changed
         // by at least half the box minus the contact distance along some axis.
@@ -104,6 +106,8 @@ public final class BruteForceReference {
             }
             if (bestA < 0 || next > until) {
                 advanceAll(d, flight, boundary, until);
+                // Sleeping discs end at rest, with their own mass.
+                System.arraycopy(awakeInvMass, 0, d.invMass, 0, d.n);
                 return new Result(d, pairs, wallHits);
             }
             advanceAll(d, flight, boundary, next);
@@ -124,10 +128,22 @@ public final class BruteForceReference {
                 double e = restitution.pair(a, b, now);
                 boolean aMobile = d.invMass[a] > 0;
                 boolean bMobile = d.invMass[b] > 0;
-                if (e < 1 && aMobile != bMobile) {
+                pairs++;
+                if (acceleration > 0 && aMobile != bMobile) {
+                    int m = aMobile ? a : b;
+                    int support = aMobile ? b : a;
                     double dist = Math.sqrt(dx * dx + dy * dy);
-                    double normal = ((d.vx[a] - d.vx[b]) * dx + (d.vy[a] - d.vy[b]) * dy) / dist;
-                    stopIfResting(acceleration, restHeight, aMobile ? a : b, normal, now, "fixed disc " + (aMobile ? b : a));
+                    double sign = aMobile ? 1 : -1;
+                    if (rest.rests(now, sign * dx / dist, sign * dy / dist, d.vx[m], d.vy[m], gx, gy, dist, false)) {
+                        fallAsleep(d, m);
+                        restitution.collided(m, now);
+                        continue;
+                    }
+                    if (awakeInvMass[support] > 0) {
+                        d.invMass[support] = awakeInvMass[support];
+                        aMobile = true;
+                        bMobile = true;
+                    }
                 }
                 PairLaw.collide(d, a, b, dx, dy, e);
                 if (aMobile) {
@@ -136,17 +152,19 @@ public final class BruteForceReference {
                 if (bMobile) {
                     restitution.collided(b, now);
                 }
-                pairs++;
             } else {
                 int wall = -1 - bestB;
                 double e = restitution.wall(bestA, now);
-                if (e < 1) {
-                    double normal = wall == Boundary.LEFT || wall == Boundary.RIGHT ? d.vx[bestA] : d.vy[bestA];
-                    stopIfResting(acceleration, restHeight, bestA, normal, now, WALL_NAMES[wall] + " wall");
-                }
-                boundary.reflect(d, bestA, wall, e);
-                restitution.collided(bestA, now);
                 wallHits++;
+                double nx = wall == Boundary.LEFT ? -1 : (wall == Boundary.RIGHT ? 1 : 0);
+                double ny = wall == Boundary.BOTTOM ? -1 : (wall == Boundary.TOP ? 1 : 0);
+                if (acceleration > 0
+                        && rest.rests(now, nx, ny, d.vx[bestA], d.vy[bestA], gx, gy, Double.POSITIVE_INFINITY, false)) {
+                    fallAsleep(d, bestA);
+                } else {
+                    boundary.reflect(d, bestA, wall, e);
+                }
+                restitution.collided(bestA, now);
             }
         }
     }
@@ -162,12 +180,11 @@ public final class BruteForceReference {
         return 2 * distance / (2 * vmax + Math.sqrt(4 * vmax * vmax + 2 * acceleration * distance));
     }
 
-    private static void stopIfResting(double acceleration, double restHeight, int disc, double normalSpeed, double now,
-                                      String against) {
-        if (acceleration > 0 && normalSpeed * normalSpeed < 2 * acceleration * restHeight) {
-            throw new SimulationStuckException(String.format(
-                    "brute-force reference: disc %d came to rest against the %s at t = %s", disc, against, now));
-        }
+    /** Disc i, at its contact with a support, falls asleep there: at rest and immovable. */
+    private static void fallAsleep(Discs d, int i) {
+        d.vx[i] = 0;
+        d.vy[i] = 0;
+        d.invMass[i] = 0;
     }
 
     /** Every disc to absolute time {@code time} (its clock becomes {@code time}), periodic positions wrapped. */

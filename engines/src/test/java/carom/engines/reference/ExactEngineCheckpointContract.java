@@ -6,6 +6,7 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import carom.core.engine.Checkpoints;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
+import carom.core.engine.Counter;
 import carom.core.engine.RunResult;
 import carom.core.engine.RunStopped;
 import carom.core.scene.Scene;
@@ -119,6 +120,29 @@ public abstract class ExactEngineCheckpointContract {
             RunResult again = engine().resume(scene, options(t1), kept.saved.getFirst().state());
             assertSame(scene.name() + " resumed to t1 itself", again, shorter);
         }
+    }
+
+    @Test
+    void aSettlingPileResumesWithItsSleepersToTheSameBits() {
+        // Discs fall asleep from t ~ 1; checkpoints before, among and after the sleeps.
+        Scene scene = ExactEngineRestingContactContract.smallPile();
+        double until = scene.until();
+        RunResult straight = engine().run(scene, options(until));
+        assertThat(straight.counter(Counter.SLEEPS, 0)).as("discs fell asleep").isPositive();
+        Kept kept = new Kept(until / 10, Long.MAX_VALUE);
+        assertSame("pile with checkpoints", engine().run(scene, options(until).withCheckpoints(kept)), straight);
+        for (Saved from : kept.saved) {
+            RunResult resumed = engine().resume(scene, options(until), from.state());
+            assertSame("pile resumed from t = " + from.time(), resumed, straight);
+            assertThat(resumed.counter(Counter.SLEEPS, 0)).isEqualTo(straight.counter(Counter.SLEEPS, 0));
+            assertThat(resumed.counter(Counter.WAKES, 0)).isEqualTo(straight.counter(Counter.WAKES, 0));
+            assertThat(resumed.energyPutToRest()).isEqualTo(straight.energyPutToRest());
+        }
+        // and a run that ended among the sleeps, resumed to the end
+        Kept shorter = new Kept(Double.POSITIVE_INFINITY, Long.MAX_VALUE);
+        engine().run(scene, options(0.4 * until).withCheckpoints(shorter));
+        assertSame("pile resumed past a shorter run", engine().resume(scene, options(until), shorter.saved.getFirst().state()),
+                straight);
     }
 
     @Test

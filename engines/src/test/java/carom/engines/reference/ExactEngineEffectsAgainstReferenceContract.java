@@ -23,8 +23,9 @@ import org.junit.jupiter.params.provider.MethodSource;
  * enough that rounding differences between the engine's step-local clocks and the judge's absolute ones
  * are not amplified beyond that by chaos.
  *
- * <p>A dissipative scene without the TC model may come to rest on a wall or peg (resting contact is not
- * modelled): then both must stop with {@link SimulationStuckException} naming the same disc.
+ * <p>A disc may come to rest on a wall or peg: both put it to sleep by the same rule
+ * ({@link carom.core.physics.RestRule}). Should either stop with {@link SimulationStuckException}
+ * (endlessly many collisions at one instant), both must, naming the same disc.
  */
 public abstract class ExactEngineEffectsAgainstReferenceContract {
     private static final double SAME = 1e-8;
