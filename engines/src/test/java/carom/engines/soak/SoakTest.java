@@ -31,7 +31,7 @@ import org.junit.jupiter.params.provider.ValueSource;
  *       momentum kept to rounding;</li>
  *   <li>a cooling gas ({@code examples/cooling-gas.json}, restitution 0.9 with tc) for
  *       {@value #COOLING_SPAN} time units: no overlap, momentum kept, kinetic energy never growing;</li>
- *   <li>a settling pile ({@code examples/settling-stack.json}) to {@value #PILE_REACHED_TODAY}: no
+ *   <li>a settling pile ({@code examples/settling-stack.json}) to {@value #PILE_HORIZON}: no
  *       overlap, no disc out of the box, total energy (with gravity's) never growing.</li>
  * </ul>
  * Progress: the gases run in {@value #SEGMENTS} segments or more, each continuing from the last one's
@@ -47,13 +47,8 @@ class SoakTest {
     static final int SEGMENTS = 10;
     /** Threads for slabs. */
     static final int THREADS = 2;
-    /**
-     * How far the settling pile runs today: slabs stops at t ≈ 22 and fast at t ≈ 44 ("came to rest
-     * against the bottom wall") until resting contact is modelled (issue 23, item 1).
-     */
-    static final double PILE_REACHED_TODAY = 20;
-    /** The horizon the pile should soak to once resting contact is modelled: replace PILE_REACHED_TODAY by this. */
-    static final double PILE_HORIZON_WANTED = 600;
+    /** How far the settling pile runs: with resting contact its discs fall asleep and the run goes on to the end. */
+    static final double PILE_HORIZON = 600;
     /** Exact engines leave rounding: overlaps of about 1e-15 of a contact distance, far below this. */
     static final double OVERLAP_BOUND = 1e-10;
 
@@ -103,14 +98,14 @@ class SoakTest {
     @ParameterizedTest
     @ValueSource(strings = {"fast", "slabs"})
     void aSettlingPileRunsOnWithoutOverlapOrEnergyGained(String engineName) throws IOException {
-        Scene pile = example("settling-stack.json").withUntil(PILE_REACHED_TODAY);
+        Scene pile = example("settling-stack.json").withUntil(PILE_HORIZON);
         Engine engine = EngineCatalog.byName(engineName);
         List<Double> progress = new ArrayList<>();
         double load = loadAverage()[0];
-        RunResult r = engine.run(pile, RunOptions.until(PILE_REACHED_TODAY).withThreads(THREADS)
+        RunResult r = engine.run(pile, RunOptions.until(PILE_HORIZON).withThreads(THREADS)
                 .withProgress(progress::add));
-        assertThat(r.until()).isEqualTo(PILE_REACHED_TODAY);
-        assertThat(progress).as("simulated time advances").isSorted().allMatch(t -> t <= PILE_REACHED_TODAY);
+        assertThat(r.until()).isEqualTo(PILE_HORIZON);
+        assertThat(progress).as("simulated time advances").isSorted().allMatch(t -> t <= PILE_HORIZON);
         double overlap = StateChecks.deepestOverlap(r.finalState(), pile.box());
         assertThat(overlap).isLessThan(OVERLAP_BOUND);
         assertThat(StateChecks.escapes(r.finalState(), pile.box())).isZero();
@@ -120,7 +115,7 @@ class SoakTest {
         System.out.printf("SOAK settling pile (examples/settling-stack.json, restitution 0.7, tc 1e-3, gravity), %s threads %d: "
                         + "until %s, %d collisions, %d progress reports, wall %.1f s (%.3g collisions/s), load %.2f -> %.2f, "
                         + "deepest overlap %.3g, energy %.9g -> %.9g%n",
-                engineName, engine.threadsFor(THREADS), PILE_REACHED_TODAY, r.collisions(), progress.size(),
+                engineName, engine.threadsFor(THREADS), PILE_HORIZON, r.collisions(), progress.size(),
                 r.wallSeconds(), r.collisionsPerSecond(), load, loadAverage()[0], overlap, e0, e1);
     }
 
