@@ -49,6 +49,18 @@ public final class VirialAccumulator {
         }
     }
 
+    /** A copy of the block sums, to carry them to another JVM ({@link #addSums}). */
+    public double[] sums() {
+        return sums.clone();
+    }
+
+    /** Adds block sums taken with {@link #sums} from an accumulator of the same blocks. */
+    public void addSums(double[] other) {
+        for (int b = 0; b < sums.length; b++) {
+            sums[b] += other[b];
+        }
+    }
+
     /** The virial sum over the whole run so far (every block), for a sample's running total. */
     public double total() {
         double t = 0;

@@ -1,0 +1,81 @@
+package carom.engines.cluster;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import carom.core.engine.RunOptions;
+import carom.core.engine.RunResult;
+import carom.core.scene.Effects;
+import carom.core.scene.Scene;
+import carom.engines.fast.FastEngine;
+import carom.engines.reference.ChainScenes;
+import carom.engines.reference.Invariants;
+import carom.engines.reference.RandomScenes;
+import carom.engines.serial.SerialEngine;
+import java.util.List;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The cluster engine with real worker JVMs on 127.0.0.1 (2 and 3 nodes) against the serial reference
+ * and {@code fast}, on short horizons (before chaos separates exact engines): a walled and a periodic
+ * gas, a gas with gravity, restitution and the TC model, the six-disc chain across a slab edge, and a
+ * dense scene at packing fraction 0.7 that rolls windows back. After every test, passed or failed,
+ * no worker process may be left.
+ */
+class ClusterEngineTest {
+    private static final double SAME = 1e-8;
+
+    private static RunResult cluster(Scene scene, int nodes) {
+        RunOptions o = RunOptions.until(scene.until()).withTunable("nodes", Integer.toString(nodes));
+        RunResult r = new ClusterEngine().run(scene, o);
+        Invariants.noOverlapsAndInside(scene, r.finalState());
+        return r;
+    }
+
+    @AfterEach
+    void noWorkerLeftBehind() {
+        List<ProcessHandle> left = ProcessHandle.current().descendants().filter(ProcessHandle::isAlive).toList();
+        assertThat(left).as("processes left behind").isEmpty();
+    }
+
+    @Test
+    void denseWalledAndPeriodicScenesOnTwoNodesMatchSerial() {
+        Scene walls = RandomScenes.dense(900, 0.7, false, 4, 0.15);
+        RunResult r = cluster(walls, 2);
+        assertThat(r.counters().get("domains")).isEqualTo(2);
+        assertThat(r.counters().get("crossDomainEvents")).as("cross-slab contacts").isPositive();
+        assertThat(r.counters().get("rollbacks")).as("rollbacks").isPositive();
+        assertThat(r.counters().get("windows")).isEqualTo(r.counters().get("commits") + r.counters().get("rollbacks"));
+        assertThat(r.counters().get("messages")).isPositive();
+        assertThat(r.counters().get("messageBytes")).isGreaterThan(r.counters().get("messages"));
+        Invariants.assertSameRun(walls.name(), r, new SerialEngine().run(walls, RunOptions.until(walls.until())), SAME);
+    }
+
+    @Test
+    void periodicDenseSceneOnThreeNodesMatchesSerialAndFast() {
+        Scene scene = RandomScenes.dense(900, 0.7, true, 4, 0.15);
+        RunResult r = cluster(scene, 3);
+        assertThat(r.counters().get("domains")).isEqualTo(3);
+        assertThat(r.counters().get("rollbacks")).as("rollbacks").isPositive();
+        Invariants.assertSameRun(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())), SAME);
+        Invariants.assertSameRun(scene.name(), r, new FastEngine().run(scene, RunOptions.until(scene.until())), SAME);
+    }
+
+    @Test
+    void theSixDiscChainAcrossASlabEdgeMatchesSerial() {
+        for (Scene scene : new Scene[] {ChainScenes.alongX(), ChainScenes.downTheRows()}) {
+            RunResult r = cluster(scene, 2);
+            assertThat(r.counters().get("domains")).isEqualTo(2);
+            Invariants.assertSameRun(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())), SAME);
+        }
+    }
+
+    @Test
+    void gasWithGravityRestitutionAndTcMatchesSerialOnThreeNodes() {
+        Scene scene = RandomScenes.dense(900, 0.5, false, 11, 0.25)
+                .withEffects(new Effects(0, -2, 1, 1, 0).withRestitution(0.8, 0.9).withTc(1e-3));
+        RunResult r = cluster(scene, 3);
+        assertThat(r.counters().get("crossDomainEvents")).isPositive();
+        Invariants.assertSameRun(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())), SAME);
+    }
+}
