@@ -70,6 +70,11 @@ final class SimulateCommand implements Callable<Integer> {
                     + "and the summary says so.")
     Integer threads;
 
+    @Option(names = "--nodes", paramLabel = "K",
+            description = "Engine cluster: JVMs of the run, this one and K-1 workers it starts on 127.0.0.1 and stops"
+                    + " afterwards, 1 to 64; default 2.")
+    Integer nodes;
+
     @Option(names = "--out", paramLabel = "FINAL.csv", description = "Write the final state here (id,x,y,vx,vy).")
     Path out;
 
@@ -122,6 +127,7 @@ final class SimulateCommand implements Callable<Integer> {
         int workers = threads == null ? Math.min(Runtime.getRuntime().availableProcessors(), EnginesCommand.MAX_THREADS)
                 : checkedThreads(threads);
         Engine engine = new SceneFile(sceneFile).about(() -> EnginesCommand.engineNamed(engineName));
+        ClusterOptions.putNodes(engine, nodes, tunables);
         checkTunables(engine);
         checkSampling(engine);
         checkOutputs();

@@ -1,0 +1,27 @@
+package carom.app;
+
+import carom.core.BadInputException;
+import carom.core.engine.Engine;
+import java.util.Map;
+
+/** {@code simulate --nodes K}: the cluster engine's tunable {@code nodes}, refused for any other engine. */
+final class ClusterOptions {
+    static final int MAX_NODES = 64;
+
+    private ClusterOptions() {
+    }
+
+    static void putNodes(Engine engine, Integer nodes, Map<String, String> tunables) {
+        if (nodes == null) {
+            return;
+        }
+        if (!engine.name().equals("cluster")) {
+            throw new BadInputException("--nodes: only engine cluster runs on several JVMs (this run's engine is "
+                    + engine.name() + ")");
+        }
+        if (nodes < 1 || nodes > MAX_NODES) {
+            throw new BadInputException("--nodes: must be from 1 to " + MAX_NODES + ", got " + nodes);
+        }
+        tunables.put("nodes", Integer.toString(nodes));
+    }
+}
