@@ -146,6 +146,17 @@ final class ClusterLife implements AutoCloseable {
         }
     }
 
+    /** A worker this JVM started that is no longer running, described; null while all run. */
+    String deadWorker() {
+        for (int w = 0; w < workers.size(); w++) {
+            Process p = workers.get(w);
+            if (!p.isAlive()) {
+                return "worker " + (w + 1) + " (pid " + p.pid() + ") exited with status " + p.exitValue();
+            }
+        }
+        return null;
+    }
+
     ActorSystem<NodeCommand> system() {
         return system;
     }

@@ -68,12 +68,15 @@ final class ClusterRun {
     static final Tunable.Real REPLY_SECONDS = Tunable.Real.above("replySeconds", 600, 0, "seconds",
             "how long the coordinator waits for a node's answer to one command");
     private static final int CHUNK = 1 << 14;
+    /** Windows between progress reports. */
+    private static final int PROGRESS_WINDOWS = 64;
     private static final double INF = Double.POSITIVE_INFINITY;
 
     private final Scene scene;
     private final RunOptions options;
     private final double until;
     private final Duration replyTimeout;
+    private ClusterLife life;
     private ActorSystem<NodeCommand> system;
     private Serialization serialization;
     private List<ActorRef<NodeCommand>> nodes;
@@ -106,6 +109,7 @@ final class ClusterRun {
         double energyStart = Observables.kineticEnergy(initial);
         double[] momentumStart = Observables.momentum(initial);
         try (ClusterLife life = ClusterLife.local(count, join)) {
+            this.life = life;
             system = life.system();
             serialization = SerializationExtension.get(system.classicSystem());
             nodes = life.nodes();
@@ -253,6 +257,9 @@ final class ClusterRun {
                 return;
             }
             now = tStar;
+            if (windows % PROGRESS_WINDOWS == 0) {
+                options.progress().simulatedTime(mirror.epoch() + now);
+            }
         }
     }
 
@@ -332,15 +339,29 @@ final class ClusterRun {
     }
 
     private Reply await(CompletableFuture<Reply> f, int d, String type) {
-        Reply r;
-        try {
-            r = f.get(replyTimeout.toMillis() + 1000, TimeUnit.MILLISECONDS);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new EngineFailure("cluster: interrupted waiting for node " + d + " (" + type + ")");
-        } catch (ExecutionException | TimeoutException e) {
-            throw new EngineFailure("cluster: node " + d + " at " + nodes.get(d).path().address()
-                    + " did not answer '" + type + "' within " + replyTimeout.toSeconds() + " s", e);
+        Reply r = null;
+        long deadline = System.nanoTime() + replyTimeout.toNanos() + 1_000_000_000L;
+        while (r == null) {
+            try {
+                r = f.get(1, TimeUnit.SECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new EngineFailure("cluster: interrupted waiting for node " + d + " (" + type + ")");
+            } catch (TimeoutException e) {
+                // A worker JVM that died will never answer: say so now rather than at the timeout.
+                String dead = life.deadWorker();
+                if (dead != null) {
+                    throw new EngineFailure("cluster: " + dead + " in the middle of the run (no recovery yet: run it again)");
+                }
+                if (System.nanoTime() > deadline) {
+                    throw new EngineFailure("cluster: node " + d + " at " + nodes.get(d).path().address()
+                            + " did not answer '" + type + "' within " + replyTimeout.toSeconds() + " s", e);
+                }
+            } catch (ExecutionException e) {
+                String dead = life.deadWorker();
+                throw new EngineFailure("cluster: node " + d + " at " + nodes.get(d).path().address()
+                        + " did not answer '" + type + "'" + (dead == null ? "" : ": " + dead), e);
+            }
         }
         if (r instanceof Failed failed) {
             throw new EngineFailure("cluster: node " + d + " failed at '" + type + "': " + failed.message());

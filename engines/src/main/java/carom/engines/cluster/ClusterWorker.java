@@ -36,8 +36,8 @@ public final class ClusterWorker {
                 }
             }
         }
-        ActorSystem<NodeCommand> system = start(seeds, host, port);
         if (exitWithStdin) {
+            // Before anything else: a coordinator killed while this JVM starts must not leave it behind.
             Thread.ofPlatform().daemon().name("carom-node-stdin").start(() -> {
                 try {
                     while (System.in.read() >= 0) {
@@ -49,6 +49,7 @@ public final class ClusterWorker {
                 Runtime.getRuntime().halt(0);
             });
         }
+        ActorSystem<NodeCommand> system = start(seeds, host, port);
         system.getWhenTerminated().toCompletableFuture().join();
     }
 
