@@ -2,6 +2,7 @@ package carom.app;
 
 import akka.actor.typed.ActorSystem;
 import carom.core.BadInputException;
+import carom.engines.cluster.ClusterEngine;
 import carom.engines.cluster.ClusterWorker;
 import java.util.List;
 import java.util.concurrent.Callable;
@@ -35,7 +36,7 @@ final class NodeCommand implements Callable<Integer> {
     public Integer call() {
         List<String> seeds = List.of(join.split(","));
         for (String seed : seeds) {
-            checkHostPort("--join", seed);
+            ClusterEngine.checkHostPort("--join", seed);
         }
         if (port < 0 || port > 65535) {
             throw new BadInputException("--port: must be from 0 to 65535, got " + port);
@@ -46,21 +47,5 @@ final class NodeCommand implements Callable<Integer> {
         spec.commandLine().getOut().flush();
         system.getWhenTerminated().toCompletableFuture().join();
         return 0;
-    }
-
-    private static void checkHostPort(String option, String value) {
-        int colon = value.lastIndexOf(':');
-        boolean ok = colon > 0;
-        if (ok) {
-            try {
-                int p = Integer.parseInt(value.substring(colon + 1));
-                ok = p >= 1 && p <= 65535;
-            } catch (NumberFormatException e) {
-                ok = false;
-            }
-        }
-        if (!ok) {
-            throw new BadInputException(option + ": expected HOST:PORT, got '" + value + "'");
-        }
     }
 }

@@ -17,11 +17,54 @@ import java.util.List;
  * starts K-1 worker JVMs on 127.0.0.1 and stops them when the run ends, whatever happens
  * ({@link ClusterLife}).
  *
- * <p>Not yet: samples ({@code --every}, trajectories, observables, checkpoints), runs over workers
- * started with {@code ./carom node} on other machines, two-dimensional blocks, recovery from a
- * worker lost mid-run (the run stops with an error).
+ * {@link #joining} makes runs over workers already running ({@code ./carom node}) instead.
+ *
+ * <p>Not yet: samples ({@code --every}, trajectories, observables, checkpoints), two-dimensional
+ * blocks, recovery from a worker lost mid-run (the run stops with an error).
  */
 public final class ClusterEngine implements Engine {
+    /** Seed nodes of running workers ("host:port"); empty: each run starts its own workers. */
+    private final List<String> seeds;
+
+    /** Runs that start their own workers on 127.0.0.1 ({@code --nodes K}). */
+    public ClusterEngine() {
+        this(List.of());
+    }
+
+    private ClusterEngine(List<String> seeds) {
+        this.seeds = List.copyOf(seeds);
+    }
+
+    /**
+     * The engine for runs over workers already running ({@code ./carom node}), reached through
+     * {@code seeds} ("host:port" each): the run joins their cluster and uses {@code nodes - 1} of them.
+     */
+    public static ClusterEngine joining(List<String> seeds) {
+        if (seeds.isEmpty()) {
+            throw new BadInputException("--seed-nodes: give at least one HOST:PORT");
+        }
+        for (String seed : seeds) {
+            checkHostPort("--seed-nodes", seed);
+        }
+        return new ClusterEngine(seeds);
+    }
+
+    /** A {@code HOST:PORT} (port 1 to 65535), else bad input naming {@code option}. */
+    public static void checkHostPort(String option, String value) {
+        int colon = value.lastIndexOf(':');
+        boolean ok = colon > 0;
+        if (ok) {
+            try {
+                int p = Integer.parseInt(value.substring(colon + 1));
+                ok = p >= 1 && p <= 65535;
+            } catch (NumberFormatException e) {
+                ok = false;
+            }
+        }
+        if (!ok) {
+            throw new BadInputException(option + ": expected HOST:PORT, got '" + value + "'");
+        }
+    }
     @Override
     public String name() {
         return "cluster";
@@ -53,6 +96,6 @@ public final class ClusterEngine implements Engine {
         if (options.sampled()) {
             throw new BadInputException("engine cluster does not support samples yet (--every, --trajectory, --observe, --checkpoint)");
         }
-        return new ClusterRun(scene, options).run();
+        return new ClusterRun(scene, options, seeds).run();
     }
 }

@@ -157,6 +157,22 @@ final class ClusterLife implements AutoCloseable {
         return null;
     }
 
+    /**
+     * The address this JVM should listen on to reach {@code seeds}: 127.0.0.1 when they are all on
+     * this machine's loopback, else this machine's own address.
+     */
+    static String ownHost(List<String> seeds) {
+        boolean loopback = seeds.stream().allMatch(s -> s.startsWith("127.") || s.startsWith("localhost:"));
+        if (loopback) {
+            return "127.0.0.1";
+        }
+        try {
+            return java.net.InetAddress.getLocalHost().getHostAddress();
+        } catch (java.net.UnknownHostException e) {
+            return "127.0.0.1";
+        }
+    }
+
     ActorSystem<NodeCommand> system() {
         return system;
     }

@@ -95,7 +95,11 @@ final class ClusterRun {
     private long resyncs;
     private double resyncAt;
 
-    ClusterRun(Scene scene, RunOptions options) {
+    /** Seed nodes of running workers to join ("host:port"), or empty to start workers on 127.0.0.1. */
+    private final List<String> seeds;
+
+    ClusterRun(Scene scene, RunOptions options, List<String> seeds) {
+        this.seeds = seeds;
         this.scene = scene;
         this.options = options;
         this.until = options.until();
@@ -108,7 +112,8 @@ final class ClusterRun {
         Discs initial = scene.newDiscs();
         double energyStart = Observables.kineticEnergy(initial);
         double[] momentumStart = Observables.momentum(initial);
-        try (ClusterLife life = ClusterLife.local(count, join)) {
+        try (ClusterLife life = seeds.isEmpty() ? ClusterLife.local(count, join)
+                : ClusterLife.joining(seeds, ClusterLife.ownHost(seeds), 0, count, join)) {
             this.life = life;
             system = life.system();
             serialization = SerializationExtension.get(system.classicSystem());

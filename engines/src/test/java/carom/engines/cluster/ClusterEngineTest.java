@@ -109,4 +109,25 @@ class ClusterEngineTest {
             }
         }
     }
+
+    @Test
+    void runsOverARunningWorkerReachedThroughItsSeedNodeOneAfterAnother() throws Exception {
+        // A worker as './carom node --join' starts it, seeding its own cluster; two runs join it in turn.
+        int port = ClusterLife.freePort();
+        String java = ProcessHandle.current().info().command().orElseThrow();
+        Process worker = new ProcessBuilder(java, "-cp", System.getProperty("java.class.path"),
+                ClusterWorker.class.getName(), "--join", "127.0.0.1:" + port, "--port", Integer.toString(port))
+                .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+        try {
+            ClusterEngine engine = ClusterEngine.joining(List.of("127.0.0.1:" + port));
+            for (Scene scene : new Scene[] {RandomScenes.dense(900, 0.6, true, 3, 0.1), ChainScenes.alongX()}) {
+                RunResult r = engine.run(scene, RunOptions.until(scene.until()).withTunable("nodes", "2"));
+                assertThat(r.counters().get("domains")).isEqualTo(2);
+                Invariants.assertSameRun(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())), SAME);
+                assertThat(worker.isAlive()).as("the worker serves the next run").isTrue();
+            }
+        } finally {
+            worker.destroyForcibly().waitFor(30, TimeUnit.SECONDS);
+        }
+    }
 }
