@@ -53,6 +53,7 @@ public enum Counter {
     MERGED_CROSS_SLAB_EVENTS("mergedCrossSlabEvents", "events of merged phases that would have been cross-slab ones"),
     // cluster (with the slabs' window counters above and messages, messages.TYPE).
     NODES("nodes", "JVMs of the cluster (the coordinator's and its workers)"),
+    RECOVERIES("recoveries", "runs carried on from the last checkpoint after a worker was lost"),
     MESSAGE_BYTES("messageBytes", "bytes of every message as Akka's serializer writes it"),
     MESSAGES_PER_WINDOW("messagesPerWindow", "messages per window, rounded (every message of the run over the windows)"),
     MESSAGE_BYTES_PER_WINDOW("messageBytesPerWindow", "message bytes per window, rounded"),

@@ -82,7 +82,8 @@ public final class ClusterEngine implements Engine {
 
     @Override
     public List<Tunable<?>> tunables() {
-        return List.of(ClusterRun.NODES, KernelTunables.CELL_FACTOR, ClusterRun.JOIN_SECONDS, ClusterRun.REPLY_SECONDS);
+        return List.of(ClusterRun.NODES, KernelTunables.CELL_FACTOR, ClusterRun.JOIN_SECONDS, ClusterRun.REPLY_SECONDS,
+                ClusterRun.CHECKPOINT_WINDOWS);
     }
 
     @Override

@@ -34,6 +34,7 @@ final class ClusterLife implements AutoCloseable {
     private final ActorSystem<NodeCommand> system;
     private final List<Process> workers;
     private final List<Path> workerLogs;
+    private final List<Integer> workerPorts = new ArrayList<>();
     private final Thread reaper;
     private List<ActorRef<NodeCommand>> nodes = List.of();
 
@@ -117,6 +118,7 @@ final class ClusterLife implements AutoCloseable {
                 Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log.toFile()).start();
                 workers.add(p);
                 logs.add(log);
+                life.workerPorts.add(workerPort);
             }
             life.awaitNodes(count, joinTimeout);
             return life;
@@ -150,7 +152,8 @@ final class ClusterLife implements AutoCloseable {
     String deadWorker() {
         for (int w = 0; w < workers.size(); w++) {
             Process p = workers.get(w);
-            if (!p.isAlive()) {
+            int port = w < workerPorts.size() ? workerPorts.get(w) : -1;
+            if (!p.isAlive() && nodes.stream().anyMatch(r -> r.path().address().getPort().map(q -> q == port).orElse(false))) {
                 return "worker " + (w + 1) + " (pid " + p.pid() + ") exited with status " + p.exitValue();
             }
         }
@@ -171,6 +174,34 @@ final class ClusterLife implements AutoCloseable {
         } catch (java.net.UnknownHostException e) {
             return "127.0.0.1";
         }
+    }
+
+    /**
+     * Forgets the nodes of workers that are no longer running (their processes reaped); returns the
+     * nodes that remain, this JVM's first.
+     */
+    List<ActorRef<NodeCommand>> dropDeadWorkers() {
+        List<ActorRef<NodeCommand>> alive = new ArrayList<>(nodes);
+        for (int w = 0; w < workers.size(); w++) {
+            if (!workers.get(w).isAlive()) {
+                int port = workerPorts.get(w);
+                alive.removeIf(r -> r.path().address().getPort().map(p -> p == port).orElse(false));
+            }
+        }
+        nodes = List.copyOf(alive);
+        return nodes;
+    }
+
+    /** Whether any worker this JVM started has died and is still counted among the nodes. */
+    boolean lostWorker() {
+        for (int w = 0; w < workers.size(); w++) {
+            int port = workerPorts.get(w);
+            if (!workers.get(w).isAlive()
+                    && nodes.stream().anyMatch(r -> r.path().address().getPort().map(p -> p == port).orElse(false))) {
+                return true;
+            }
+        }
+        return false;
     }
 
     ActorSystem<NodeCommand> system() {

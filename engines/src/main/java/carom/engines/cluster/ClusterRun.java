@@ -67,6 +67,8 @@ final class ClusterRun {
             "how long the coordinator waits for every node to join before it stops with error: naming the missing ones");
     static final Tunable.Real REPLY_SECONDS = Tunable.Real.above("replySeconds", 600, 0, "seconds",
             "how long the coordinator waits for a node's answer to one command");
+    static final Tunable.Whole CHECKPOINT_WINDOWS = new Tunable.Whole("checkpointWindows", 1024, 1, 1L << 40, "windows",
+            "windows between the checkpoints a lost worker is recovered from (each costs every disc's state in messages)");
     private static final int CHUNK = 1 << 14;
     /** Windows between progress reports. */
     private static final int PROGRESS_WINDOWS = 64;
@@ -94,6 +96,19 @@ final class ClusterRun {
     private long migrations;
     private long resyncs;
     private double resyncAt;
+    private final long checkpointWindows;
+    /** The last checkpoint; the slabs' counters and virial lost with the slabs a recovery replaced. */
+    private Checkpoint checkpoint;
+    private long[] counterBase = new long[6];
+    private double[] virialBase;
+    private long recoveries;
+
+    /** A worker JVM died during the run: recover from the last checkpoint. */
+    private static final class WorkerLost extends RuntimeException {
+        WorkerLost(String message) {
+            super(message, null, false, false);
+        }
+    }
 
     /** Seed nodes of running workers to join ("host:port"), or empty to start workers on 127.0.0.1. */
     private final List<String> seeds;
@@ -104,6 +119,8 @@ final class ClusterRun {
         this.options = options;
         this.until = options.until();
         this.replyTimeout = Duration.ofMillis((long) (REPLY_SECONDS.of(options) * 1000));
+        this.checkpointWindows = CHECKPOINT_WINDOWS.of(options);
+        this.virialBase = VirialAccumulator.forRun(until).sums();
     }
 
     RunResult run() {
@@ -121,18 +138,27 @@ final class ClusterRun {
             long started = System.nanoTime();
             mirror = new SlabMirror(scene, KernelTunables.CELL_FACTOR.of(options), count, until);
             domains = mirror.domains();
-            for (int d = 0; d < domains; d++) {
+            for (int d = 0; d < nodes.size(); d++) {
                 sendScene(d, initial);
             }
-            double span = 0;
-            for (Reply r : askAll("start", d -> Start::new)) {
-                Started s = (Started) r;
-                mirror.importStates(s.edge());
-                span = Math.max(span, s.span());
+            startSlabs();
+            takeCheckpoint();
+            boolean lost = false;
+            while (true) {
+                try {
+                    if (lost) {
+                        recover();
+                        lost = false;
+                    }
+                    loop();
+                    break;
+                } catch (WorkerLost e) {
+                    if (!seeds.isEmpty()) {
+                        throw new EngineFailure("cluster: " + e.getMessage() + " (runs over --seed-nodes do not recover yet)");
+                    }
+                    lost = true;
+                }
             }
-            mirror.predictAllCross(0);
-            resyncAt = DiscTable.RESYNC_SPANS * span;
-            loop();
             Discs out = scene.newDiscs();
             long[] sums = new long[6];
             VirialAccumulator virial = mirror.virial;
@@ -152,6 +178,10 @@ final class ClusterRun {
                 }
                 virial.addSums(f.virial());
             }
+            for (int k = 0; k < sums.length; k++) {
+                sums[k] += counterBase[k];
+            }
+            virial.addSums(virialBase);
             double seconds = (System.nanoTime() - started) * 1e-9;
             double energyEnd = Observables.kineticEnergy(out);
             Pressure pressure = VirialAccumulator.pressureOf(virial, scene, out, energyStart, energyEnd);
@@ -176,6 +206,7 @@ final class ClusterRun {
         c.put(Counter.CELL_CROSSINGS.key, sums[3]);
         c.put(Counter.STALE_EVENTS.key, sums[4]);
         c.put(Counter.RESYNCS.key, resyncs);
+        c.put(Counter.RECOVERIES.key, recoveries);
         c.put(Counter.MESSAGES.key, messageCount);
         c.put(Counter.MESSAGE_BYTES.key, bytes);
         c.put(Counter.MESSAGES_PER_WINDOW.key, windows == 0 ? 0 : Math.round((double) messageCount / windows));
@@ -186,6 +217,77 @@ final class ClusterRun {
             c.put(Counter.messagesOf(e.getKey()), e.getValue());
         }
         return c;
+    }
+
+    /** First predictions on every slab, the edge records into the mirror, the cross events predicted. */
+    private void startSlabs() {
+        double span = 0;
+        for (Reply r : askAll("start", d -> Start::new)) {
+            Started s = (Started) r;
+            mirror.importStates(s.edge());
+            span = Math.max(span, s.span());
+        }
+        mirror.predictAllCross(0);
+        resyncAt = DiscTable.RESYNC_SPANS * span;
+    }
+
+    /**
+     * A checkpoint at local time 0 (the caller has just re-anchored the clocks): every slab's discs
+     * in parts of at most {@link #CHUNK} states per message, and the counts so far.
+     */
+    private void takeCheckpoint() {
+        int n = scene.size();
+        int parts = Math.max(1, (n + CHUNK - 1) / CHUNK);
+        List<StateBatch> states = new ArrayList<>();
+        long[] slabCounters = counterBase.clone();
+        double[] slabVirial = virialBase.clone();
+        for (int part = 0; part < parts; part++) {
+            int p = part;
+            for (Reply r : askAll("snapshot", d -> rt -> new Protocol.Snapshot(p, parts, rt))) {
+                Protocol.SnapshotPart sp = (Protocol.SnapshotPart) r;
+                states.add(sp.states());
+                if (part == 0) {
+                    for (int k = 0; k < slabCounters.length; k++) {
+                        slabCounters[k] += sp.counters()[k];
+                    }
+                    for (int b = 0; b < slabVirial.length; b++) {
+                        slabVirial[b] += sp.virial()[b];
+                    }
+                }
+            }
+        }
+        checkpoint = new Checkpoint(mirror.epoch(), states, slabCounters, slabVirial, mirror.virial.sums(),
+                mirror.crossPairCollisions, crossDomainEvents, migrations);
+    }
+
+    /**
+     * Carries on from the last checkpoint on the nodes that remain: the slabs cut anew for them, every
+     * disc's state written into each node's table and the mirror, every disc predicted anew. Exact:
+     * the checkpoint is a state between windows, every event before it processed and none after.
+     */
+    private void recover() {
+        recoveries++;
+        nodes = life.dropDeadWorkers();
+        Checkpoint cp = checkpoint;
+        mirror = new SlabMirror(scene, KernelTunables.CELL_FACTOR.of(options), nodes.size(), until);
+        mirror.startAt(cp.epoch());
+        domains = mirror.domains();
+        for (StateBatch b : cp.states()) {
+            mirror.importStates(b);
+        }
+        mirror.crossPairCollisions = cp.crossPairCollisions();
+        mirror.virial.addSums(cp.crossVirial());
+        crossDomainEvents = cp.crossDomainEvents();
+        migrations = cp.migrations();
+        counterBase = cp.slabCounters().clone();
+        virialBase = cp.slabVirial().clone();
+        for (int d = 0; d < domains; d++) {
+            tell(d, "recover", new Protocol.Recover(d, domains, cp.epoch()));
+            for (StateBatch b : cp.states()) {
+                tell(d, "recover", new Protocol.RecoverChunk(b));
+            }
+        }
+        startSlabs();
     }
 
     /** The scene to node d: its header, then its discs in chunks (each under Artery's frame size). */
@@ -262,6 +364,11 @@ final class ClusterRun {
                 return;
             }
             now = tStar;
+            if (windows % checkpointWindows == 0) {
+                resync(now);
+                now = 0;
+                takeCheckpoint();
+            }
             if (windows % PROGRESS_WINDOWS == 0) {
                 options.progress().simulatedTime(mirror.epoch() + now);
             }
@@ -356,7 +463,7 @@ final class ClusterRun {
                 // A worker JVM that died will never answer: say so now rather than at the timeout.
                 String dead = life.deadWorker();
                 if (dead != null) {
-                    throw new EngineFailure("cluster: " + dead + " in the middle of the run (no recovery yet: run it again)");
+                    throw new WorkerLost(dead + " in the middle of the run");
                 }
                 if (System.nanoTime() > deadline) {
                     throw new EngineFailure("cluster: node " + d + " at " + nodes.get(d).path().address()
@@ -364,8 +471,11 @@ final class ClusterRun {
                 }
             } catch (ExecutionException e) {
                 String dead = life.deadWorker();
+                if (dead != null) {
+                    throw new WorkerLost(dead + " in the middle of the run");
+                }
                 throw new EngineFailure("cluster: node " + d + " at " + nodes.get(d).path().address()
-                        + " did not answer '" + type + "'" + (dead == null ? "" : ": " + dead), e);
+                        + " did not answer '" + type + "'", e);
             }
         }
         if (r instanceof Failed failed) {

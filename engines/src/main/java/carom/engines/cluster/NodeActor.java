@@ -18,6 +18,10 @@ import carom.engines.cluster.Protocol.Finish;
 import carom.engines.cluster.Protocol.Finished;
 import carom.engines.cluster.Protocol.Install;
 import carom.engines.cluster.Protocol.NodeCommand;
+import carom.engines.cluster.Protocol.Recover;
+import carom.engines.cluster.Protocol.RecoverChunk;
+import carom.engines.cluster.Protocol.Snapshot;
+import carom.engines.cluster.Protocol.SnapshotPart;
 import carom.engines.cluster.Protocol.Replan;
 import carom.engines.cluster.Protocol.Replanned;
 import carom.engines.cluster.Protocol.Reply;
@@ -46,7 +50,12 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
     static final ServiceKey<NodeCommand> KEY = ServiceKey.create(NodeCommand.class, "carom-node");
 
     private SceneStart header;
+    /** The slab this node runs now (a recovery may give it another), of how many. */
+    private int domain = -1;
+    private int domains;
     private SceneBuilder builder;
+    /** The scene, kept after the first start for a recovery. */
+    private Scene scene;
     private int received;
     private SlabNode slab;
 
@@ -66,6 +75,17 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
         return newReceiveBuilder()
                 .onMessage(SceneStart.class, this::sceneStart)
                 .onMessage(SceneChunk.class, this::sceneChunk)
+                .onMessage(Recover.class, this::recover)
+                .onMessage(RecoverChunk.class, m -> {
+                    slab.restoreAll(m.states());
+                    return this;
+                })
+                .onMessage(Snapshot.class, m -> answer(m.replyTo(), () -> {
+                    int n = slab.discs();
+                    int from = (int) ((long) n * m.part() / m.parts());
+                    int to = (int) ((long) n * (m.part() + 1) / m.parts());
+                    return new SnapshotPart(domain(), slab.ownStates(from, to), slab.counters(), slab.virialSums());
+                }))
                 .onMessage(Start.class, m -> answer(m.replyTo(), () -> start()))
                 .onMessage(Window.class, m -> answer(m.replyTo(), () -> {
                     slab.runWindow(m.end(), m.inclusive());
@@ -87,7 +107,7 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
     }
 
     private int domain() {
-        return header == null ? -1 : header.domain();
+        return domain;
     }
 
     private static StateBatch empty() {
@@ -108,6 +128,9 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
 
     private Behavior<NodeCommand> sceneStart(SceneStart m) {
         header = m;
+        domain = m.domain();
+        domains = m.domains();
+        scene = null;
         slab = null;
         received = 0;
         builder = SceneBuilder.create(m.name()).box(m.width(), m.height(), BoundaryKind.valueOf(m.boundary()));
@@ -116,6 +139,19 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
         }
         double[] e = m.effects();
         builder.effects(new Effects(e[0], e[1], e[2], e[3], e[4])).until(m.until());
+        return this;
+    }
+
+    private Behavior<NodeCommand> recover(Recover m) {
+        domain = m.domain();
+        domains = m.domains();
+        if (scene == null) {
+            // A node that idled (more nodes than slabs) builds the scene it was sent now.
+            scene = builder.build();
+            builder = null;
+        }
+        slab = new SlabNode(scene, header.cellFactor(), domains, domain, header.until());
+        slab.startAt(m.epoch());
         return this;
     }
 
@@ -128,13 +164,15 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
     }
 
     private Reply start() {
-        if (builder == null || received != header.discs()) {
-            throw new IllegalStateException("scene incomplete: " + received + " of "
-                    + (header == null ? "?" : header.discs()) + " discs received");
+        if (slab == null) {
+            if (builder == null || received != header.discs()) {
+                throw new IllegalStateException("scene incomplete: " + received + " of "
+                        + (header == null ? "?" : header.discs()) + " discs received");
+            }
+            scene = builder.build();
+            builder = null;
+            slab = new SlabNode(scene, header.cellFactor(), domains, domain, header.until());
         }
-        Scene scene = builder.build();
-        builder = null;
-        slab = new SlabNode(scene, header.cellFactor(), header.domains(), header.domain(), header.until());
         double span = slab.start();
         return new Started(domain(), span, slab.edgeStates());
     }

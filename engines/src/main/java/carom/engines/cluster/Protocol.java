@@ -39,6 +39,22 @@ public final class Protocol {
             implements NodeCommand {
     }
 
+    /**
+     * Fault recovery: this node now runs slab {@code domain} of {@code domains} from a checkpoint taken
+     * at {@code epoch} (every disc's clock there); the states follow in {@link RecoverChunk}s, then
+     * {@link Start}.
+     */
+    public record Recover(int domain, int domains, double epoch) implements NodeCommand {
+    }
+
+    /** Disc states of a checkpoint, every disc's (owned here or not). */
+    public record RecoverChunk(StateBatch states) implements NodeCommand {
+    }
+
+    /** A checkpoint's part {@code part} of {@code parts}: the slab's discs with internal ids in that share. */
+    public record Snapshot(int part, int parts, ActorRef<Reply> replyTo) implements NodeCommand {
+    }
+
     /** First predictions; the reply carries the calendar's span and the slab's edge-column records. */
     public record Start(ActorRef<Reply> replyTo) implements NodeCommand {
     }
@@ -81,6 +97,10 @@ public final class Protocol {
 
     /** Installed or emigrated discs' records as the node now holds them (with its predictions). */
     public record States(int domain, StateBatch states) implements Reply {
+    }
+
+    /** A checkpoint's part, with the slab's counters and pair virial sums so far. */
+    public record SnapshotPart(int domain, StateBatch states, long[] counters, double[] virial) implements Reply {
     }
 
     public record Replanned(int domain, double span) implements Reply {

@@ -101,6 +101,12 @@ public final class SlabMirror {
         return clock.epoch;
     }
 
+    /** Local time counts from {@code epoch} (a run recovered from a checkpoint taken then). */
+    public void startAt(double epoch) {
+        clock.epoch = epoch;
+        clock.untilLocal = clock.until - epoch;
+    }
+
     /** The slab that owns disc i (by its record here: right for discs in edge columns). */
     public int ownerOf(int i) {
         return columns.ownerOfDisc(i);

@@ -55,6 +55,40 @@ public final class SlabNode {
         }
     }
 
+    /**
+     * Starts this slab again from a checkpoint (the fault recovery of the cluster engine): local time
+     * counts from {@code epoch}; {@link #restoreAll} then writes every disc's state, and {@link #start}
+     * predicts anew.
+     */
+    public void startAt(double epoch) {
+        clock.epoch = epoch;
+        clock.untilLocal = clock.until - epoch;
+    }
+
+    /** Writes every state of {@code batch} into this table (cells relinked), owned or not. */
+    public void restoreAll(StateBatch batch) {
+        for (int q = 0; q < batch.size(); q++) {
+            scratch.copyIn(0, batch.doubles(), q * doublesPer, batch.ints(), q * SavedStates.intsPerState());
+            scratch.restore(0, batch.ids()[q]);
+        }
+    }
+
+    /** Current records of this slab's discs with internal ids in [from, to) (a checkpoint's part). */
+    public StateBatch ownStates(int from, int to) {
+        StateBatch.Builder b = builder(to - from);
+        for (int i = from; i < to; i++) {
+            if (columns.ownerOfDisc(i) == domain.id) {
+                addRecord(b, i);
+            }
+        }
+        return b.build();
+    }
+
+    /** Discs of the scene. */
+    public int discs() {
+        return table.n;
+    }
+
     /** Current records of this slab's mobile discs in edge columns (the coordinator's first view of them). */
     public StateBatch edgeStates() {
         StateBatch.Builder b = builder(64);

@@ -1,0 +1,15 @@
+package carom.engines.cluster;
+
+import carom.engines.slabs.StateBatch;
+import java.util.List;
+
+/**
+ * What the coordinator keeps to recover from a lost worker ({@link ClusterRun}): every disc's state
+ * at a barrier where the run had just re-anchored its clocks (so every disc's clock is 0 at absolute
+ * time {@code epoch}), and the run's counts up to there: the slabs' counters and pair virial, the
+ * coordinator's cross-slab collisions, contacts, migrations and virial. Kept in the coordinator's JVM,
+ * which survives any worker.
+ */
+record Checkpoint(double epoch, List<StateBatch> states, long[] slabCounters, double[] slabVirial,
+                  double[] crossVirial, long crossPairCollisions, long crossDomainEvents, long migrations) {
+}
