@@ -108,7 +108,9 @@ final class ClusterLife implements AutoCloseable {
                 Path log = Files.createTempFile("carom-node-", ".log");
                 List<String> cmd = new ArrayList<>(List.of(javaBin));
                 for (String arg : java.lang.management.ManagementFactory.getRuntimeMXBean().getInputArguments()) {
-                    if (arg.startsWith("-Xmx") || arg.startsWith("--enable-native-access")) {
+                    // The heap limit and the JDK's access flags of this JVM (as ./carom sets them), nothing else.
+                    if (arg.startsWith("-Xmx") || arg.startsWith("--enable-native-access")
+                            || arg.startsWith("--sun-misc-unsafe-memory-access")) {
                         cmd.add(arg);
                     }
                 }
