@@ -12,4 +12,11 @@ import java.util.List;
  */
 record Checkpoint(double epoch, List<StateBatch> states, long[] slabCounters, double[] slabVirial,
                   double[] crossVirial, long crossPairCollisions, long crossDomainEvents, long migrations) {
+    /**
+     * The run's start: no states (every node builds them from the scene it holds), nothing counted,
+     * {@code counters} slab counters and {@code blocks} virial blocks.
+     */
+    static Checkpoint atStart(int counters, int blocks) {
+        return new Checkpoint(0, List.of(), new long[counters], new double[blocks], new double[blocks], 0, 0, 0);
+    }
 }

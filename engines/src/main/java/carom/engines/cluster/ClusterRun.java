@@ -141,16 +141,22 @@ final class ClusterRun {
             for (int d = 0; d < nodes.size(); d++) {
                 sendScene(d, initial);
             }
-            startSlabs();
-            takeCheckpoint();
+            // The first checkpoint is the scene itself, which every node holds: no message.
+            checkpoint = Checkpoint.atStart(counterBase.length, virialBase.length);
             boolean lost = false;
+            boolean begun = false;
+            Reply[] finals;
             while (true) {
                 try {
                     if (lost) {
                         recover();
                         lost = false;
+                    } else if (!begun) {
+                        begun = true;
+                        startSlabs();
                     }
                     loop();
+                    finals = askAll("finish", d -> Finish::new);
                     break;
                 } catch (WorkerLost e) {
                     if (!seeds.isEmpty()) {
@@ -162,7 +168,7 @@ final class ClusterRun {
             Discs out = scene.newDiscs();
             long[] sums = new long[6];
             VirialAccumulator virial = mirror.virial;
-            for (Reply r : askAll("finish", d -> Finish::new)) {
+            for (Reply r : finals) {
                 Finished f = (Finished) r;
                 StateBatch fin = f.finals();
                 for (int q = 0; q < fin.size(); q++) {

@@ -18,6 +18,8 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 
 /**
  * The cluster engine with real worker JVMs on 127.0.0.1 (2 and 3 nodes) against the serial reference
@@ -83,12 +85,15 @@ class ClusterEngineTest {
         Invariants.assertSameRun(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())), SAME);
     }
 
-    @Test
-    void aWorkerKilledMidRunIsRecoveredFromTheLastCheckpointAndTheRunEndsInTheSameState() throws Exception {
+    @ParameterizedTest(name = "checkpoints every {0} windows")
+    @CsvSource({"40", "1000000"})
+    void aWorkerKilledMidRunIsRecoveredFromTheLastCheckpointAndTheRunEndsInTheSameState(String checkpointWindows)
+            throws Exception {
+        // Killed after 64 windows: recovered from the checkpoint of window 40, or from the scene (the first checkpoint).
         Scene scene = RandomScenes.dense(900, 0.5, true, 5, 0.5);
         CountDownLatch running = new CountDownLatch(1);
         RunOptions o = new RunOptions(scene.until(), 1, t -> running.countDown(),
-                Map.of("nodes", "3", "checkpointWindows", "40"));
+                Map.of("nodes", "3", "checkpointWindows", checkpointWindows));
         CompletableFuture<RunResult> run = CompletableFuture.supplyAsync(() -> new ClusterEngine().run(scene, o));
         try {
             assertThat(running.await(300, TimeUnit.SECONDS)).as("the run got going").isTrue();
