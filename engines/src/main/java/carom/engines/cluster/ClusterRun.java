@@ -59,6 +59,10 @@ import java.util.function.IntFunction;
  * violation an {@link Undo} and {@link Undone} round; then the cross event, a collision computed on
  * the mirror and {@link Install}ed at both owners, or a migration ({@link Emigrate}, then
  * {@link Install} at the new owner). Every message is counted with its serialized size.
+ *
+ * <p>Faults: every {@link #CHECKPOINT_WINDOWS} windows the coordinator takes a {@link Checkpoint}
+ * (the first is the scene); when a worker JVM it started dies, the run carries on from the last one on
+ * the nodes that remain ({@link #recover}).
  */
 final class ClusterRun {
     static final Tunable.Whole NODES = new Tunable.Whole("nodes", 2, 1, 64, "JVMs",

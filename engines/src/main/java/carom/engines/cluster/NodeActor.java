@@ -93,7 +93,7 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
                             slab.changedSegments());
                 }))
                 .onMessage(Undo.class, m -> answer(m.replyTo(), () -> new Undone(domain(),
-                        slab.undo(m.tStar(), m.keepDisc(), m.keepEntry()) ? slab.changedRecords() : empty())))
+                        slab.undo(m.tStar(), m.keepDisc(), m.keepEntry()) ? slab.changedRecords() : StateBatch.EMPTY)))
                 .onMessage(Install.class, m -> answer(m.replyTo(), () -> install(m)))
                 .onMessage(Emigrate.class, m -> answer(m.replyTo(),
                         () -> new States(domain(), slab.emigrate(m.disc(), m.now()))))
@@ -108,10 +108,6 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
 
     private int domain() {
         return domain;
-    }
-
-    private static StateBatch empty() {
-        return new StateBatch(new int[0], new int[0], new double[0], new double[0], new int[0]);
     }
 
     /** Carries out a command and answers it; a failure is answered too, never left to a timeout. */
@@ -184,7 +180,7 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
             StateBatch one = slab.install(in, q, m.now());
             out = out == null ? one : concat(out, one);
         }
-        return new States(domain(), out == null ? empty() : out);
+        return new States(domain(), out == null ? StateBatch.EMPTY : out);
     }
 
     private static StateBatch concat(StateBatch a, StateBatch b) {

@@ -10,7 +10,8 @@ package carom.engines.slabs;
  * agree across them. Plain arrays: this is what goes over the wire.
  */
 public record StateBatch(int[] ids, int[] entries, double[] ends, double[] doubles, int[] ints) {
-    static final StateBatch EMPTY = new StateBatch(new int[0], new int[0], new double[0], new double[0], new int[0]);
+    /** No states. */
+    public static final StateBatch EMPTY = new StateBatch(new int[0], new int[0], new double[0], new double[0], new int[0]);
 
     /** States in the batch. */
     public int size() {
