@@ -17,7 +17,7 @@ import picocli.CommandLine.Spec;
         description = "Exact event-driven simulation of hard discs in 2D.",
         subcommands = {SimulateCommand.class, ResumeCommand.class, CompressCommand.class, EnginesCommand.class, carom.app.render.RenderCommand.class,
                 carom.app.animate.AnimateCommand.class, carom.app.report.ReportCommand.class,
-                carom.app.analyze.AnalyzeCommand.class},
+                carom.app.analyze.AnalyzeCommand.class, NodeCommand.class},
         footer = {"", "Measurements are the lab's (lab/target/carom-lab.jar; ./carom runs it):",
                 "  carom experiment thesis|actors  the thesis's experiment; actors per core",
                 "  carom study accuracy            engines' errors against the serial engine",

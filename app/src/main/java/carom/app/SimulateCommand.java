@@ -73,6 +73,15 @@ final class SimulateCommand implements Callable<Integer> {
                     + "and the summary says so.")
     Integer threads;
 
+    @Option(names = "--nodes", paramLabel = "K",
+            description = "Engine cluster: JVMs of the run, this one and K-1 workers it starts on 127.0.0.1 and stops"
+                    + " afterwards, 1 to 64; default 2.")
+    Integer nodes;
+
+    @Option(names = "--seed-nodes", paramLabel = "HOST:PORT,...",
+            description = "Engine cluster: use running workers ('carom node') reached through these seed nodes instead of starting workers.")
+    String seedNodes;
+
     @Option(names = "--out", paramLabel = "FINAL.csv", description = "Write the final state here (id,x,y,vx,vy).")
     Path out;
 
@@ -133,7 +142,9 @@ final class SimulateCommand implements Callable<Integer> {
         Double checkedUntil = until == null ? null : checkedUntil(until);
         int workers = threads == null ? Math.min(Runtime.getRuntime().availableProcessors(), EnginesCommand.MAX_THREADS)
                 : checkedThreads(threads);
-        Engine engine = new SceneFile(sceneFile).about(() -> EnginesCommand.engineNamed(engineName));
+        Engine engine = ClusterOptions.withSeeds(new SceneFile(sceneFile).about(() -> EnginesCommand.engineNamed(engineName)),
+                seedNodes);
+        ClusterOptions.putNodes(engine, nodes, tunables);
         checkTunables(engine);
         checkSampling(engine);
         CheckpointOptions.check(engine, checkpoint, checkpointEvery);

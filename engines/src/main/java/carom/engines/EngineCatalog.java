@@ -3,6 +3,7 @@ package carom.engines;
 import carom.core.BadInputException;
 import carom.core.engine.Engine;
 import carom.engines.akka.AkkaEngine;
+import carom.engines.cluster.ClusterEngine;
 import carom.engines.fast.FastEngine;
 import carom.engines.serial.SerialEngine;
 import carom.engines.slabs.SlabsEngine;
@@ -14,7 +15,8 @@ import java.util.List;
 /** Every engine carom ships, in the order {@code carom engines} lists them. */
 public final class EngineCatalog {
     private static final List<Engine> ENGINES = List.of(new SerialEngine(), new FastEngine(), new StripesEngine(),
-            new AkkaEngine(), new VThreadsEngine(), new SteppedEngine(), new SlabsEngine());
+            new AkkaEngine(), new VThreadsEngine(), new SteppedEngine(), new SlabsEngine(),
+            new ClusterEngine());
 
     private EngineCatalog() {
     }

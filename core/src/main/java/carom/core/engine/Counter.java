@@ -61,6 +61,13 @@ public enum Counter {
     MERGES("merges", "merged phases begun: one domain runs every disc while the slabs' windows do not pay"),
     MERGED_EVENTS("mergedEvents", "events processed in merged phases"),
     MERGED_CROSS_SLAB_EVENTS("mergedCrossSlabEvents", "events of merged phases that would have been cross-slab ones"),
+    // cluster (with the slabs' window counters above and messages, messages.TYPE).
+    NODES("nodes", "JVMs of the cluster (the coordinator's and its workers)"),
+    RECOVERIES("recoveries", "runs carried on from the last checkpoint after a worker was lost"),
+    MESSAGE_BYTES("messageBytes", "bytes of every message as Akka's serializer writes it"),
+    MESSAGES_PER_WINDOW("messagesPerWindow", "messages per window, rounded (every message of the run over the windows)"),
+    MESSAGE_BYTES_PER_WINDOW("messageBytesPerWindow", "message bytes per window, rounded"),
+    MESSAGE_BYTES_PER_CROSS_EVENT("messageBytesPerCrossEvent", "message bytes per cross-domain event (contact or migration), rounded"),
     BARRIER_SPINS("barrierSpins", "busy-wait iterations at the window barrier before a thread parks"),
     SETUP_NANOS("setupNanos", "wall nanoseconds building the table and domains"),
     START_NANOS("startNanos", "wall nanoseconds of the first predictions"),

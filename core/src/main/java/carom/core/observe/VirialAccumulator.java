@@ -79,6 +79,17 @@ public final class VirialAccumulator {
         running = savedTotal;
     }
 
+    /**
+     * Adds block sums taken with {@link #blockSums} from an accumulator of the same blocks (another
+     * JVM's slab); the running total takes their sum.
+     */
+    public void addSums(double[] other) {
+        for (int b = 0; b < sums.length; b++) {
+            sums[b] += other[b];
+            running += other[b];
+        }
+    }
+
     /** The virial sum over the whole run so far, summed in the order added, for a sample's running total. */
     public double total() {
         return running;

@@ -95,6 +95,37 @@ public final class SavedStates {
         restitution.collided(i, savedDoubles[e * doubles + stride]);
     }
 
+    /** Doubles of one state as {@link #copyOut} writes it (the record and the last collision time). */
+    public int doublesPerState() {
+        return doubles;
+    }
+
+    /** Ints of one state as {@link #copyOut} writes it (CELL, PARTNER, PCOUNT, COUNT). */
+    public static int intsPerState() {
+        return INTS;
+    }
+
+    /**
+     * Copies the state in slot {@code e} out to {@code d} at {@code dAt} ({@link #doublesPerState}
+     * doubles) and {@code in} at {@code iAt} ({@link #intsPerState} ints): a disc's state as a message
+     * carries it to another JVM, whose own table reads it back with {@link #copyIn}.
+     */
+    public void copyOut(int e, double[] d, int dAt, int[] in, int iAt) {
+        System.arraycopy(savedDoubles, e * doubles, d, dAt, doubles);
+        System.arraycopy(savedInts, e * INTS, in, iAt, INTS);
+    }
+
+    /** Puts a state written by {@link #copyOut} (of a table of the same scene) into slot {@code e}. */
+    public void copyIn(int e, double[] d, int dAt, int[] in, int iAt) {
+        if ((e + 1) * INTS > savedInts.length) {
+            int capacity = Math.max(2 * e, e + 1);
+            savedDoubles = Arrays.copyOf(savedDoubles, capacity * doubles);
+            savedInts = Arrays.copyOf(savedInts, capacity * INTS);
+        }
+        System.arraycopy(d, dAt, savedDoubles, e * doubles, doubles);
+        System.arraycopy(in, iAt, savedInts, e * INTS, INTS);
+    }
+
     /** The clock saved in slot {@code e}: where the segment from that state begins. */
     public double clock(int e) {
         return savedDoubles[e * doubles + T];

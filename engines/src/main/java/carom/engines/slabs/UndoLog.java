@@ -160,6 +160,11 @@ final class UndoLog {
         return time[event[e]];
     }
 
+    /** Copies the state saved in entry e out for a message ({@link SavedStates#copyOut}). */
+    void exportEntry(int e, double[] d, int dAt, int[] in, int iAt) {
+        saved.copyOut(e, d, dAt, in, iAt);
+    }
+
     /** Copies disc i's segment saved in entry e into slot {@code slot} of {@code d}. */
     void loadSegment(Discs d, int slot, int e, int i) {
         saved.load(d, slot, e, i);

@@ -1,0 +1,61 @@
+package carom.app;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The cluster engine on the command line: a real run with 2 JVMs through {@code simulate --nodes},
+ * and the options it refuses before anything starts (one {@code error:} line, exit status 2, no file).
+ */
+class ClusterCommandsTest {
+    @TempDir
+    Path dir;
+
+    @Test
+    void simulateWithTwoNodesWritesTheSameFinalStateAsFast() throws Exception {
+        Path scene = Scenes.write(dir, "periodic.json", Scenes.periodic());
+        Path cluster = dir.resolve("cluster.csv");
+        Path fast = dir.resolve("fast.csv");
+        Cli r = Cli.run("simulate", scene.toString(), "--engine", "cluster", "--nodes", "2", "--out", cluster.toString());
+        assertThat(r.status()).as(r.err()).isZero();
+        assertThat(Cli.run("simulate", scene.toString(), "--engine", "fast", "--out", fast.toString()).status()).isZero();
+        java.util.List<String> a = Files.readAllLines(cluster);
+        java.util.List<String> b = Files.readAllLines(fast);
+        assertThat(a).hasSameSizeAs(b);
+        assertThat(a.get(0)).isEqualTo("id,x,y,vx,vy");
+        for (int k = 1; k < a.size(); k++) {
+            String[] u = a.get(k).split(",");
+            String[] v = b.get(k).split(",");
+            for (int c = 0; c < u.length; c++) {
+                assertThat(Double.parseDouble(u[c])).as("row %d column %d", k, c)
+                        .isCloseTo(Double.parseDouble(v[c]), org.assertj.core.api.Assertions.within(1e-8));
+            }
+        }
+        assertThat(ProcessHandle.current().descendants().filter(ProcessHandle::isAlive)).as("workers left").isEmpty();
+    }
+
+    @Test
+    void clusterOptionsAreRefusedWhereTheyDoNotApply() {
+        Path scene = Scenes.write(dir, "head-on.json", Scenes.headOn());
+        Path out = dir.resolve("out.csv");
+        assertRefused(Cli.run("simulate", scene.toString(), "--nodes", "2", "--out", out.toString()),
+                "error: --nodes: only engine cluster runs on several JVMs");
+        assertRefused(Cli.run("simulate", scene.toString(), "--engine", "cluster", "--nodes", "65"),
+                "error: --nodes: must be from 1 to 64, got 65");
+        assertRefused(Cli.run("simulate", scene.toString(), "--engine", "cluster", "--seed-nodes", "here"),
+                "error: --seed-nodes: expected HOST:PORT, got 'here'");
+        assertRefused(Cli.run("simulate", scene.toString(), "--engine", "cluster", "--every", "0.1",
+                "--trajectory", dir.resolve("f.xyz").toString()), "error: --every: engine cluster cannot stop at given times");
+        assertRefused(Cli.run("node", "--join", "127.0.0.1"), "error: --join: expected HOST:PORT, got '127.0.0.1'");
+        assertThat(out).doesNotExist();
+    }
+
+    private static void assertRefused(Cli r, String firstLine) {
+        assertThat(r.status()).as(r.err()).isEqualTo(2);
+        assertThat(r.err()).startsWith(firstLine);
+    }
+}

@@ -1,0 +1,109 @@
+package carom.engines.cluster;
+
+import carom.core.BadInputException;
+import carom.core.engine.Engine;
+import carom.core.engine.RunOptions;
+import carom.core.engine.RunResult;
+import carom.core.engine.Tunable;
+import carom.core.scene.Effects;
+import carom.core.scene.Scene;
+import carom.engines.kernel.KernelTunables;
+import java.util.List;
+
+/**
+ * An exact engine over an Akka Cluster: the {@code slabs} protocol (vertical slabs of cell columns,
+ * optimistic windows, verification against logged trajectories, rollback to the first cross-slab
+ * contact, serial cross-slab events) with each slab in a JVM of its own that shares nothing with the
+ * others; the JVM the user started coordinates, by messages ({@link ClusterRun}). {@code --nodes K}
+ * starts K-1 worker JVMs on 127.0.0.1 and stops them when the run ends, whatever happens
+ * ({@link ClusterLife}).
+ *
+ * {@link #joining} makes runs over workers already running ({@code ./carom node}) instead.
+ *
+ * <p>Not yet: samples ({@code --every}, trajectories, observables, checkpoints), two-dimensional
+ * blocks, recovery from a worker lost mid-run (the run stops with an error).
+ */
+public final class ClusterEngine implements Engine {
+    /** Seed nodes of running workers ("host:port"); empty: each run starts its own workers. */
+    private final List<String> seeds;
+
+    /** Runs that start their own workers on 127.0.0.1 ({@code --nodes K}). */
+    public ClusterEngine() {
+        this(List.of());
+    }
+
+    private ClusterEngine(List<String> seeds) {
+        this.seeds = List.copyOf(seeds);
+    }
+
+    /**
+     * The engine for runs over workers already running ({@code ./carom node}), reached through
+     * {@code seeds} ("host:port" each): the run joins their cluster and uses {@code nodes - 1} of them.
+     */
+    public static ClusterEngine joining(List<String> seeds) {
+        if (seeds.isEmpty()) {
+            throw new BadInputException("--seed-nodes: give at least one HOST:PORT");
+        }
+        for (String seed : seeds) {
+            checkHostPort("--seed-nodes", seed);
+        }
+        return new ClusterEngine(seeds);
+    }
+
+    /** A {@code HOST:PORT} (port 1 to 65535), else bad input naming {@code option}. */
+    public static void checkHostPort(String option, String value) {
+        int colon = value.lastIndexOf(':');
+        boolean ok = colon > 0;
+        if (ok) {
+            try {
+                int p = Integer.parseInt(value.substring(colon + 1));
+                ok = p >= 1 && p <= 65535;
+            } catch (NumberFormatException e) {
+                ok = false;
+            }
+        }
+        if (!ok) {
+            throw new BadInputException(option + ": expected HOST:PORT, got '" + value + "'");
+        }
+    }
+    @Override
+    public String name() {
+        return "cluster";
+    }
+
+    @Override
+    public boolean exact() {
+        return true;
+    }
+
+    @Override
+    public String description() {
+        return "the slabs' exact protocol over an Akka Cluster: one slab per JVM (--nodes K starts K-1 workers on 127.0.0.1), windows driven and verified by the coordinator through messages";
+    }
+
+    @Override
+    public List<Tunable<?>> tunables() {
+        return List.of(ClusterRun.NODES, KernelTunables.CELL_FACTOR, ClusterRun.JOIN_SECONDS, ClusterRun.REPLY_SECONDS,
+                ClusterRun.CHECKPOINT_WINDOWS);
+    }
+
+    @Override
+    public int threadsFor(int requested) {
+        return 1;
+    }
+
+    @Override
+    public RunResult run(Scene scene, RunOptions options) {
+        checkSupports(scene);
+        Effects e = scene.effects();
+        if (e.hasGravity() && (e.dissipativePairs() || e.dissipativeWalls())) {
+            // Discs that come to rest fall asleep (resting contact); sleeping discs are not carried across nodes yet.
+            throw new BadInputException("engine cluster does not support inelastic collisions under gravity yet (discs "
+                    + "that come to rest fall asleep, and sleeping discs are not carried across nodes); use fast, serial or slabs");
+        }
+        if (options.sampled()) {
+            throw new BadInputException("engine cluster does not support samples yet (--every, --trajectory, --observe, --checkpoint)");
+        }
+        return new ClusterRun(scene, options, seeds).run();
+    }
+}

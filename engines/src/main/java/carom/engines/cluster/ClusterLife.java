@@ -1,0 +1,328 @@
+package carom.engines.cluster;
+
+import akka.actor.typed.ActorRef;
+import akka.actor.typed.ActorSystem;
+import akka.actor.typed.javadsl.AskPattern;
+import akka.actor.typed.receptionist.Receptionist;
+import akka.cluster.typed.Cluster;
+import carom.core.BadInputException;
+import carom.engines.cluster.Protocol.NodeCommand;
+import com.typesafe.config.Config;
+import com.typesafe.config.ConfigFactory;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.net.ServerSocket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Set;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * The life of a run's cluster: the coordinator's actor system (whose guardian is its own node), the
+ * worker JVMs it starts on 127.0.0.1 (or the running workers it joins), the wait for every expected
+ * node, and the end: the system terminated and every worker it started destroyed with its process
+ * tree, whether the run ended, failed or was interrupted (a JVM shutdown hook covers the last case;
+ * a worker also exits when its standard input, a pipe from this JVM, closes, so not even a killed
+ * coordinator leaves one behind).
+ */
+final class ClusterLife implements AutoCloseable {
+    private final ActorSystem<NodeCommand> system;
+    private final List<Process> workers;
+    private final List<Path> workerLogs;
+    private final List<Integer> workerPorts = new ArrayList<>();
+    private final Thread reaper;
+    private List<ActorRef<NodeCommand>> nodes = List.of();
+
+    private ClusterLife(ActorSystem<NodeCommand> system, List<Process> workers, List<Path> workerLogs) {
+        this.system = system;
+        this.workers = workers;
+        this.workerLogs = workerLogs;
+        this.reaper = new Thread(this::destroyWorkers, "carom-cluster-reaper");
+        Runtime.getRuntime().addShutdownHook(reaper);
+    }
+
+    /** Akka's configuration of a node at host:port joining {@code seeds} ("host:port" each). */
+    static Config config(String host, int port, List<String> seeds) {
+        StringBuilder s = new StringBuilder();
+        for (String seed : seeds) {
+            s.append(s.isEmpty() ? "" : ", ").append("\"akka://carom@").append(seed).append('"');
+        }
+        return ConfigFactory.parseString("""
+                akka {
+                  loglevel = "OFF"
+                  stdout-loglevel = "OFF"
+                  log-dead-letters = off
+                  log-dead-letters-during-shutdown = off
+                  jvm-exit-on-fatal-error = off
+                  jvm-shutdown-hooks = off
+                  coordinated-shutdown.run-by-jvm-shutdown-hook = off
+                  coordinated-shutdown.exit-jvm = off
+                  actor {
+                    provider = cluster
+                    serialization-bindings { "carom.engines.cluster.ClusterMessage" = jackson-cbor }
+                  }
+                  remote.artery {
+                    transport = tcp
+                    canonical.hostname = "%s"
+                    canonical.port = %d
+                    advanced.maximum-frame-size = 4MiB
+                  }
+                  cluster {
+                    seed-nodes = [%s]
+                    jmx.enabled = off
+                    log-info = off
+                  }
+                }
+                """.formatted(host, port, s)).withFallback(ConfigFactory.defaultReference()).resolve();
+    }
+
+    /** A port free right now on 127.0.0.1. */
+    static int freePort() {
+        try (ServerSocket socket = new ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress())) {
+            return socket.getLocalPort();
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    /**
+     * A cluster of {@code count} JVMs on this machine: this one, as the seed, and {@code count - 1}
+     * workers it starts with the same java and class path; waits up to {@code joinTimeout} for all.
+     */
+    static ClusterLife local(int count, Duration joinTimeout) {
+        int port = freePort();
+        ActorSystem<NodeCommand> system = ActorSystem.create(NodeActor.create(), "carom",
+                config("127.0.0.1", port, List.of("127.0.0.1:" + port)));
+        List<Process> workers = new ArrayList<>();
+        List<Path> logs = new ArrayList<>();
+        ClusterLife life = new ClusterLife(system, workers, logs);
+        try {
+            String javaBin = ProcessHandle.current().info().command().orElse(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+            for (int w = 1; w < count; w++) {
+                int workerPort = freePort();
+                Path log = Files.createTempFile("carom-node-", ".log");
+                List<String> cmd = new ArrayList<>(List.of(javaBin));
+                for (String arg : java.lang.management.ManagementFactory.getRuntimeMXBean().getInputArguments()) {
+                    // The heap limit and the JDK's access flags of this JVM (as ./carom sets them), nothing else.
+                    if (arg.startsWith("-Xmx") || arg.startsWith("--enable-native-access")
+                            || arg.startsWith("--sun-misc-unsafe-memory-access")) {
+                        cmd.add(arg);
+                    }
+                }
+                cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), ClusterWorker.class.getName(),
+                        "--join", "127.0.0.1:" + port, "--host", "127.0.0.1", "--port", Integer.toString(workerPort),
+                        ClusterWorker.EXIT_WITH_STDIN));
+                Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log.toFile()).start();
+                workers.add(p);
+                logs.add(log);
+                life.workerPorts.add(workerPort);
+            }
+            life.awaitNodes(count, joinTimeout);
+            return life;
+        } catch (IOException e) {
+            life.close();
+            throw new UncheckedIOException(e);
+        } catch (RuntimeException | Error e) {
+            life.close();
+            throw e;
+        }
+    }
+
+    /**
+     * A cluster of this JVM and {@code count - 1} running workers ({@code carom node}) reached through
+     * {@code seeds}; this JVM listens on {@code host}:{@code port} (0: a free one).
+     */
+    static ClusterLife joining(List<String> seeds, String host, int port, int count, Duration joinTimeout) {
+        ActorSystem<NodeCommand> system = ActorSystem.create(NodeActor.create(), "carom",
+                config(host, port == 0 ? freePort() : port, seeds));
+        ClusterLife life = new ClusterLife(system, new ArrayList<>(), new ArrayList<>());
+        try {
+            life.awaitNodes(count, joinTimeout);
+            return life;
+        } catch (RuntimeException | Error e) {
+            life.close();
+            throw e;
+        }
+    }
+
+    /** A worker this JVM started that is no longer running, described; null while all run. */
+    String deadWorker() {
+        for (int w = 0; w < workers.size(); w++) {
+            Process p = workers.get(w);
+            int port = w < workerPorts.size() ? workerPorts.get(w) : -1;
+            if (!p.isAlive() && nodes.stream().anyMatch(r -> r.path().address().getPort().map(q -> q == port).orElse(false))) {
+                return "worker " + (w + 1) + " (pid " + p.pid() + ") exited with status " + p.exitValue();
+            }
+        }
+        return null;
+    }
+
+    /**
+     * The address this JVM should listen on to reach {@code seeds}: 127.0.0.1 when they are all on
+     * this machine's loopback, else this machine's own address.
+     */
+    static String ownHost(List<String> seeds) {
+        boolean loopback = seeds.stream().allMatch(s -> s.startsWith("127.") || s.startsWith("localhost:"));
+        if (loopback) {
+            return "127.0.0.1";
+        }
+        try {
+            return java.net.InetAddress.getLocalHost().getHostAddress();
+        } catch (java.net.UnknownHostException e) {
+            return "127.0.0.1";
+        }
+    }
+
+    /**
+     * Forgets the nodes of workers that are no longer running (their processes reaped); returns the
+     * nodes that remain, this JVM's first.
+     */
+    List<ActorRef<NodeCommand>> dropDeadWorkers() {
+        List<ActorRef<NodeCommand>> alive = new ArrayList<>(nodes);
+        for (int w = 0; w < workers.size(); w++) {
+            if (!workers.get(w).isAlive()) {
+                int port = workerPorts.get(w);
+                alive.removeIf(r -> r.path().address().getPort().map(p -> p == port).orElse(false));
+            }
+        }
+        nodes = List.copyOf(alive);
+        return nodes;
+    }
+
+    /** Whether any worker this JVM started has died and is still counted among the nodes. */
+    boolean lostWorker() {
+        for (int w = 0; w < workers.size(); w++) {
+            int port = workerPorts.get(w);
+            if (!workers.get(w).isAlive()
+                    && nodes.stream().anyMatch(r -> r.path().address().getPort().map(p -> p == port).orElse(false))) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    ActorSystem<NodeCommand> system() {
+        return system;
+    }
+
+    /** The nodes, this JVM's first, then the others by address. */
+    List<ActorRef<NodeCommand>> nodes() {
+        return nodes;
+    }
+
+    /** Waits until {@code count} nodes (this one included) are registered; else an error naming the missing. */
+    private void awaitNodes(int count, Duration timeout) {
+        long deadline = System.nanoTime() + timeout.toNanos();
+        Set<ActorRef<NodeCommand>> found = Set.of();
+        while (System.nanoTime() < deadline) {
+            for (int w = 0; w < workers.size(); w++) {
+                if (!workers.get(w).isAlive()) {
+                    throw new IllegalStateException("cluster: worker " + (w + 1) + " (pid " + workers.get(w).pid()
+                            + ") exited with status " + workers.get(w).exitValue() + " before joining: " + lastLine(w));
+                }
+            }
+            try {
+                Receptionist.Listing listing = AskPattern.<Receptionist.Command, Receptionist.Listing>ask(
+                        system.receptionist(), r -> Receptionist.find(NodeActor.KEY, r), Duration.ofSeconds(5),
+                        system.scheduler()).toCompletableFuture().get(10, TimeUnit.SECONDS);
+                found = listing.getServiceInstances(NodeActor.KEY);
+            } catch (Exception e) {
+                found = Set.of();
+            }
+            if (found.size() >= count) {
+                List<ActorRef<NodeCommand>> sorted = new ArrayList<>(found);
+                sorted.sort(Comparator.comparing((ActorRef<NodeCommand> r) -> r.path().address().hasLocalScope() ? 0 : 1)
+                        .thenComparing(r -> r.path().address().toString()));
+                nodes = List.copyOf(sorted.subList(0, count));
+                if (!nodes.get(0).path().address().hasLocalScope()) {
+                    throw new IllegalStateException("cluster: this JVM's own node is not registered");
+                }
+                return;
+            }
+            try {
+                Thread.sleep(100);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new IllegalStateException("cluster: interrupted while waiting for the nodes");
+            }
+        }
+        List<String> present = new ArrayList<>();
+        for (ActorRef<NodeCommand> r : found) {
+            present.add(r.path().address().hostPort());
+        }
+        List<String> missing = new ArrayList<>();
+        for (int w = 0; w < workers.size(); w++) {
+            String at = workerAddress(w);
+            if (present.stream().noneMatch(p -> p.endsWith(at))) {
+                missing.add("worker " + (w + 1) + " at " + at + " (pid " + workers.get(w).pid() + ")");
+            }
+        }
+        throw new BadInputException("cluster: " + (count - found.size()) + " of " + count + " nodes missing after "
+                + timeout.toSeconds() + " s" + (missing.isEmpty() ? "" : ": " + String.join(", ", missing))
+                + "; members: " + Cluster.get(system).state().getMembers());
+    }
+
+    private String workerAddress(int w) {
+        List<String> cmd = workers.get(w).info().arguments().map(List::of).orElse(List.of());
+        int at = cmd.indexOf("--port");
+        return "127.0.0.1:" + (at >= 0 && at + 1 < cmd.size() ? cmd.get(at + 1) : "?");
+    }
+
+    private String lastLine(int w) {
+        try {
+            List<String> lines = Files.readAllLines(workerLogs.get(w), StandardCharsets.UTF_8);
+            for (int k = lines.size() - 1; k >= 0; k--) {
+                if (!lines.get(k).isBlank()) {
+                    return lines.get(k);
+                }
+            }
+        } catch (IOException e) {
+            return "(no log: " + e.getMessage() + ")";
+        }
+        return "(no output)";
+    }
+
+    @Override
+    public void close() {
+        try {
+            system.terminate();
+            system.getWhenTerminated().toCompletableFuture().get(10, TimeUnit.SECONDS);
+        } catch (Exception e) {
+            // The workers go down below whatever the system did.
+        } finally {
+            destroyWorkers();
+            try {
+                Runtime.getRuntime().removeShutdownHook(reaper);
+            } catch (IllegalStateException e) {
+                // Shutting down already: the hook is running or ran.
+            }
+        }
+    }
+
+    /** Destroys every worker and its descendants, and waits for them. */
+    private void destroyWorkers() {
+        for (Process p : workers) {
+            p.descendants().forEach(ProcessHandle::destroyForcibly);
+            p.destroyForcibly();
+        }
+        for (Process p : workers) {
+            try {
+                p.waitFor(10, TimeUnit.SECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+        for (Path log : workerLogs) {
+            try {
+                Files.deleteIfExists(log);
+            } catch (IOException e) {
+                // A temporary file; nothing else to do.
+            }
+        }
+    }
+}

@@ -1,0 +1,497 @@
+package carom.engines.cluster;
+
+import akka.actor.typed.ActorRef;
+import akka.actor.typed.ActorSystem;
+import akka.actor.typed.javadsl.AskPattern;
+import akka.serialization.Serialization;
+import akka.serialization.SerializationExtension;
+import carom.core.engine.Counter;
+import carom.core.engine.EngineFailure;
+import carom.core.engine.RunOptions;
+import carom.core.engine.RunResult;
+import carom.core.engine.Tunable;
+import carom.core.observe.Observables;
+import carom.core.observe.Pressure;
+import carom.core.observe.VirialAccumulator;
+import carom.core.scene.Scene;
+import carom.core.scene.Species;
+import carom.core.state.Discs;
+import carom.engines.cluster.Protocol.Emigrate;
+import carom.engines.cluster.Protocol.Failed;
+import carom.engines.cluster.Protocol.Finish;
+import carom.engines.cluster.Protocol.Finished;
+import carom.engines.cluster.Protocol.Install;
+import carom.engines.cluster.Protocol.NodeCommand;
+import carom.engines.cluster.Protocol.Replan;
+import carom.engines.cluster.Protocol.Replanned;
+import carom.engines.cluster.Protocol.Reply;
+import carom.engines.cluster.Protocol.SceneChunk;
+import carom.engines.cluster.Protocol.SceneStart;
+import carom.engines.cluster.Protocol.SpeciesSpec;
+import carom.engines.cluster.Protocol.Start;
+import carom.engines.cluster.Protocol.Started;
+import carom.engines.cluster.Protocol.States;
+import carom.engines.cluster.Protocol.Undo;
+import carom.engines.cluster.Protocol.Undone;
+import carom.engines.cluster.Protocol.Window;
+import carom.engines.cluster.Protocol.WindowDone;
+import carom.engines.kernel.DiscTable;
+import carom.engines.kernel.KernelTunables;
+import carom.engines.slabs.SlabMirror;
+import carom.engines.slabs.StateBatch;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.function.Function;
+import java.util.function.IntFunction;
+
+/**
+ * One run of the cluster engine, on the coordinator: the slabs' protocol ({@code SlabsRun}'s windows,
+ * verification, rollback and serial cross-domain events) with every slab in a node of its own and
+ * the coordinator's view of the edge columns in a {@link SlabMirror}. Per window: a {@link Window}
+ * to every node and its {@link WindowDone} (the changed edge discs' records and segments); on a
+ * violation an {@link Undo} and {@link Undone} round; then the cross event, a collision computed on
+ * the mirror and {@link Install}ed at both owners, or a migration ({@link Emigrate}, then
+ * {@link Install} at the new owner). Every message is counted with its serialized size.
+ *
+ * <p>Faults: every {@link #CHECKPOINT_WINDOWS} windows the coordinator takes a {@link Checkpoint}
+ * (the first is the scene); when a worker JVM it started dies, the run carries on from the last one on
+ * the nodes that remain ({@link #recover}).
+ */
+final class ClusterRun {
+    static final Tunable.Whole NODES = new Tunable.Whole("nodes", 2, 1, 64, "JVMs",
+            "JVMs of the cluster: this one and nodes-1 workers it starts on 127.0.0.1 (--nodes K sets it)");
+    static final Tunable.Real JOIN_SECONDS = Tunable.Real.above("joinSeconds", 120, 0, "seconds",
+            "how long the coordinator waits for every node to join before it stops with error: naming the missing ones");
+    static final Tunable.Real REPLY_SECONDS = Tunable.Real.above("replySeconds", 600, 0, "seconds",
+            "how long the coordinator waits for a node's answer to one command");
+    static final Tunable.Whole CHECKPOINT_WINDOWS = new Tunable.Whole("checkpointWindows", 1024, 1, 1L << 40, "windows",
+            "windows between the checkpoints a lost worker is recovered from (each costs every disc's state in messages)");
+    private static final int CHUNK = 1 << 14;
+    /** Windows between progress reports. */
+    private static final int PROGRESS_WINDOWS = 64;
+    private static final double INF = Double.POSITIVE_INFINITY;
+
+    private final Scene scene;
+    private final RunOptions options;
+    private final double until;
+    private final Duration replyTimeout;
+    private ClusterLife life;
+    private ActorSystem<NodeCommand> system;
+    private Serialization serialization;
+    private List<ActorRef<NodeCommand>> nodes;
+    private SlabMirror mirror;
+    private int domains;
+    private final Map<String, Long> messages = new TreeMap<>();
+    private long messageCount;
+    private long bytes;
+    private long windowBytes;
+    private long crossEventBytes;
+    private long windows;
+    private long commits;
+    private long rollbacks;
+    private long crossDomainEvents;
+    private long migrations;
+    private long resyncs;
+    private double resyncAt;
+    private final long checkpointWindows;
+    /** The last checkpoint; the slabs' counters and virial lost with the slabs a recovery replaced. */
+    private Checkpoint checkpoint;
+    private long[] counterBase = new long[6];
+    private double[] virialBase;
+    private long recoveries;
+
+    /** A worker JVM died during the run: recover from the last checkpoint. */
+    private static final class WorkerLost extends RuntimeException {
+        WorkerLost(String message) {
+            super(message, null, false, false);
+        }
+    }
+
+    /** Seed nodes of running workers to join ("host:port"), or empty to start workers on 127.0.0.1. */
+    private final List<String> seeds;
+
+    ClusterRun(Scene scene, RunOptions options, List<String> seeds) {
+        this.seeds = seeds;
+        this.scene = scene;
+        this.options = options;
+        this.until = options.until();
+        this.replyTimeout = Duration.ofMillis((long) (REPLY_SECONDS.of(options) * 1000));
+        this.checkpointWindows = CHECKPOINT_WINDOWS.of(options);
+        this.virialBase = VirialAccumulator.forRun(until).blockSums();
+    }
+
+    RunResult run() {
+        int count = (int) NODES.of(options);
+        Duration join = Duration.ofMillis((long) (JOIN_SECONDS.of(options) * 1000));
+        Discs initial = scene.newDiscs();
+        double energyStart = Observables.kineticEnergy(initial);
+        double[] momentumStart = Observables.momentum(initial);
+        try (ClusterLife life = seeds.isEmpty() ? ClusterLife.local(count, join)
+                : ClusterLife.joining(seeds, ClusterLife.ownHost(seeds), 0, count, join)) {
+            this.life = life;
+            system = life.system();
+            serialization = SerializationExtension.get(system.classicSystem());
+            nodes = life.nodes();
+            long started = System.nanoTime();
+            mirror = new SlabMirror(scene, KernelTunables.CELL_FACTOR.of(options), count, until);
+            domains = mirror.domains();
+            for (int d = 0; d < nodes.size(); d++) {
+                sendScene(d, initial);
+            }
+            // The first checkpoint is the scene itself, which every node holds: no message.
+            checkpoint = Checkpoint.atStart(counterBase.length, virialBase.length);
+            boolean lost = false;
+            boolean begun = false;
+            Reply[] finals;
+            while (true) {
+                try {
+                    if (lost) {
+                        recover();
+                        lost = false;
+                    } else if (!begun) {
+                        begun = true;
+                        startSlabs();
+                    }
+                    loop();
+                    finals = askAll("finish", d -> Finish::new);
+                    break;
+                } catch (WorkerLost e) {
+                    if (!seeds.isEmpty()) {
+                        throw new EngineFailure("cluster: " + e.getMessage() + " (runs over --seed-nodes do not recover yet)");
+                    }
+                    lost = true;
+                }
+            }
+            Discs out = scene.newDiscs();
+            long[] sums = new long[6];
+            VirialAccumulator virial = mirror.virial;
+            for (Reply r : finals) {
+                Finished f = (Finished) r;
+                StateBatch fin = f.finals();
+                for (int q = 0; q < fin.size(); q++) {
+                    int o = fin.ids()[q];
+                    out.x[o] = fin.doubles()[4 * q];
+                    out.y[o] = fin.doubles()[4 * q + 1];
+                    out.vx[o] = fin.doubles()[4 * q + 2];
+                    out.vy[o] = fin.doubles()[4 * q + 3];
+                    out.t[o] = until;
+                }
+                for (int k = 0; k < sums.length; k++) {
+                    sums[k] += f.counters()[k];
+                }
+                virial.addSums(f.virial());
+            }
+            for (int k = 0; k < sums.length; k++) {
+                sums[k] += counterBase[k];
+            }
+            virial.addSums(virialBase);
+            double seconds = (System.nanoTime() - started) * 1e-9;
+            double energyEnd = Observables.kineticEnergy(out);
+            Pressure pressure = VirialAccumulator.pressureOf(virial, scene, out, energyStart, energyEnd);
+            long events = sums[0] + crossDomainEvents + migrations;
+            return new RunResult("cluster", true, out, until, sums[1] + mirror.crossPairCollisions, sums[2], events,
+                    energyStart, energyEnd, momentumStart, Observables.momentum(out), pressure, 0, seconds,
+                    counters(count, sums));
+        }
+    }
+
+    private Map<String, Long> counters(int count, long[] sums) {
+        Map<String, Long> c = new java.util.LinkedHashMap<>();
+        c.put(Counter.NODES.key, (long) count);
+        c.put(Counter.DOMAINS.key, (long) domains);
+        c.put(Counter.WINDOWS.key, windows);
+        c.put(Counter.COMMITS.key, commits);
+        c.put(Counter.ROLLBACKS.key, rollbacks);
+        c.put(Counter.UNDONE_EVENTS.key, sums[5]);
+        c.put(Counter.CROSS_DOMAIN_EVENTS.key, crossDomainEvents);
+        c.put(Counter.MIGRATIONS.key, migrations);
+        c.put(Counter.CROSS_PREDICTIONS.key, mirror.crossPredictions());
+        c.put(Counter.CELL_CROSSINGS.key, sums[3]);
+        c.put(Counter.STALE_EVENTS.key, sums[4]);
+        c.put(Counter.RESYNCS.key, resyncs);
+        c.put(Counter.RECOVERIES.key, recoveries);
+        c.put(Counter.MESSAGES.key, messageCount);
+        c.put(Counter.MESSAGE_BYTES.key, bytes);
+        c.put(Counter.MESSAGES_PER_WINDOW.key, windows == 0 ? 0 : Math.round((double) messageCount / windows));
+        c.put(Counter.MESSAGE_BYTES_PER_WINDOW.key, windows == 0 ? 0 : Math.round((double) windowBytes / windows));
+        long crossEvents = crossDomainEvents + migrations;
+        c.put(Counter.MESSAGE_BYTES_PER_CROSS_EVENT.key, crossEvents == 0 ? 0 : Math.round((double) crossEventBytes / crossEvents));
+        for (Map.Entry<String, Long> e : messages.entrySet()) {
+            c.put(Counter.messagesOf(e.getKey()), e.getValue());
+        }
+        return c;
+    }
+
+    /** First predictions on every slab, the edge records into the mirror, the cross events predicted. */
+    private void startSlabs() {
+        double span = 0;
+        for (Reply r : askAll("start", d -> Start::new)) {
+            Started s = (Started) r;
+            mirror.importStates(s.edge());
+            span = Math.max(span, s.span());
+        }
+        mirror.predictAllCross(0);
+        resyncAt = DiscTable.RESYNC_SPANS * span;
+    }
+
+    /**
+     * A checkpoint at local time 0 (the caller has just re-anchored the clocks): every slab's discs
+     * in parts of at most {@link #CHUNK} states per message, and the counts so far.
+     */
+    private void takeCheckpoint() {
+        int n = scene.size();
+        int parts = Math.max(1, (n + CHUNK - 1) / CHUNK);
+        List<StateBatch> states = new ArrayList<>();
+        long[] slabCounters = counterBase.clone();
+        double[] slabVirial = virialBase.clone();
+        for (int part = 0; part < parts; part++) {
+            int p = part;
+            for (Reply r : askAll("snapshot", d -> rt -> new Protocol.Snapshot(p, parts, rt))) {
+                Protocol.SnapshotPart sp = (Protocol.SnapshotPart) r;
+                states.add(sp.states());
+                if (part == 0) {
+                    for (int k = 0; k < slabCounters.length; k++) {
+                        slabCounters[k] += sp.counters()[k];
+                    }
+                    for (int b = 0; b < slabVirial.length; b++) {
+                        slabVirial[b] += sp.virial()[b];
+                    }
+                }
+            }
+        }
+        checkpoint = new Checkpoint(mirror.epoch(), states, slabCounters, slabVirial, mirror.virial.blockSums(),
+                mirror.crossPairCollisions, crossDomainEvents, migrations);
+    }
+
+    /**
+     * Carries on from the last checkpoint on the nodes that remain: the slabs cut anew for them, every
+     * disc's state written into each node's table and the mirror, every disc predicted anew. Exact:
+     * the checkpoint is a state between windows, every event before it processed and none after.
+     */
+    private void recover() {
+        recoveries++;
+        nodes = life.dropDeadWorkers();
+        Checkpoint cp = checkpoint;
+        mirror = new SlabMirror(scene, KernelTunables.CELL_FACTOR.of(options), nodes.size(), until);
+        mirror.startAt(cp.epoch());
+        domains = mirror.domains();
+        for (StateBatch b : cp.states()) {
+            mirror.importStates(b);
+        }
+        mirror.crossPairCollisions = cp.crossPairCollisions();
+        mirror.virial.addSums(cp.crossVirial());
+        crossDomainEvents = cp.crossDomainEvents();
+        migrations = cp.migrations();
+        counterBase = cp.slabCounters().clone();
+        virialBase = cp.slabVirial().clone();
+        for (int d = 0; d < domains; d++) {
+            tell(d, "recover", new Protocol.Recover(d, domains, cp.epoch()));
+            for (StateBatch b : cp.states()) {
+                tell(d, "recover", new Protocol.RecoverChunk(b));
+            }
+        }
+        startSlabs();
+    }
+
+    /** The scene to node d: its header, then its discs in chunks (each under Artery's frame size). */
+    private void sendScene(int d, Discs initial) {
+        List<SpeciesSpec> species = new ArrayList<>();
+        for (Species s : scene.species()) {
+            species.add(new SpeciesSpec(s.name(), s.radius(), s.mass(), s.fixed()));
+        }
+        var e = scene.effects();
+        tell(d, "scene", new SceneStart(d, domains, KernelTunables.CELL_FACTOR.of(options), until, scene.name(),
+                scene.box().width(), scene.box().height(), scene.box().boundary().name(), species,
+                new double[] {e.gravityX(), e.gravityY(), e.restitution(), e.wallRestitution(), e.tc()}, initial.n));
+        for (int from = 0; from < initial.n; from += CHUNK) {
+            int to = Math.min(initial.n, from + CHUNK);
+            tell(d, "scene", new SceneChunk(from, java.util.Arrays.copyOfRange(initial.species, from, to),
+                    java.util.Arrays.copyOfRange(initial.x, from, to), java.util.Arrays.copyOfRange(initial.y, from, to),
+                    java.util.Arrays.copyOfRange(initial.vx, from, to), java.util.Arrays.copyOfRange(initial.vy, from, to)));
+        }
+    }
+
+    private void loop() {
+        double now = 0;
+        while (true) {
+            if (now >= resyncAt) {
+                resync(now);
+                now = 0;
+            }
+            int top = mirror.validTop(now);
+            double h = top >= 0 ? mirror.crossTime(top) : INF;
+            double untilLocal = mirror.untilLocal();
+            double end = Math.min(Math.min(h, resyncAt), untilLocal);
+            boolean last = end == untilLocal && h > untilLocal && resyncAt > untilLocal;
+            mirror.startWindow();
+            windows++;
+            long before = bytes;
+            double reached = end;
+            int stopper = -1;
+            int stopDisc = -1;
+            for (Reply r : askAll("window", d -> rt -> new Window(end, last, rt))) {
+                WindowDone w = (WindowDone) r;
+                mirror.windowReport(w.domain(), w.changed(), w.segments());
+                if (w.stopTime() < reached) {
+                    reached = w.stopTime();
+                    stopper = w.domain();
+                    stopDisc = w.stopDisc();
+                }
+            }
+            double violation = mirror.verify(now, reached);
+            boolean contact = violation <= reached;
+            double tStar = contact ? violation : reached;
+            if (contact || stopper >= 0) {
+                rollbacks++;
+                for (Reply r : askAll("undo", d -> rt -> new Undo(tStar, contact ? mirror.keepDisc(d) : -1,
+                        contact ? mirror.keepEntry(d) : -2, rt))) {
+                    mirror.importStates(((Undone) r).changed());
+                }
+            } else {
+                commits++;
+            }
+            windowBytes += bytes - before;
+            mirror.predictChanged(tStar);
+            if (contact) {
+                collide(mirror.violationX(), mirror.violationY(), tStar);
+            } else if (stopper >= 0) {
+                migrate(stopDisc, tStar);
+            } else if (end == h && h <= untilLocal && mirror.topStillValid(top)) {
+                int p = mirror.crossPartner(top);
+                if (p < 0) {
+                    migrate(top, h);
+                } else {
+                    collide(top, p, h);
+                }
+            } else if (last) {
+                return;
+            }
+            now = tStar;
+            if (windows % checkpointWindows == 0) {
+                resync(now);
+                now = 0;
+                takeCheckpoint();
+            }
+            if (windows % PROGRESS_WINDOWS == 0) {
+                options.progress().simulatedTime(mirror.epoch() + now);
+            }
+        }
+    }
+
+    /** Contact of discs a and b of two slabs at local {@code now}: computed here, installed at both owners. */
+    private void collide(int a, int b, double now) {
+        crossDomainEvents++;
+        long before = bytes;
+        StateBatch both = mirror.collide(a, b, now);
+        int da = mirror.ownerOf(a);
+        int db = mirror.ownerOf(b);
+        CompletableFuture<Reply> fa = ask(da, "install", rt -> new Install(both.select(0), now, rt));
+        CompletableFuture<Reply> fb = ask(db, "install", rt -> new Install(both.select(1), now, rt));
+        mirror.importStates(((States) await(fa, da, "install")).states());
+        mirror.importStates(((States) await(fb, db, "install")).states());
+        mirror.predictCross(a, now);
+        mirror.predictCross(b, now);
+        crossEventBytes += bytes - before;
+    }
+
+    /** Disc i crosses into a foreign slab at local {@code now}: its owner lets it go, the new owner takes it. */
+    private void migrate(int i, double now) {
+        migrations++;
+        long before = bytes;
+        mirror.migrationEvent(i, now);
+        int from = mirror.ownerOf(i);
+        StateBatch leaving = ((States) await(ask(from, "emigrate", rt -> new Emigrate(i, now, rt)), from, "emigrate")).states();
+        mirror.importStates(leaving);
+        int to = mirror.ownerOf(i);
+        mirror.importStates(((States) await(ask(to, "install", rt -> new Install(leaving, now, rt)), to, "install")).states());
+        mirror.predictCross(i, now);
+        crossEventBytes += bytes - before;
+    }
+
+    /** Re-anchors local time at {@code now} everywhere and rebuilds the calendars. */
+    private void resync(double now) {
+        if (now > 0) {
+            resyncs++;
+            mirror.rebase(now);
+        }
+        double span = 0;
+        for (Reply r : askAll("replan", d -> rt -> new Replan(now, rt))) {
+            span = Math.max(span, ((Replanned) r).span());
+        }
+        resyncAt = DiscTable.RESYNC_SPANS * span;
+    }
+
+    private void tell(int d, String type, NodeCommand m) {
+        count(type, m);
+        nodes.get(d).tell(m);
+    }
+
+    private void count(String type, Object m) {
+        messageCount++;
+        messages.merge(type, 1L, Long::sum);
+        bytes += serialization.serialize(m).get().length;
+    }
+
+    private CompletableFuture<Reply> ask(int d, String type, Function<ActorRef<Reply>, NodeCommand> make) {
+        return AskPattern.<NodeCommand, Reply>ask(nodes.get(d), rt -> {
+            NodeCommand m = make.apply(rt);
+            count(type, m);
+            return m;
+        }, replyTimeout, system.scheduler()).toCompletableFuture();
+    }
+
+    /** Sends every slab's node its command and waits for all the answers (in slab order). */
+    private Reply[] askAll(String type, IntFunction<Function<ActorRef<Reply>, NodeCommand>> make) {
+        List<CompletableFuture<Reply>> pending = new ArrayList<>();
+        for (int d = 0; d < domains; d++) {
+            pending.add(ask(d, type, make.apply(d)));
+        }
+        Reply[] replies = new Reply[domains];
+        for (int d = 0; d < domains; d++) {
+            replies[d] = await(pending.get(d), d, type);
+        }
+        return replies;
+    }
+
+    private Reply await(CompletableFuture<Reply> f, int d, String type) {
+        Reply r = null;
+        long deadline = System.nanoTime() + replyTimeout.toNanos() + 1_000_000_000L;
+        while (r == null) {
+            try {
+                r = f.get(1, TimeUnit.SECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new EngineFailure("cluster: interrupted waiting for node " + d + " (" + type + ")");
+            } catch (TimeoutException e) {
+                // A worker JVM that died will never answer: say so now rather than at the timeout.
+                String dead = life.deadWorker();
+                if (dead != null) {
+                    throw new WorkerLost(dead + " in the middle of the run");
+                }
+                if (System.nanoTime() > deadline) {
+                    throw new EngineFailure("cluster: node " + d + " at " + nodes.get(d).path().address()
+                            + " did not answer '" + type + "' within " + replyTimeout.toSeconds() + " s", e);
+                }
+            } catch (ExecutionException e) {
+                String dead = life.deadWorker();
+                if (dead != null) {
+                    throw new WorkerLost(dead + " in the middle of the run");
+                }
+                throw new EngineFailure("cluster: node " + d + " at " + nodes.get(d).path().address()
+                        + " did not answer '" + type + "'", e);
+            }
+        }
+        if (r instanceof Failed failed) {
+            throw new EngineFailure("cluster: node " + d + " failed at '" + type + "': " + failed.message());
+        }
+        count(type + "Reply", r);
+        return r;
+    }
+}

@@ -1,0 +1,202 @@
+package carom.engines.cluster;
+
+import akka.actor.typed.Behavior;
+import akka.actor.typed.javadsl.AbstractBehavior;
+import akka.actor.typed.javadsl.ActorContext;
+import akka.actor.typed.javadsl.Behaviors;
+import akka.actor.typed.javadsl.Receive;
+import akka.actor.typed.receptionist.Receptionist;
+import akka.actor.typed.receptionist.ServiceKey;
+import carom.core.scene.BoundaryKind;
+import carom.core.scene.Effects;
+import carom.core.scene.Scene;
+import carom.core.scene.SceneBuilder;
+import carom.core.scene.Species;
+import carom.engines.cluster.Protocol.Emigrate;
+import carom.engines.cluster.Protocol.Failed;
+import carom.engines.cluster.Protocol.Finish;
+import carom.engines.cluster.Protocol.Finished;
+import carom.engines.cluster.Protocol.Install;
+import carom.engines.cluster.Protocol.NodeCommand;
+import carom.engines.cluster.Protocol.Recover;
+import carom.engines.cluster.Protocol.RecoverChunk;
+import carom.engines.cluster.Protocol.Snapshot;
+import carom.engines.cluster.Protocol.SnapshotPart;
+import carom.engines.cluster.Protocol.Replan;
+import carom.engines.cluster.Protocol.Replanned;
+import carom.engines.cluster.Protocol.Reply;
+import carom.engines.cluster.Protocol.SceneChunk;
+import carom.engines.cluster.Protocol.SceneStart;
+import carom.engines.cluster.Protocol.SpeciesSpec;
+import carom.engines.cluster.Protocol.Start;
+import carom.engines.cluster.Protocol.Started;
+import carom.engines.cluster.Protocol.States;
+import carom.engines.cluster.Protocol.Undo;
+import carom.engines.cluster.Protocol.Undone;
+import carom.engines.cluster.Protocol.Window;
+import carom.engines.cluster.Protocol.WindowDone;
+import carom.engines.slabs.SlabNode;
+import carom.engines.slabs.StateBatch;
+import akka.actor.typed.ActorRef;
+import java.util.function.Supplier;
+
+/**
+ * A node of the cluster: the guardian actor of every JVM of a run (the coordinator's too), registered
+ * with the receptionist under {@link #KEY}. It holds one slab ({@link SlabNode}) per run, built from
+ * the scene the coordinator sends, and does what the coordinator's commands say; it shares nothing
+ * with any other node.
+ */
+final class NodeActor extends AbstractBehavior<NodeCommand> {
+    static final ServiceKey<NodeCommand> KEY = ServiceKey.create(NodeCommand.class, "carom-node");
+
+    private SceneStart header;
+    /** The slab this node runs now (a recovery may give it another), of how many. */
+    private int domain = -1;
+    private int domains;
+    private SceneBuilder builder;
+    /** The scene, kept after the first start for a recovery. */
+    private Scene scene;
+    private int received;
+    private SlabNode slab;
+
+    static Behavior<NodeCommand> create() {
+        return Behaviors.setup(ctx -> {
+            ctx.getSystem().receptionist().tell(Receptionist.register(KEY, ctx.getSelf()));
+            return new NodeActor(ctx);
+        });
+    }
+
+    private NodeActor(ActorContext<NodeCommand> ctx) {
+        super(ctx);
+    }
+
+    @Override
+    public Receive<NodeCommand> createReceive() {
+        return newReceiveBuilder()
+                .onMessage(SceneStart.class, this::sceneStart)
+                .onMessage(SceneChunk.class, this::sceneChunk)
+                .onMessage(Recover.class, this::recover)
+                .onMessage(RecoverChunk.class, m -> {
+                    slab.restoreAll(m.states());
+                    return this;
+                })
+                .onMessage(Snapshot.class, m -> answer(m.replyTo(), () -> {
+                    int n = slab.discs();
+                    int from = (int) ((long) n * m.part() / m.parts());
+                    int to = (int) ((long) n * (m.part() + 1) / m.parts());
+                    return new SnapshotPart(domain(), slab.ownStates(from, to), slab.counters(), slab.virialSums());
+                }))
+                .onMessage(Start.class, m -> answer(m.replyTo(), () -> start()))
+                .onMessage(Window.class, m -> answer(m.replyTo(), () -> {
+                    slab.runWindow(m.end(), m.inclusive());
+                    return new WindowDone(domain(), slab.stopTime(), slab.stopDisc(), slab.changedRecords(),
+                            slab.changedSegments());
+                }))
+                .onMessage(Undo.class, m -> answer(m.replyTo(), () -> new Undone(domain(),
+                        slab.undo(m.tStar(), m.keepDisc(), m.keepEntry()) ? slab.changedRecords() : StateBatch.EMPTY)))
+                .onMessage(Install.class, m -> answer(m.replyTo(), () -> install(m)))
+                .onMessage(Emigrate.class, m -> answer(m.replyTo(),
+                        () -> new States(domain(), slab.emigrate(m.disc(), m.now()))))
+                .onMessage(Replan.class, m -> answer(m.replyTo(), () -> new Replanned(domain(), slab.replan(m.shift()))))
+                .onMessage(Finish.class, m -> answer(m.replyTo(), () -> {
+                    Finished f = new Finished(domain(), slab.finalStates(), slab.counters(), slab.virialSums());
+                    slab = null;
+                    return f;
+                }))
+                .build();
+    }
+
+    private int domain() {
+        return domain;
+    }
+
+    /** Carries out a command and answers it; a failure is answered too, never left to a timeout. */
+    private Behavior<NodeCommand> answer(ActorRef<Reply> replyTo, Supplier<Reply> work) {
+        Reply reply;
+        try {
+            reply = work.get();
+        } catch (RuntimeException | Error e) {
+            reply = new Failed(domain(), e.getClass().getSimpleName() + ": " + e.getMessage());
+        }
+        replyTo.tell(reply);
+        return this;
+    }
+
+    private Behavior<NodeCommand> sceneStart(SceneStart m) {
+        header = m;
+        domain = m.domain();
+        domains = m.domains();
+        scene = null;
+        slab = null;
+        received = 0;
+        builder = SceneBuilder.create(m.name()).box(m.width(), m.height(), BoundaryKind.valueOf(m.boundary()));
+        for (SpeciesSpec s : m.species()) {
+            builder.species(s.fixed() ? Species.fixed(s.name(), s.radius()) : Species.mobile(s.name(), s.radius(), s.mass()));
+        }
+        double[] e = m.effects();
+        builder.effects(new Effects(e[0], e[1], e[2], e[3], e[4])).until(m.until());
+        return this;
+    }
+
+    private Behavior<NodeCommand> recover(Recover m) {
+        domain = m.domain();
+        domains = m.domains();
+        if (scene == null) {
+            // A node that idled (more nodes than slabs) builds the scene it was sent now.
+            scene = builder.build();
+            builder = null;
+        }
+        slab = new SlabNode(scene, header.cellFactor(), domains, domain, header.until());
+        slab.startAt(m.epoch());
+        return this;
+    }
+
+    private Behavior<NodeCommand> sceneChunk(SceneChunk m) {
+        for (int q = 0; q < m.species().length; q++) {
+            builder.disc(m.species()[q], m.x()[q], m.y()[q], m.vx()[q], m.vy()[q]);
+        }
+        received += m.species().length;
+        return this;
+    }
+
+    private Reply start() {
+        if (slab == null) {
+            if (builder == null || received != header.discs()) {
+                throw new IllegalStateException("scene incomplete: " + received + " of "
+                        + (header == null ? "?" : header.discs()) + " discs received");
+            }
+            scene = builder.build();
+            builder = null;
+            slab = new SlabNode(scene, header.cellFactor(), domains, domain, header.until());
+        }
+        double span = slab.start();
+        return new Started(domain(), span, slab.edgeStates());
+    }
+
+    private Reply install(Install m) {
+        StateBatch in = m.states();
+        StateBatch out = null;
+        for (int q = 0; q < in.size(); q++) {
+            StateBatch one = slab.install(in, q, m.now());
+            out = out == null ? one : concat(out, one);
+        }
+        return new States(domain(), out == null ? StateBatch.EMPTY : out);
+    }
+
+    private static StateBatch concat(StateBatch a, StateBatch b) {
+        return new StateBatch(cat(a.ids(), b.ids()), cat(a.entries(), b.entries()), cat(a.ends(), b.ends()),
+                cat(a.doubles(), b.doubles()), cat(a.ints(), b.ints()));
+    }
+
+    private static int[] cat(int[] a, int[] b) {
+        int[] c = java.util.Arrays.copyOf(a, a.length + b.length);
+        System.arraycopy(b, 0, c, a.length, b.length);
+        return c;
+    }
+
+    private static double[] cat(double[] a, double[] b) {
+        double[] c = java.util.Arrays.copyOf(a, a.length + b.length);
+        System.arraycopy(b, 0, c, a.length, b.length);
+        return c;
+    }
+}

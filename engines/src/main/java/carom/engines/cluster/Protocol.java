@@ -1,0 +1,116 @@
+package carom.engines.cluster;
+
+import akka.actor.typed.ActorRef;
+import carom.engines.slabs.StateBatch;
+import java.util.List;
+
+/**
+ * The cluster engine's messages: commands from the coordinator ({@link ClusterRun}) to the node
+ * actors ({@link NodeActor}), one slab each, and their replies. A node answers every command that
+ * has a {@code replyTo} exactly once, with a {@link Failed} if it could not carry it out.
+ */
+public final class Protocol {
+    private Protocol() {
+    }
+
+    /** What a node actor handles. */
+    public sealed interface NodeCommand extends ClusterMessage {
+    }
+
+    /** What a node answers. */
+    public sealed interface Reply extends ClusterMessage {
+    }
+
+    /** A species as the scene file gives it. */
+    public record SpeciesSpec(String name, double radius, double mass, boolean fixed) {
+    }
+
+    /**
+     * A run begins: this node runs slab {@code domain} of {@code domains}; the scene's discs follow
+     * in {@link SceneChunk}s ({@code discs} in all), then {@link Start}.
+     */
+    public record SceneStart(int domain, int domains, double cellFactor, double until, String name, double width,
+                             double height, String boundary, List<SpeciesSpec> species, double[] effects, int discs)
+            implements NodeCommand {
+    }
+
+    /** Discs {@code from..} of the scene: species index and initial motion. */
+    public record SceneChunk(int from, int[] species, double[] x, double[] y, double[] vx, double[] vy)
+            implements NodeCommand {
+    }
+
+    /**
+     * Fault recovery: this node now runs slab {@code domain} of {@code domains} from a checkpoint taken
+     * at {@code epoch} (every disc's clock there); the states follow in {@link RecoverChunk}s, then
+     * {@link Start}.
+     */
+    public record Recover(int domain, int domains, double epoch) implements NodeCommand {
+    }
+
+    /** Disc states of a checkpoint, every disc's (owned here or not). */
+    public record RecoverChunk(StateBatch states) implements NodeCommand {
+    }
+
+    /** A checkpoint's part {@code part} of {@code parts}: the slab's discs with internal ids in that share. */
+    public record Snapshot(int part, int parts, ActorRef<Reply> replyTo) implements NodeCommand {
+    }
+
+    /** First predictions; the reply carries the calendar's span and the slab's edge-column records. */
+    public record Start(ActorRef<Reply> replyTo) implements NodeCommand {
+    }
+
+    /** Run a window up to local {@code end} (events at {@code end} too if {@code inclusive}). */
+    public record Window(double end, boolean inclusive, ActorRef<Reply> replyTo) implements NodeCommand {
+    }
+
+    /** Undo the window back to local {@code tStar}; the violating segment's creator stands ({@code keepDisc} -1: none here). */
+    public record Undo(double tStar, int keepDisc, int keepEntry, ActorRef<Reply> replyTo) implements NodeCommand {
+    }
+
+    /** Install these states (a cross-domain collision's outcome, or an immigrant) and schedule them from {@code now}. */
+    public record Install(StateBatch states, double now, ActorRef<Reply> replyTo) implements NodeCommand {
+    }
+
+    /** Disc {@code disc} crosses into a foreign slab at {@code now}: let it go, send its state. */
+    public record Emigrate(int disc, double now, ActorRef<Reply> replyTo) implements NodeCommand {
+    }
+
+    /** Re-anchor local time ({@code shift} becomes 0) and rebuild the calendar. */
+    public record Replan(double shift, ActorRef<Reply> replyTo) implements NodeCommand {
+    }
+
+    /** The run is over: send the slab's final states and counters. */
+    public record Finish(ActorRef<Reply> replyTo) implements NodeCommand {
+    }
+
+    public record Started(int domain, double span, StateBatch edge) implements Reply {
+    }
+
+    /** A window's outcome: where it stopped early (a migration; +Infinity if not), changed discs' records and segments. */
+    public record WindowDone(int domain, double stopTime, int stopDisc, StateBatch changed, StateBatch segments)
+            implements Reply {
+    }
+
+    /** After an undo: the changed discs' restored records (empty if nothing was undone). */
+    public record Undone(int domain, StateBatch changed) implements Reply {
+    }
+
+    /** Installed or emigrated discs' records as the node now holds them (with its predictions). */
+    public record States(int domain, StateBatch states) implements Reply {
+    }
+
+    /** A checkpoint's part, with the slab's counters and pair virial sums so far. */
+    public record SnapshotPart(int domain, StateBatch states, long[] counters, double[] virial) implements Reply {
+    }
+
+    public record Replanned(int domain, double span) implements Reply {
+    }
+
+    /** Final states (scene ids; x, y, vx, vy), counters ({@code SlabNode#counters}) and pair virial sums. */
+    public record Finished(int domain, StateBatch finals, long[] counters, double[] virial) implements Reply {
+    }
+
+    /** A command the node could not carry out, and why. */
+    public record Failed(int domain, String message) implements Reply {
+    }
+}

@@ -1,0 +1,350 @@
+package carom.engines.slabs;
+
+import carom.core.engine.ProgressListener;
+import carom.core.engine.StallGuard;
+import carom.core.observe.VirialAccumulator;
+import carom.core.physics.Boundary;
+import carom.core.physics.Flight;
+import carom.core.scene.Scene;
+import carom.core.state.Discs;
+import carom.engines.kernel.DiscMotion;
+import carom.engines.kernel.DiscTable;
+import carom.engines.kernel.SavedStates;
+
+/**
+ * The coordinator's side of the {@code cluster} engine's slabs: what {@link SlabsRun} does between
+ * windows, on a table of the coordinator's own that mirrors only the edge columns. The slabs run
+ * in other JVMs ({@link SlabNode}) and send, after each window, the current records and logged
+ * edge-column segments of the discs that changed in an edge column; nothing else.
+ *
+ * <p>Invariant: the mirror's records of every disc in an edge column are the owners' current ones
+ * (every disc that enters, leaves or changes in an edge column is reported); the records of other
+ * discs are stale and never read. On it this class predicts the cross events ({@link CrossPredictions},
+ * as slabs does), verifies a window against the reported segments (as {@link WindowVerifier} does
+ * against the logs), and carries out cross-domain collisions, whose outcome goes back to the owners.
+ */
+public final class SlabMirror {
+    private static final double INF = Double.POSITIVE_INFINITY;
+
+    private final DiscTable table;
+    private final SlabColumns columns;
+    private final DiscMarks marks;
+    private final RunClock clock;
+    private final DiscMotion motion;
+    private final CrossPredictions cross;
+    private final SavedStates scratch;
+    private final int doublesPer;
+    private final Flight flight;
+    private final Boundary boundary;
+    private final Discs seg = new Discs(2);
+    private final StallGuard stall;
+    /** The pair virial of the cross-domain collisions (the slabs keep their own). */
+    public final VirialAccumulator virial;
+    /** Per domain, the last window's report: changed discs' records, their segments (also as slots of a book). */
+    private final StateBatch[] records;
+    private final StateBatch[] segments;
+    private final SavedStates[] book;
+    private final int[][] segmentsFrom;
+    /** The earliest violation found by {@link #verify}: time, discs, domains, the nodes' log entry codes. */
+    private double violationT;
+    private int violationX;
+    private int violationY;
+    private int violationDomX;
+    private int violationDomY;
+    private int violationEntryX;
+    private int violationEntryY;
+    public long crossPairCollisions;
+
+    /** A mirror of {@code requestedDomains} slabs (fewer if the box is too narrow: {@link #domains}). */
+    public SlabMirror(Scene scene, double cellFactor, int requestedDomains, double until) {
+        this.table = new DiscTable(scene, scene.newDiscs(), cellFactor);
+        this.columns = new SlabColumns(table, requestedDomains);
+        this.marks = new DiscMarks(table.n);
+        this.clock = new RunClock(until);
+        int k = columns.domains;
+        Domain[] views = new Domain[k];
+        DomainTask task = new DomainTask();
+        for (int d = 0; d < k; d++) {
+            views[d] = new Domain(d, table, columns, marks, clock, task, null, ProgressListener.NONE, scene);
+        }
+        this.motion = views[0].motion;
+        this.cross = k > 1 ? new CrossPredictions(table, columns, views) : null;
+        this.scratch = new SavedStates(motion, 4);
+        this.doublesPer = scratch.doublesPerState();
+        this.flight = table.flight;
+        this.boundary = table.boundary;
+        this.stall = new StallGuard(scene, table::sceneId);
+        this.virial = VirialAccumulator.forRun(until);
+        this.records = new StateBatch[k];
+        this.segments = new StateBatch[k];
+        this.book = new SavedStates[k];
+        this.segmentsFrom = new int[k][];
+        for (int d = 0; d < k; d++) {
+            records[d] = StateBatch.EMPTY;
+            segments[d] = StateBatch.EMPTY;
+            book[d] = new SavedStates(motion, 16);
+            segmentsFrom[d] = new int[1];
+        }
+    }
+
+    /** Slabs the box is cut into (every node builds the same cut). */
+    public int domains() {
+        return columns.domains;
+    }
+
+    /** The local time of the run's end, and the epoch local times count from. */
+    public double untilLocal() {
+        return clock.untilLocal;
+    }
+
+    public double epoch() {
+        return clock.epoch;
+    }
+
+    /** Local time counts from {@code epoch} (a run recovered from a checkpoint taken then). */
+    public void startAt(double epoch) {
+        clock.epoch = epoch;
+        clock.untilLocal = clock.until - epoch;
+    }
+
+    /** The slab that owns disc i (by its record here: right for discs in edge columns). */
+    public int ownerOf(int i) {
+        return columns.ownerOfDisc(i);
+    }
+
+    /** Writes owners' records into the mirror (cells relinked where they changed). */
+    public void importStates(StateBatch b) {
+        for (int q = 0; q < b.size(); q++) {
+            scratch.copyIn(0, b.doubles(), q * doublesPer, b.ints(), q * SavedStates.intsPerState());
+            scratch.restore(0, b.ids()[q]);
+        }
+    }
+
+    /** Predicts every cross event anew from local {@code now} (at the start). */
+    public void predictAllCross(double now) {
+        if (cross != null) {
+            cross.predictAll(now);
+        }
+    }
+
+    /** A window begins: no disc has changed in it yet, no report is in. */
+    public void startWindow() {
+        marks.startWindow();
+        for (int d = 0; d < records.length; d++) {
+            records[d] = StateBatch.EMPTY;
+            segments[d] = StateBatch.EMPTY;
+            segmentsFrom[d] = new int[1];
+        }
+    }
+
+    /** Domain d's window report: its changed discs' current records and their segments ({@link SlabNode}). */
+    public void windowReport(int d, StateBatch changed, StateBatch segs) {
+        records[d] = changed;
+        segments[d] = segs;
+        importStates(changed);
+        int[] from = new int[changed.size() + 1];
+        int s = 0;
+        for (int q = 0; q < changed.size(); q++) {
+            marks.markChanged(changed.ids()[q]);
+            from[q] = s;
+            while (s < segs.size() && segs.ids()[s] == changed.ids()[q]) {
+                s++;
+            }
+        }
+        from[changed.size()] = s;
+        segmentsFrom[d] = from;
+        for (int e = 0; e < segs.size(); e++) {
+            book[d].copyIn(e, segs.doubles(), e * doublesPer, segs.ints(), e * SavedStates.intsPerState());
+        }
+    }
+
+    /**
+     * The earliest contact before {@code limit} between a disc that changed in the window (which
+     * began at local {@code start}) and a foreign disc, on the segments the discs really followed;
+     * its time, +Infinity if none.
+     */
+    public double verify(double start, double limit) {
+        violationT = INF;
+        for (int a = 0; a < records.length; a++) {
+            StateBatch changed = records[a];
+            for (int q = 0; q < changed.size(); q++) {
+                int x = changed.ids()[q];
+                if (table.invMass(x) == 0) {
+                    continue;
+                }
+                checkSegment(a, x, -1, table.colOfDisc(x), table.rowOfDisc(x), Math.max(start, table.clock(x)), limit,
+                        start, limit);
+                for (int s = segmentsFrom[a][q]; s < segmentsFrom[a][q + 1]; s++) {
+                    checkSegment(a, x, s, book[a].col(s), book[a].row(s), Math.max(start, book[a].clock(s)),
+                            segments[a].ends()[s], start, limit);
+                }
+            }
+        }
+        return violationT;
+    }
+
+    /** x's segment s of domain a (-1: its record) over [from, to] against the foreign discs next to its cell. */
+    private void checkSegment(int a, int x, int s, int col, int row, double from, double to, double start, double limit) {
+        if (from > limit) {
+            return;
+        }
+        to = Math.min(to, limit);
+        if (!columns.edge[col]) {
+            return;
+        }
+        int entryX = load(0, a, x, s);
+        for (int dc = -1; dc <= 1; dc += 2) {
+            int c = columns.foreignColumn(col, dc, a);
+            if (c < 0) {
+                continue;
+            }
+            int b = columns.owner[c];
+            for (int dr = -1; dr <= 1; dr++) {
+                int r = columns.wrappedRow(row + dr);
+                if (r < 0) {
+                    continue;
+                }
+                for (int y = table.firstInCell(c, r); y != DiscTable.NIL; y = table.nextInCell(y)) {
+                    if (!marks.changedThisWindow(y)) {
+                        motion.load(seg, y, 1);
+                        contact(a, x, entryX, b, y, WindowVerifier.UNTOUCHED, from, to);
+                    }
+                }
+            }
+            StateBatch changedB = records[b];
+            for (int q = 0; q < changedB.size(); q++) {
+                int y = changedB.ids()[q];
+                int entryY = load(1, b, y, -1);
+                contact(a, x, entryX, b, y, entryY, Math.max(from, Math.max(start, table.clock(y))), to);
+                for (int e = segmentsFrom[b][q]; e < segmentsFrom[b][q + 1]; e++) {
+                    entryY = load(1, b, y, e);
+                    contact(a, x, entryX, b, y, entryY, Math.max(from, Math.max(start, book[b].clock(e))),
+                            Math.min(to, segments[b].ends()[e]));
+                }
+            }
+        }
+    }
+
+    /** Loads disc i's segment s of domain d (-1: its record) into slot {@code slot}; returns the node's entry code. */
+    private int load(int slot, int d, int i, int s) {
+        if (s < 0) {
+            motion.load(seg, i, slot);
+            return WindowVerifier.RECORD;
+        }
+        book[d].load(seg, slot, s, i);
+        return segments[d].entries()[s];
+    }
+
+    private void contact(int a, int x, int ex, int b, int y, int ey, double from, double to) {
+        if (!(from <= to)) {
+            return;
+        }
+        double t = from + flight.timeToContact(seg, 0, 1, from, to, boundary);
+        if (t <= to && t < violationT) {
+            violationT = t;
+            violationX = x;
+            violationY = y;
+            violationDomX = a;
+            violationDomY = b;
+            violationEntryX = ex;
+            violationEntryY = ey;
+        }
+    }
+
+    /** The violating discs of the last {@link #verify}. */
+    public int violationX() {
+        return violationX;
+    }
+
+    public int violationY() {
+        return violationY;
+    }
+
+    /** The violating disc of domain d, if it holds one (its creating event must stand), else -1. */
+    public int keepDisc(int d) {
+        return d == violationDomX ? violationX : d == violationDomY ? violationY : -1;
+    }
+
+    /** That disc's segment as domain d's log names it. */
+    public int keepEntry(int d) {
+        return d == violationDomX ? violationEntryX : d == violationDomY ? violationEntryY : WindowVerifier.UNTOUCHED;
+    }
+
+    /** Changed edge discs of every domain (records as now imported) get new cross predictions from {@code now}. */
+    public void predictChanged(double now) {
+        for (StateBatch changed : records) {
+            for (int q = 0; q < changed.size(); q++) {
+                cross.predict(changed.ids()[q], now);
+            }
+        }
+    }
+
+    /** Predicts disc i's cross event anew from local {@code now}. */
+    public void predictCross(int i, double now) {
+        if (cross != null) {
+            cross.predict(i, now);
+        }
+    }
+
+    /** The earliest valid cross event's disc from local {@code now}, or -1. */
+    public int validTop(double now) {
+        return cross == null ? -1 : cross.validTop(now);
+    }
+
+    public double crossTime(int i) {
+        return cross.time(i);
+    }
+
+    /** Disc i's cross partner: a disc, or negative for a migration. */
+    public int crossPartner(int i) {
+        int p = cross.partner(i);
+        return p == CrossPredictions.MIGRATE ? -1 : p;
+    }
+
+    /** Whether the top event may be processed now: neither disc changed in the window, the prediction holds. */
+    public boolean topStillValid(int i) {
+        return !marks.changedThisWindow(i) && cross.valid(i);
+    }
+
+    public long crossPredictions() {
+        return cross == null ? 0 : cross.predictions;
+    }
+
+    /**
+     * The contact of discs a and b (different slabs) at local {@code now}, carried out on the mirror;
+     * returns both discs' new states, for their owners to install.
+     */
+    public StateBatch collide(int a, int b, double now) {
+        double abs = clock.epoch + now;
+        stall.event(abs, a, b);
+        double w = motion.collidePair(a, b, now, abs, stall);
+        crossPairCollisions++;
+        virial.add(abs, w);
+        StateBatch.Builder out = new StateBatch.Builder(doublesPer, SavedStates.intsPerState(), 2);
+        for (int i : new int[] {a, b}) {
+            int q = out.add(i, WindowVerifier.RECORD, 0);
+            scratch.save(0, i);
+            scratch.copyOut(0, out.doubles(), q * doublesPer, out.ints(), q * SavedStates.intsPerState());
+        }
+        return out.build();
+    }
+
+    /** Counts a migration's event for the stall guard. */
+    public void migrationEvent(int i, double now) {
+        stall.event(clock.epoch + now, i, StallGuard.CELL_SIDE);
+    }
+
+    /** Re-anchors local time: {@code now} becomes 0 (mirror records, cross events, clock). */
+    public void rebase(double now) {
+        if (cross != null) {
+            cross.rebase(now);
+        }
+        clock.shift(now);
+        motion.rebase(now, null, table.n);
+    }
+
+    /** The scene id of internal disc i, for messages. */
+    public int sceneId(int i) {
+        return table.sceneId(i);
+    }
+}

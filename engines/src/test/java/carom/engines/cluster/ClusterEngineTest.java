@@ -1,0 +1,154 @@
+package carom.engines.cluster;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import carom.core.engine.RunOptions;
+import carom.core.engine.RunResult;
+import carom.core.scene.Effects;
+import carom.core.scene.Scene;
+import carom.engines.fast.FastEngine;
+import carom.engines.reference.ChainScenes;
+import carom.engines.reference.Invariants;
+import carom.engines.reference.RandomScenes;
+import carom.engines.serial.SerialEngine;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+/**
+ * The cluster engine with real worker JVMs on 127.0.0.1 (2 and 3 nodes) against the serial reference
+ * and {@code fast}, on short horizons (before chaos separates exact engines): a walled and a periodic
+ * gas, a gas with gravity, restitution and the TC model, the six-disc chain across a slab edge, and a
+ * dense scene at packing fraction 0.7 that rolls windows back. After every test, passed or failed,
+ * no worker process may be left.
+ */
+class ClusterEngineTest {
+    private static final double SAME = 1e-8;
+
+    private static RunResult cluster(Scene scene, int nodes) {
+        RunOptions o = RunOptions.until(scene.until()).withTunable("nodes", Integer.toString(nodes));
+        RunResult r = new ClusterEngine().run(scene, o);
+        Invariants.noOverlapsAndInside(scene, r.finalState());
+        return r;
+    }
+
+    @AfterEach
+    void noWorkerLeftBehind() {
+        List<ProcessHandle> left = ProcessHandle.current().descendants().filter(ProcessHandle::isAlive).toList();
+        assertThat(left).as("processes left behind").isEmpty();
+    }
+
+    @Test
+    void denseWalledAndPeriodicScenesOnTwoNodesMatchSerial() {
+        Scene walls = RandomScenes.dense(900, 0.7, false, 4, 0.15);
+        RunResult r = cluster(walls, 2);
+        assertThat(r.counters().get("domains")).isEqualTo(2);
+        assertThat(r.counters().get("crossDomainEvents")).as("cross-slab contacts").isPositive();
+        assertThat(r.counters().get("rollbacks")).as("rollbacks").isPositive();
+        assertThat(r.counters().get("windows")).isEqualTo(r.counters().get("commits") + r.counters().get("rollbacks"));
+        assertThat(r.counters().get("messages")).isPositive();
+        assertThat(r.counters().get("messageBytes")).isGreaterThan(r.counters().get("messages"));
+        Invariants.assertSameRun(walls.name(), r, new SerialEngine().run(walls, RunOptions.until(walls.until())), SAME);
+    }
+
+    @Test
+    void periodicDenseSceneOnThreeNodesMatchesSerialAndFast() {
+        Scene scene = RandomScenes.dense(900, 0.7, true, 4, 0.15);
+        RunResult r = cluster(scene, 3);
+        assertThat(r.counters().get("domains")).isEqualTo(3);
+        assertThat(r.counters().get("rollbacks")).as("rollbacks").isPositive();
+        Invariants.assertSameRun(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())), SAME);
+        Invariants.assertSameRun(scene.name(), r, new FastEngine().run(scene, RunOptions.until(scene.until())), SAME);
+    }
+
+    @Test
+    void theSixDiscChainAcrossASlabEdgeMatchesSerial() {
+        Scene scene = ChainScenes.alongX();
+        RunResult r = cluster(scene, 2);
+        assertThat(r.counters().get("domains")).isEqualTo(2);
+        assertThat(r.counters().get("crossDomainEvents")).isPositive();
+        Invariants.assertSameRun(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())), SAME);
+    }
+
+    @Test
+    void gasesWithGravityAndWithRestitutionAndTcMatchSerialOnThreeNodes() {
+        // Gravity with elastic collisions, and restitution with the TC model without gravity: inelastic
+        // collisions under gravity (resting contact) are refused, see below.
+        for (Effects effects : List.of(new Effects(0, -2, 1, 1, 0), Effects.NONE.withRestitution(0.8, 0.9).withTc(1e-3))) {
+            Scene scene = RandomScenes.dense(900, 0.5, false, 11, 0.25).withEffects(effects);
+            RunResult r = cluster(scene, 3);
+            assertThat(r.counters().get("crossDomainEvents")).isPositive();
+            Invariants.assertSameRun(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())), SAME);
+        }
+    }
+
+    @Test
+    void inelasticCollisionsUnderGravityAreRefusedBeforeAnyWorkerStarts() {
+        Scene scene = RandomScenes.dense(100, 0.5, false, 11, 0.25)
+                .withEffects(new Effects(0, -2, 1, 1, 0).withRestitution(0.8, 0.9).withTc(1e-3));
+        assertThatThrownBy(() -> new ClusterEngine().run(scene, RunOptions.until(scene.until())))
+                .isInstanceOf(carom.core.BadInputException.class).hasMessageContaining("inelastic collisions under gravity");
+        assertThat(ProcessHandle.current().descendants().filter(ProcessHandle::isAlive)).isEmpty();
+    }
+
+    @ParameterizedTest(name = "checkpoints every {0} windows")
+    @CsvSource({"40", "1000000"})
+    void aWorkerKilledMidRunIsRecoveredFromTheLastCheckpointAndTheRunEndsInTheSameState(String checkpointWindows)
+            throws Exception {
+        // Killed after 64 windows: recovered from the checkpoint of window 40, or from the scene (the first checkpoint).
+        Scene scene = RandomScenes.dense(900, 0.5, true, 5, 0.5);
+        CountDownLatch running = new CountDownLatch(1);
+        RunOptions o = new RunOptions(scene.until(), 1, t -> running.countDown(),
+                Map.of("nodes", "3", "checkpointWindows", checkpointWindows));
+        CompletableFuture<RunResult> run = CompletableFuture.supplyAsync(() -> new ClusterEngine().run(scene, o));
+        try {
+            assertThat(running.await(300, TimeUnit.SECONDS)).as("the run got going").isTrue();
+            ProcessHandle worker = ProcessHandle.current().descendants().filter(ProcessHandle::isAlive).findFirst()
+                    .orElseThrow();
+            worker.destroyForcibly();
+            RunResult r = run.get(300, TimeUnit.SECONDS);
+            assertThat(r.counters().get("recoveries")).as("recoveries").isEqualTo(1);
+            assertThat(r.counters().get("domains")).as("slabs after the recovery").isEqualTo(2);
+            Invariants.noOverlapsAndInside(scene, r.finalState());
+            Invariants.assertSameRun(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())), SAME);
+        } finally {
+            // Whatever failed above, the run must end (and with it its workers) before the next test.
+            if (!run.isDone()) {
+                ProcessHandle.current().descendants().forEach(ProcessHandle::destroyForcibly);
+            }
+            try {
+                run.get(300, TimeUnit.SECONDS);
+            } catch (Exception failed) {
+                // Reported above if it mattered.
+            }
+        }
+    }
+
+    @Test
+    void runsOverARunningWorkerReachedThroughItsSeedNodeOneAfterAnother() throws Exception {
+        // A worker as './carom node --join' starts it, seeding its own cluster; two runs join it in turn.
+        int port = ClusterLife.freePort();
+        String java = ProcessHandle.current().info().command().orElseThrow();
+        Process worker = new ProcessBuilder(java, "-cp", System.getProperty("java.class.path"),
+                ClusterWorker.class.getName(), "--join", "127.0.0.1:" + port, "--port", Integer.toString(port))
+                .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+        try {
+            ClusterEngine engine = ClusterEngine.joining(List.of("127.0.0.1:" + port));
+            for (Scene scene : new Scene[] {RandomScenes.dense(900, 0.6, true, 3, 0.1), ChainScenes.alongX()}) {
+                RunResult r = engine.run(scene, RunOptions.until(scene.until()).withTunable("nodes", "2"));
+                assertThat(r.counters().get("domains")).isEqualTo(2);
+                Invariants.assertSameRun(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())), SAME);
+                assertThat(worker.isAlive()).as("the worker serves the next run").isTrue();
+            }
+        } finally {
+            worker.destroyForcibly().waitFor(30, TimeUnit.SECONDS);
+        }
+    }
+}
