@@ -45,14 +45,8 @@ public final class SlabMirror {
     private final StateBatch[] segments;
     private final SavedStates[] book;
     private final int[][] segmentsFrom;
-    /** The earliest violation found by {@link #verify}: time, discs, domains, the nodes' log entry codes. */
-    private double violationT;
-    private int violationX;
-    private int violationY;
-    private int violationDomX;
-    private int violationDomY;
-    private int violationEntryX;
-    private int violationEntryY;
+    /** The earliest violation found by {@link #verify}: time, discs, nodes, the nodes' log entry codes. */
+    private final EarliestViolation<Integer> violation = new EarliestViolation<>();
     public long crossPairCollisions;
 
     /** A mirror of {@code requestedDomains} slabs (fewer if the box is too narrow: {@link #domains}). */
@@ -164,7 +158,7 @@ public final class SlabMirror {
      * its time, +Infinity if none.
      */
     public double verify(double start, double limit) {
-        violationT = INF;
+        violation.reset();
         for (int a = 0; a < records.length; a++) {
             StateBatch changed = records[a];
             for (int q = 0; q < changed.size(); q++) {
@@ -180,7 +174,7 @@ public final class SlabMirror {
                 }
             }
         }
-        return violationT;
+        return violation.time();
     }
 
     /** x's segment s of domain a (-1: its record) over [from, to] against the foreign discs next to its cell. */
@@ -240,34 +234,26 @@ public final class SlabMirror {
             return;
         }
         double t = from + flight.timeToContact(seg, 0, 1, from, to, boundary);
-        if (t <= to && t < violationT) {
-            violationT = t;
-            violationX = x;
-            violationY = y;
-            violationDomX = a;
-            violationDomY = b;
-            violationEntryX = ex;
-            violationEntryY = ey;
-        }
+        violation.offer(t, to, a, x, ex, b, y, ey);
     }
 
     /** The violating discs of the last {@link #verify}. */
     public int violationX() {
-        return violationX;
+        return violation.x();
     }
 
     public int violationY() {
-        return violationY;
+        return violation.y();
     }
 
     /** The violating disc of domain d, if it holds one (its creating event must stand), else -1. */
     public int keepDisc(int d) {
-        return d == violationDomX ? violationX : d == violationDomY ? violationY : -1;
+        return violation.discOf(d);
     }
 
     /** That disc's segment as domain d's log names it. */
     public int keepEntry(int d) {
-        return d == violationDomX ? violationEntryX : d == violationDomY ? violationEntryY : WindowVerifier.UNTOUCHED;
+        return violation.entryOf(d, WindowVerifier.UNTOUCHED);
     }
 
     /** Changed edge discs of every domain (records as now imported) get new cross predictions from {@code now}. */

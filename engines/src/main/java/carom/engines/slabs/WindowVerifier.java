@@ -34,13 +34,7 @@ final class WindowVerifier {
     private final Discs seg = new Discs(2);
 
     /** The earliest violation found: its time (+Infinity if none), its discs, their domains and log entries. */
-    private double violationT;
-    private int violationX;
-    private int violationY;
-    private Domain violationDomX;
-    private Domain violationDomY;
-    private int violationEntryX;
-    private int violationEntryY;
+    private final EarliestViolation<Domain> violation = new EarliestViolation<>();
 
     WindowVerifier(DiscTable table, SlabColumns columns, Domain[] domains, DiscMarks marks) {
         this.table = table;
@@ -54,15 +48,15 @@ final class WindowVerifier {
 
     /** The earliest violation's time, +Infinity if none; its two discs. */
     double violationTime() {
-        return violationT;
+        return violation.time();
     }
 
     int violationX() {
-        return violationX;
+        return violation.x();
     }
 
     int violationY() {
-        return violationY;
+        return violation.y();
     }
 
     /**
@@ -71,7 +65,7 @@ final class WindowVerifier {
      * followed.
      */
     void verify(double start, double limit) {
-        violationT = INF;
+        violation.reset();
         for (Domain a : domains) {
             UndoLog log = a.log;
             for (int q = 0; q < log.changedCount(); q++) {
@@ -159,15 +153,7 @@ final class WindowVerifier {
         }
         double t = from + (table.growing ? table.growingContactTime(seg, 0, 1, from)
                 : flight.timeToContact(seg, 0, 1, from, to, boundary));
-        if (t <= to && t < violationT) {
-            violationT = t;
-            violationX = x;
-            violationY = y;
-            violationDomX = a;
-            violationDomY = b;
-            violationEntryX = ex;
-            violationEntryY = ey;
-        }
+        violation.offer(t, to, a, x, ex, b, y, ey);
     }
 
     /**
@@ -178,12 +164,7 @@ final class WindowVerifier {
      * window would be redone and rolled back forever.
      */
     int segmentCreator(Domain d) {
-        if (d == violationDomX) {
-            return d.log.creatorOf(violationX, violationEntryX);
-        }
-        if (d == violationDomY) {
-            return d.log.creatorOf(violationY, violationEntryY);
-        }
-        return -1;
+        int disc = violation.discOf(d);
+        return disc < 0 ? -1 : d.log.creatorOf(disc, violation.entryOf(d, UNTOUCHED));
     }
 }
