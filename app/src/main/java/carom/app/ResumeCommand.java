@@ -5,7 +5,6 @@ import carom.app.checkpoint.CheckpointOptions;
 import carom.app.checkpoint.RunCheckpoints;
 import carom.app.checkpoint.StopSignals;
 import carom.app.report.Observing;
-import carom.app.report.Provenance;
 import carom.app.report.RunRecord;
 import carom.core.BadInputException;
 import carom.core.Quoted;
@@ -13,7 +12,6 @@ import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.engine.RunStopped;
-import carom.core.engine.Sampler;
 import carom.core.engine.Tunables;
 import carom.core.scene.Scene;
 import carom.core.scene.SceneReader;
@@ -24,7 +22,6 @@ import java.io.Writer;
 import java.nio.charset.Charset;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
-import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
@@ -118,16 +115,9 @@ final class ResumeCommand implements Callable<Integer> {
             RunResult result;
             try (ProgressBar bar = ProgressBar.forRun(err, end);
                  Writer frames = trajectory == null ? null : files.stream(trajectory)) {
-                RunOptions options = new RunOptions(end, saved.threads(), bar, saved.tunables());
-                Sampler sampler = Observing.both(frames == null ? null : new TrajectoryXyz(scene, frames), observing);
-                if (sampler != null) {
-                    options = options.withSamples(saved.every(), sampler);
-                }
-                if (sink != null) {
-                    options = options.withCheckpoints(sink);
-                }
-                RunOptions chosen = options;
-                result = engine.resume(scene, chosen, saved.engineState());
+                RunOptions options = RunOutputs.withSamplesAndCheckpoints(new RunOptions(end, saved.threads(), bar,
+                        saved.tunables()), RunOutputs.sampler(scene, frames, observing), saved.every(), sink);
+                result = engine.resume(scene, options, saved.engineState());
             } catch (IllegalArgumentException e) {
                 throw new BadInputException(Quoted.fileName(checkpointFile) + ": the engine's state does not fit: "
                         + e.getMessage());
@@ -135,16 +125,12 @@ final class ResumeCommand implements Callable<Integer> {
                 throw new UncheckedIOException("cannot write the trajectory: " + e.getMessage(), e);
             }
             int used = result.threadsUsed(engine.threadsFor(saved.threads()));
-            RunRecord record = observing == null ? null : new RunRecord(Provenance.commandLine(
-                    spec.commandLine().getParseResult().originalArgs()), engine.name(), scene.name(), saved.sceneFileName(),
-                    scene.size(), end, saved.every(), List.of(saved.observe().split(",")).stream().map(String::strip).toList(),
-                    Provenance.machine());
+            RunRecord record = RunOutputs.record(spec, engine.name(), scene, saved.sceneFileName(), saved.every(), saved.observe());
             RunOutputs.stage(files, scene, used, result, observing, record, report, out, summary,
                     spec.commandLine().getOut(), stdoutCharset);
             files.commit();
         } catch (RunStopped stopped) {
-            err.println("stopped at t = " + stopped.time() + "; continue with: carom resume " + checkpoint);
-            return StopSignals.exitStatus(sink.stopSignal());
+            return RunOutputs.stopped(err, stopped, checkpoint, sink);
         }
         return 0;
     }
@@ -155,12 +141,6 @@ final class ResumeCommand implements Callable<Integer> {
         SimulateCommand.checkOutput(summary, "--summary", named);
         SimulateCommand.checkOutput(trajectory, "--trajectory", named);
         SimulateCommand.checkOutput(checkpoint, "--checkpoint", named);
-        if (report != null) {
-            String earlier = named.putIfAbsent(report.toAbsolutePath().normalize(), "--report");
-            if (earlier != null) {
-                throw new BadInputException(earlier + " and --report name the same path " + Quoted.fileName(report.toString()));
-            }
-            AtomicOutput.checkFolderWritable(report, "--report");
-        }
+        SimulateCommand.checkReportFolder(report, named);
     }
 }

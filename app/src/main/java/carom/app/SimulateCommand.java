@@ -15,7 +15,6 @@ import carom.app.checkpoint.CheckpointOptions;
 import carom.app.checkpoint.RunCheckpoints;
 import carom.app.checkpoint.StopSignals;
 import carom.app.report.Observing;
-import carom.app.report.Provenance;
 import carom.app.report.RunRecord;
 import carom.core.scene.Scene;
 import carom.core.scene.SceneReader;
@@ -29,7 +28,6 @@ import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 import java.util.concurrent.Callable;
 import jdk.jfr.Recording;
 import picocli.CommandLine.Command;
@@ -184,20 +182,14 @@ final class SimulateCommand implements Callable<Integer> {
             try (ProgressBar bar = ProgressBar.forRun(err, scene.until())
                     .withStatus(String.format(java.util.Locale.ROOT, "about %.2g collisions expected", expected));
                  Writer frames = trajectory == null ? null : files.stream(trajectory)) {
-                RunOptions options = new RunOptions(scene.until(), workers, bar, tunables);
-                Sampler sampler = Observing.both(frames == null ? null : new TrajectoryXyz(scene, frames), observing);
+                Sampler sampler = RunOutputs.sampler(scene, frames, observing);
                 if (sampler == null && every != null && scene.effects().grows()) {
                     // With growth, --every is also the thermostat's interval: sample for it alone.
                     sampler = (t, state, virialSum) -> { };
                 }
-                if (sampler != null) {
-                    options = options.withSamples(every, sampler);
-                }
-                if (sink != null) {
-                    options = options.withCheckpoints(sink);
-                }
-                RunOptions chosen = options;
-                result = new SceneFile(sceneFile).about(() -> engine.run(scene, chosen));
+                RunOptions options = RunOutputs.withSamplesAndCheckpoints(new RunOptions(scene.until(), workers, bar, tunables),
+                        sampler, every == null ? Double.NaN : every, sink);
+                result = new SceneFile(sceneFile).about(() -> engine.run(scene, options));
             } catch (IOException e) {
                 throw new UncheckedIOException("cannot write the trajectory: " + e.getMessage(), e);
             }
@@ -206,18 +198,13 @@ final class SimulateCommand implements Callable<Integer> {
                 files.stageFile(jfr, recording::dump);
             }
             int used = result.threadsUsed(engine.threadsFor(workers));
-            // run.json says what made the report folder, for 'carom report'.
-            RunRecord record = observing == null ? null : new RunRecord(Provenance.commandLine(
-                    spec.commandLine().getParseResult().originalArgs()), engine.name(), scene.name(), sceneFile,
-                    scene.size(), scene.until(), every, List.of(observe.split(",")).stream().map(String::strip).toList(),
-                    Provenance.machine());
+            RunRecord record = RunOutputs.record(spec, engine.name(), scene, sceneFile, every == null ? Double.NaN : every,
+                    observe);
             RunOutputs.stage(files, scene, used, result, observing, record, report, out, summary, spec.commandLine().getOut(),
                     stdoutCharset);
             files.commit();
         } catch (RunStopped stopped) {
-            // Nothing but the checkpoint is written: the run is not over.
-            err.println("stopped at t = " + stopped.time() + "; continue with: carom resume " + checkpoint);
-            return StopSignals.exitStatus(sink.stopSignal());
+            return RunOutputs.stopped(err, stopped, checkpoint, sink);
         }
         return 0;
     }
@@ -274,13 +261,19 @@ final class SimulateCommand implements Callable<Integer> {
         checkOutput(jfr, "--jfr", named);
         checkOutput(trajectory, "--trajectory", named);
         checkOutput(checkpoint, "--checkpoint", named);
-        if (report != null) {
-            String earlier = named.putIfAbsent(report.toAbsolutePath().normalize(), "--report");
-            if (earlier != null) {
-                throw new BadInputException(earlier + " and --report name the same path " + Quoted.fileName(report.toString()));
-            }
-            AtomicOutput.checkFolderWritable(report, "--report");
+        checkReportFolder(report, named);
+    }
+
+    /** {@code --report}'s folder, if given, must be creatable and not named by another output option already in {@code named}. */
+    static void checkReportFolder(Path report, Map<Path, String> named) {
+        if (report == null) {
+            return;
         }
+        String earlier = named.putIfAbsent(report.toAbsolutePath().normalize(), "--report");
+        if (earlier != null) {
+            throw new BadInputException(earlier + " and --report name the same path " + Quoted.fileName(report.toString()));
+        }
+        AtomicOutput.checkFolderWritable(report, "--report");
     }
 
     /** {@code file} must be writable and not named by another output option already in {@code named}. */
