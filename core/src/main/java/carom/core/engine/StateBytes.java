@@ -190,6 +190,15 @@ public final class StateBytes {
             return a;
         }
 
+        /** An array written by {@link Out#putLongs} that must hold {@code count} values (a fixed set of counters). */
+        public long[] getLongs(int count) {
+            expectLength(length(8), count);
+            long[] a = new long[count];
+            buffer.asLongBuffer().get(a);
+            buffer.position(buffer.position() + 8 * count);
+            return a;
+        }
+
         /** Fails unless every byte was read. */
         public void end() {
             if (buffer.hasRemaining()) {

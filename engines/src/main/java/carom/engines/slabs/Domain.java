@@ -108,10 +108,7 @@ final class Domain {
 
     void restore(carom.core.engine.StateBytes.In in, double savedUntil) {
         queue.restore(in);
-        long[] c = in.getLongs();
-        if (c.length != 9) {
-            throw new IllegalArgumentException("engine state: " + c.length + " domain counters");
-        }
+        long[] c = in.getLongs(9);
         events = c[0];
         pairCollisions = c[1];
         wallCollisions = c[2];

@@ -55,10 +55,7 @@ final class SlabsCounters {
     }
 
     void restore(carom.core.engine.StateBytes.In in) {
-        long[] c = in.getLongs();
-        if (c.length != 8) {
-            throw new IllegalArgumentException("engine state: " + c.length + " slabs counters");
-        }
+        long[] c = in.getLongs(8);
         resyncs = c[0];
         merges = c[1];
         windows = c[2];
