@@ -121,11 +121,12 @@ public final class EosCommand implements Callable<Integer> {
             }
         }
         double loadAfter = Machine.loadAverage();
-        Map<String, byte[]> files = new EosReport(settings, points, machine, loadBefore, loadAfter).files();
+        EosReport report = new EosReport(settings, points, machine, loadBefore, loadAfter);
+        Map<String, byte[]> files = report.files();
         OutputFolder.write(out, files);
         PrintWriter stdout = spec.commandLine().getOut();
         stdout.println("wrote " + out + ": " + String.join(", ", files.keySet()));
-        stdout.println(new EosReport(settings, points, machine, loadBefore, loadAfter).loopVerdict());
+        stdout.println(report.loopVerdict());
         stdout.flush();
         return 0;
     }

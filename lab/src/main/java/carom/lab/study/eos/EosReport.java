@@ -47,12 +47,15 @@ final class EosReport {
         files.put(REPORT, markdown().getBytes(StandardCharsets.UTF_8));
         files.put(CSV, csv().csv().getBytes(StandardCharsets.UTF_8));
         figures().forEach((name, figure) -> files.putAll(Charts.files(name, figure)));
-        for (EosPoint p : points) {
-            if (settings.snapshots().stream().anyMatch(s -> Math.abs(s - p.phi()) < 1e-9)) {
-                files.put(snapshotName(p.phi()), png(snapshot(p)));
-            }
+        for (EosPoint p : snapshotted()) {
+            files.put(snapshotName(p.phi()), png(snapshot(p)));
         }
         return files;
+    }
+
+    /** The points whose final state is drawn (those of {@code --snapshots}). */
+    private List<EosPoint> snapshotted() {
+        return points.stream().filter(p -> settings.snapshots().stream().anyMatch(s -> Math.abs(s - p.phi()) < 1e-9)).toList();
     }
 
     static String snapshotName(double phi) {
@@ -101,8 +104,7 @@ final class EosReport {
             md.append("![").append(name).append("](").append(name).append(".png)\n\n");
         }
         md.append("Each plot is also written as SVG beside its PNG.\n\n");
-        List<String> snaps = points.stream().filter(p -> settings.snapshots().stream().anyMatch(s -> Math.abs(s - p.phi()) < 1e-9))
-                .map(p -> snapshotName(p.phi())).toList();
+        List<String> snaps = snapshotted().stream().map(p -> snapshotName(p.phi())).toList();
         if (!snaps.isEmpty()) {
             md.append("## Snapshots\n\nThe final state of each run, every disc coloured by its local ψ6 = (1/n) Σ exp(6iθ) over its ")
                     .append("neighbours within 1.4σ: the hue is the bonds' orientation (one turn of the colour wheel is 60°), the ")

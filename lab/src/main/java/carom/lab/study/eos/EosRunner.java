@@ -41,71 +41,81 @@ final class EosRunner {
     EosPoint measure(double phi, java.util.function.Consumer<String> status) {
         Scene scene = settings.start().equals(EosCommand.FLUID) ? EosScene.fluid(settings.discs(), phi, settings.seed(), engine, threads)
                 : EosScene.crystal(settings.discs(), phi, settings.seed());
-        int n = scene.newDiscs().n;
-        BondOrder bondOrder = new BondOrder();
-        double clock = 0;
-        long pairs = 0;
-        double wall = 0;
+        int n = scene.size();
+        Chain chain = new Chain(scene);
 
         // The pilot: runs of doubling length until the discs have collided twice each on average, so that
         // the rate that sizes the blocks is measured, not guessed (a dilute crystal may not collide at all
         // in a short first run).
-        Discs state = scene.newDiscs();
-        long pilotPairs = 0;
-        double pilotTime = 0;
-        for (double length = PILOT_TIME; pilotPairs < n; length *= 2) {
-            RunResult pilot = run(scene.withState(state), length);
-            state = pilot.finalState();
-            pilotPairs += pilot.pairCollisions();
-            pilotTime += length;
-            wall += pilot.wallSeconds();
+        for (double length = PILOT_TIME; chain.pairs < n; length *= 2) {
+            chain.next(length);
         }
-        pairs += pilotPairs;
-        clock += pilotTime;
-        double blockTime = settings.blockCollisions() / (2.0 * pilotPairs / n / pilotTime);
+        double blockTime = settings.blockCollisions() / (2.0 * chain.pairs / n / chain.clock);
 
         Equilibration judge = new Equilibration(settings.window(), 2.0);
         List<Double> zBlocks = new ArrayList<>();
         List<Double> psiBlocks = new ArrayList<>();
-        boolean equilibrated = false;
+        boolean equilibrated;
         while (true) {
-            double perDisc = 2.0 * pairs / n;
+            double perDisc = 2.0 * chain.pairs / n;
             boolean stationary = perDisc >= settings.minEquilibration() && judge.stationary(zBlocks, 0)
                     && judge.stationary(psiBlocks, PSI6_FLOOR);
             if (stationary || perDisc >= settings.maxEquilibration()) {
                 equilibrated = stationary;
                 break;
             }
-            RunResult r = run(scene.withState(state), blockTime);
-            state = r.finalState();
-            clock += blockTime;
-            pairs += r.pairCollisions();
-            wall += r.wallSeconds();
-            zBlocks.add(r.pressure().compressibility());
-            psiBlocks.add(psi6(bondOrder, scene, state, clock));
+            chain.block(blockTime, zBlocks, psiBlocks);
             status.accept(String.format(java.util.Locale.ROOT, "phi %s equilibrating: %.0f collisions/disc, Z %.4f, |psi6| %.3f",
-                    phi, 2.0 * pairs / n, zBlocks.get(zBlocks.size() - 1), psiBlocks.get(psiBlocks.size() - 1)));
+                    phi, 2.0 * chain.pairs / n, zBlocks.getLast(), psiBlocks.getLast()));
         }
-        double equilibrationPerDisc = 2.0 * pairs / n;
-        long measuredPairs = 0;
+        long equilibrationPairs = chain.pairs;
         zBlocks.clear();
         psiBlocks.clear();
         for (int b = 0; b < settings.blocks(); b++) {
-            RunResult r = run(scene.withState(state), blockTime);
-            state = r.finalState();
-            clock += blockTime;
-            measuredPairs += r.pairCollisions();
-            wall += r.wallSeconds();
-            zBlocks.add(r.pressure().compressibility());
-            psiBlocks.add(psi6(bondOrder, scene, state, clock));
+            chain.block(blockTime, zBlocks, psiBlocks);
             status.accept(String.format(java.util.Locale.ROOT, "phi %s measuring: block %d of %d, Z %.4f", phi, b + 1,
                     settings.blocks(), zBlocks.get(b)));
         }
-        pairs += measuredPairs;
         Equilibration.Window z = Equilibration.Window.of(zBlocks);
         Equilibration.Window psi = Equilibration.Window.of(psiBlocks);
-        return new EosPoint(phi, equilibrated, equilibrationPerDisc, 2.0 * measuredPairs / n, settings.blocks(), blockTime,
-                z.mean(), z.standardError(), psi.mean(), psi.standardError(), pairs, wall, scene, state);
+        return new EosPoint(phi, equilibrated, 2.0 * equilibrationPairs / n, 2.0 * (chain.pairs - equilibrationPairs) / n,
+                settings.blocks(), blockTime, z.mean(), z.standardError(), psi.mean(), psi.standardError(), chain.pairs,
+                chain.wall, scene, chain.state);
+    }
+
+    /**
+     * Runs of the engine one after another, each from the last one's final state, with the simulated time,
+     * pair collisions and engine seconds they add up to; |ψ6| is read at block ends through one
+     * {@link BondOrder} (whose sample times must rise, hence the running clock).
+     */
+    private final class Chain {
+        private final Scene scene;
+        private final BondOrder bondOrder = new BondOrder();
+        Discs state;
+        double clock;
+        long pairs;
+        double wall;
+
+        Chain(Scene scene) {
+            this.scene = scene;
+            this.state = scene.newDiscs();
+        }
+
+        /** One more run of {@code length}; its result. */
+        RunResult next(double length) {
+            RunResult r = run(scene.withState(state), length);
+            state = r.finalState();
+            clock += length;
+            pairs += r.pairCollisions();
+            wall += r.wallSeconds();
+            return r;
+        }
+
+        /** One block: its Z onto {@code z}, |ψ6| at its end onto {@code psi6}. */
+        void block(double length, List<Double> z, List<Double> psi6) {
+            z.add(next(length).pressure().compressibility());
+            psi6.add(EosRunner.psi6(bondOrder, scene, state, clock));
+        }
     }
 
     private RunResult run(Scene scene, double until) {
