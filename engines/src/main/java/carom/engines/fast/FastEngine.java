@@ -76,10 +76,7 @@ public final class FastEngine implements Engine {
     public RunResult run(Scene scene, RunOptions options) {
         checkSupports(scene);
         if (scene.effects().grows()) {
-            if (options.checkpoints() != null) {
-                // A growth run rebuilds its table in stages; saving a stage's state is not built yet.
-                throw new carom.core.BadInputException("--checkpoint: runs with growing discs cannot be checkpointed yet");
-            }
+            carom.engines.kernel.GrowthStages.refuseCheckpoints(options);
             return new GrowthRun(scene, options, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY).run();
         }
         return new FastRun(scene, options).run();

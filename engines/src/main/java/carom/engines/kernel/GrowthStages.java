@@ -15,6 +15,16 @@ import java.util.Locale;
  * at the stage's start ({@link DiscTable#anchorGrowth}).
  */
 public final class GrowthStages {
+    /**
+     * Growth runs cannot save their state yet (their table is rebuilt in stages, and a stage's state is
+     * not in a checkpoint): bad input when {@code options} ask for checkpoints.
+     */
+    public static void refuseCheckpoints(carom.core.engine.RunOptions options) {
+        if (options.checkpoints() != null) {
+            throw new BadInputException("--checkpoint: runs with growing discs cannot be checkpointed yet");
+        }
+    }
+
     /** How much bigger than the largest disc now a stage's cells are planned for. */
     public static final double MARGIN = 1.05;
 
