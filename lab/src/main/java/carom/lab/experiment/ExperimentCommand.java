@@ -46,15 +46,22 @@ public final class ExperimentCommand implements Runnable {
         OutputFolder.check(out, "--out");
         Machine machine = Machine.current();
         double loadBefore = Machine.loadAverage();
-        if (common.requireQuiet && loadBefore >= Machine.QUIET_LOAD) {
-            throw new BadInputException(String.format(java.util.Locale.ROOT, "--require-quiet: the load average is %.2f on %d cores "
-                    + "(%.1f or more means another process is running); nothing was run", loadBefore, machine.cores(), Machine.QUIET_LOAD));
+        if (common.requireQuiet) {
+            refuseBusy(machine, loadBefore);
         }
         ExperimentRunner.Outcome outcome = new ExperimentRunner(heap, err, quick).run(plans);
         double loadAfter = Machine.loadAverage();
         Map<String, byte[]> files = report.files(machine, loadBefore, loadAfter, outcome.records());
         OutputFolder.write(out, files);
         return conclude(spec, out, files, outcome);
+    }
+
+    /** {@code --require-quiet}: bad input when the load average before the runs says another process is running. */
+    static void refuseBusy(Machine machine, double loadBefore) {
+        if (loadBefore >= Machine.QUIET_LOAD) {
+            throw new BadInputException(String.format(java.util.Locale.ROOT, "--require-quiet: the load average is %.2f on %d cores "
+                    + "(%.1f or more means another process is running); nothing was run", loadBefore, machine.cores(), Machine.QUIET_LOAD));
+        }
     }
 
     /**
