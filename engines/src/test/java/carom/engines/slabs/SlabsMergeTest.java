@@ -95,7 +95,7 @@ class SlabsMergeTest {
 
     @Test
     void windowsThatPayKeepTheSlabsAndResetTheBudget() {
-        MergePolicy p = new MergePolicy(100, true, 1000, 1000);
+        MergePolicy p = new MergePolicy(100, true, 1000, 1000, 1000);
         for (int w = 1; w < MergePolicy.BLOCK_WINDOWS; w++) {
             assertThat(p.mergeAfter(0, 0)).as("judged only after a whole block").isFalse();
         }
@@ -119,16 +119,16 @@ class SlabsMergeTest {
 
     @Test
     void aMergedPhaseTriesTheSlabsOnlyIfItsCrossSlabEventsLeaveRoomForWindowsThatPay() {
-        MergePolicy p = new MergePolicy(100, true, 1000, 1000);
+        MergePolicy p = new MergePolicy(100, true, 1000, 1000, 1000);
         assertThat(p.worthTrying(1000, 10)).isTrue();
         assertThat(p.worthTrying(1000, 11)).as("fewer than 100 events between cross-slab events").isFalse();
         assertThat(p.worthTrying(5, 0)).isTrue();
-        assertThat(new MergePolicy(100, false, 1000, 1000).worthTrying(1000, 1000)).as("without the estimate").isTrue();
+        assertThat(new MergePolicy(100, false, 1000, 1000, 1000).worthTrying(1000, 1000)).as("without the estimate").isTrue();
     }
 
     @Test
     void windowEventsZeroNeverMerges() {
-        MergePolicy p = new MergePolicy(0, true, 1000, 1000);
+        MergePolicy p = new MergePolicy(0, true, 1000, 1000, 1000);
         for (int w = 0; w < 10 * MergePolicy.BLOCK_WINDOWS; w++) {
             assertThat(p.mergeAfter(0, 1000)).isFalse();
         }
