@@ -1,22 +1,19 @@
 package carom.app;
 
+import static carom.core.scene.FuzzInputs.answerWithinDeadline;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import carom.core.BadInputException;
 import carom.core.engine.WorkEstimate;
+import carom.core.scene.FuzzInputs;
 import carom.core.scene.Scene;
 import carom.core.scene.SceneReader;
-import com.code_intelligence.jazzer.junit.DictionaryEntries;
+import com.code_intelligence.jazzer.junit.DictionaryFile;
 import com.code_intelligence.jazzer.junit.FuzzTest;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Comparator;
-import java.util.concurrent.Callable;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.FutureTask;
-import java.util.concurrent.TimeUnit;
-import java.util.concurrent.TimeoutException;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
@@ -70,19 +67,13 @@ class SimulateFuzzTest {
     }
 
     // The scene format's words, so that mutation builds keys and values the reader knows.
-    @DictionaryEntries({"\"name\"", "\"box\"", "\"width\"", "\"height\"", "\"boundary\"", "\"walls\"",
-            "\"periodic\"", "\"species\"", "\"radius\"", "\"mass\"", "\"fixed\"", "\"particles\"", "\"x\"",
-            "\"y\"", "\"vx\"", "\"vy\"", "\"generate\"", "\"fractions\"", "\"count\"", "\"layout\"",
-            "\"lattice\"", "\"triangular\"", "\"random\"", "\"jitter\"", "\"velocity\"", "\"distribution\"",
-            "\"uniform\"", "\"maxwell\"", "\"scale\"", "\"temperature\"", "\"seed\"", "\"effects\"",
-            "\"gravity\"", "\"restitution\"", "\"wallRestitution\"", "\"tc\"", "\"until\"", "true", "false",
-            "null", "1e308", "-0", "4.9e-324", "9223372036854775808", "\\u0000", "\\ud800"})
+    @DictionaryFile(resourcePath = FuzzInputs.DICTIONARY)
     @FuzzTest(maxDuration = "20s")
     void simulateEndsWithAResultOrOneErrorLine(byte[] bytes) throws Throwable {
         Files.write(scene, bytes);
         boolean readable;
         try {
-            Scene s = answerWithinDeadline(() -> SceneReader.read(scene));
+            Scene s = answerWithinDeadline(HANG_SECONDS, () -> SceneReader.read(scene));
             if (s.size() > MAX_DISCS || WorkEstimate.collisions(s, Double.parseDouble(UNTIL)) > MAX_COLLISIONS) {
                 return;
             }
@@ -93,7 +84,7 @@ class SimulateFuzzTest {
         Files.deleteIfExists(finalState);
         Files.deleteIfExists(summary);
 
-        Cli r = answerWithinDeadline(() -> Cli.run("simulate", scene.toString(), "--until", UNTIL, "--threads", "1",
+        Cli r = answerWithinDeadline(HANG_SECONDS, () -> Cli.run("simulate", scene.toString(), "--until", UNTIL, "--threads", "1",
                 "--out", finalState.toString(), "--summary", summary.toString()));
 
         String what = "exit " + r.status() + ", stderr: " + r.err().substring(0, Math.min(r.err().length(), 2_000));
@@ -114,21 +105,4 @@ class SimulateFuzzTest {
         }
     }
 
-    /**
-     * Runs {@code work} on a thread of its own and returns its answer, rethrowing what it threw; fails
-     * if there is no answer within {@link #HANG_SECONDS}. Per input rather than JUnit's @Timeout, which
-     * in fuzzing mode would bound the whole fuzzing session.
-     */
-    private static <T> T answerWithinDeadline(Callable<T> work) throws Throwable {
-        FutureTask<T> task = new FutureTask<>(work);
-        Thread.ofPlatform().daemon().name("fuzz-input").start(task);
-        try {
-            return task.get(HANG_SECONDS, TimeUnit.SECONDS);
-        } catch (TimeoutException e) {
-            task.cancel(true);
-            throw new AssertionError("no answer within " + HANG_SECONDS + " s: the input hangs");
-        } catch (ExecutionException e) {
-            throw e.getCause();
-        }
-    }
 }

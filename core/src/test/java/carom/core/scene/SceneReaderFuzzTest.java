@@ -1,10 +1,11 @@
 package carom.core.scene;
 
+import static carom.core.scene.FuzzInputs.answerWithinDeadline;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import carom.core.BadInputException;
 import carom.core.Quoted;
-import com.code_intelligence.jazzer.junit.DictionaryEntries;
+import com.code_intelligence.jazzer.junit.DictionaryFile;
 import com.code_intelligence.jazzer.junit.FuzzTest;
 import java.io.IOException;
 import java.nio.ByteBuffer;
@@ -13,11 +14,6 @@ import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.concurrent.Callable;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.FutureTask;
-import java.util.concurrent.TimeUnit;
-import java.util.concurrent.TimeoutException;
 import java.util.function.Supplier;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
@@ -64,21 +60,15 @@ class SceneReaderFuzzTest {
     }
 
     // The scene format's words, so that mutation builds keys and values the reader knows.
-    @DictionaryEntries({"\"name\"", "\"box\"", "\"width\"", "\"height\"", "\"boundary\"", "\"walls\"",
-            "\"periodic\"", "\"species\"", "\"radius\"", "\"mass\"", "\"fixed\"", "\"particles\"", "\"x\"",
-            "\"y\"", "\"vx\"", "\"vy\"", "\"generate\"", "\"fractions\"", "\"count\"", "\"layout\"",
-            "\"lattice\"", "\"triangular\"", "\"random\"", "\"jitter\"", "\"velocity\"", "\"distribution\"",
-            "\"uniform\"", "\"maxwell\"", "\"scale\"", "\"temperature\"", "\"seed\"", "\"effects\"",
-            "\"gravity\"", "\"restitution\"", "\"wallRestitution\"", "\"tc\"", "\"until\"", "true", "false",
-            "null", "1e308", "-0", "4.9e-324", "9223372036854775808", "\\u0000", "\\ud800"})
+    @DictionaryFile(resourcePath = FuzzInputs.DICTIONARY)
     @FuzzTest(maxDuration = "20s")
     void readsASceneOrRejectsItAsBadInput(byte[] bytes) throws Throwable {
         Files.write(file, bytes);
-        String fromFile = answerWithinDeadline(() -> verdict(() -> SceneReader.read(file)));
+        String fromFile = answerWithinDeadline(HANG_SECONDS, () -> verdict(() -> SceneReader.read(file)));
         String text = strictUtf8WithoutByteOrderMark(bytes);
         if (text != null) {
             // The same text through the other door: the same scene, or the same complaint.
-            assertThat(answerWithinDeadline(() -> verdict(() -> SceneReader.parse(text)))).isEqualTo(fromFile);
+            assertThat(answerWithinDeadline(HANG_SECONDS, () -> verdict(() -> SceneReader.parse(text)))).isEqualTo(fromFile);
         }
     }
 
@@ -112,21 +102,4 @@ class SceneReaderFuzzTest {
         }
     }
 
-    /**
-     * Runs {@code work} on a thread of its own and returns its answer, rethrowing what it threw; fails
-     * if there is no answer within {@link #HANG_SECONDS}. Per input rather than JUnit's @Timeout, which
-     * in fuzzing mode would bound the whole fuzzing session.
-     */
-    private static <T> T answerWithinDeadline(Callable<T> work) throws Throwable {
-        FutureTask<T> task = new FutureTask<>(work);
-        Thread.ofPlatform().daemon().name("fuzz-input").start(task);
-        try {
-            return task.get(HANG_SECONDS, TimeUnit.SECONDS);
-        } catch (TimeoutException e) {
-            task.cancel(true);
-            throw new AssertionError("no answer within " + HANG_SECONDS + " s: the input hangs");
-        } catch (ExecutionException e) {
-            throw e.getCause();
-        }
-    }
 }
