@@ -1,0 +1,26 @@
+"""Steady-state CPU rate of each code per density from cpu-pairs.sh outputs: within each round, the
+collisions and CPU seconds between the short run (T1) and the long one (T2), so start-up, JIT and set-up
+cancel. usage: summarize.py LABEL=FILE ..."""
+import collections, statistics as st, sys
+print("| packing fraction | rounds | Smallenburg M coll per CPU s | `fast` M coll per CPU s | `fast` / Smallenburg (median of rounds) | range | load |")
+print("|---|---|---|---|---|---|---|")
+for arg in sys.argv[1:]:
+    label, path = arg.split("=")
+    runs = collections.defaultdict(dict)
+    loads = []
+    for line in open(path):
+        r, code, t, cpu, coll, load = line.split()
+        runs[(r, code)][float(t)] = (float(cpu), int(coll))
+        loads.append(float(load))
+    rates = collections.defaultdict(list)
+    rounds = sorted({r for r, _ in runs})
+    for r in rounds:
+        for code in ("smallenburg", "fast"):
+            d = runs[(r, code)]
+            if len(d) < 2:
+                continue
+            (t1, (c1, n1)), (t2, (c2, n2)) = sorted(d.items())
+            rates[code].append((n2 - n1) / (c2 - c1) / 1e6)
+    ratios = sorted(f / s for f, s in zip(rates["fast"], rates["smallenburg"]))
+    print(f"| {label} | {len(ratios)} | {st.median(rates['smallenburg']):.2f} | {st.median(rates['fast']):.2f} | "
+          f"{st.median(ratios):.2f} | {ratios[0]:.2f}-{ratios[-1]:.2f} | {min(loads):.1f}-{max(loads):.1f} |")
