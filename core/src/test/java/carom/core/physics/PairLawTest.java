@@ -180,6 +180,35 @@ class PairLawTest {
     }
 
     @ParameterizedTest(name = "seed {0}")
+    @ValueSource(longs = {31, 32, 33})
+    void aContactBeforeTheLimitIsTheContactAndOneAfterItIsNone(long seed) {
+        // timeToContactBefore drops pairs without a square root; it must never drop one that comes before
+        // the limit, nor answer anything but timeToContact's bits for those it keeps.
+        SplittableRandom random = new SplittableRandom(seed);
+        int kept = 0;
+        int dropped = 0;
+        for (int k = 0; k < 20_000; k++) {
+            double sigma = 0.5 + random.nextDouble();
+            double dx = 6 * random.nextDouble() - 3;
+            double dy = 6 * random.nextDouble() - 3;
+            double dvx = 4 * random.nextDouble() - 2;
+            double dvy = 4 * random.nextDouble() - 2;
+            double t = PairLaw.timeToContact(dx, dy, dvx, dvy, sigma);
+            double limit = k % 7 == 0 ? Double.POSITIVE_INFINITY : (k % 5 == 0 ? t : 3 * random.nextDouble());
+            double before = PairLaw.timeToContactBefore(dx, dy, dvx, dvy, sigma, limit);
+            if (t < limit) {
+                assertThat(before).as("kept").isEqualTo(t);
+                kept++;
+            } else {
+                assertThat(before).as("dropped or the same").isIn(Double.POSITIVE_INFINITY, t);
+                dropped += t < Double.POSITIVE_INFINITY ? 1 : 0;
+            }
+        }
+        assertThat(kept).isGreaterThan(1000);
+        assertThat(dropped).isGreaterThan(1000);
+    }
+
+    @ParameterizedTest(name = "seed {0}")
     @ValueSource(longs = {21, 22, 23})
     void collisionConservesEnergyAndMomentumAndLeavesThePairReceding(long seed) {
         SplittableRandom random = new SplittableRandom(seed);

@@ -458,8 +458,8 @@ public final class CellPredictor {
                         double dt = now - r[jt + T];
                         double vxj = r[jt + VX];
                         double vyj = r[jt + VY];
-                        double t = PairLaw.timeToContact(r[jt + X] + vxj * dt - ox, r[jt + Y] + vyj * dt - oy,
-                                vxj - vxi, vyj - vyi, shared ? sigmaShared : ri + r[jt + R]);
+                        double t = PairLaw.timeToContactBefore(r[jt + X] + vxj * dt - ox, r[jt + Y] + vyj * dt - oy,
+                                vxj - vxi, vyj - vyi, shared ? sigmaShared : ri + r[jt + R], best);
                         if (t < best) {
                             best = t;
                             bestP = j;
