@@ -48,8 +48,6 @@ class ClusterCommandsTest {
                 "error: --nodes: must be from 1 to 64, got 65");
         assertRefused(Cli.run("simulate", scene.toString(), "--engine", "cluster", "--seed-nodes", "here"),
                 "error: --seed-nodes: expected HOST:PORT, got 'here'");
-        assertRefused(Cli.run("simulate", scene.toString(), "--engine", "cluster", "--every", "0.1",
-                "--trajectory", dir.resolve("f.xyz").toString()), "error: --every: engine cluster cannot stop at given times");
         assertRefused(Cli.run("node", "--join", "127.0.0.1"), "error: --join: expected HOST:PORT, got '127.0.0.1'");
         assertThat(out).doesNotExist();
     }

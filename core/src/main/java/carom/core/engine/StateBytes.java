@@ -88,6 +88,13 @@ public final class StateBytes {
             return this;
         }
 
+        /** The length, then the bytes (another state nested in this one, as the cluster engine's nodes save theirs). */
+        public Out putBytes(byte[] values) {
+            putInt(values.length);
+            room(values.length).put(values);
+            return this;
+        }
+
         public byte[] bytes() {
             return Arrays.copyOf(buffer.array(), buffer.position());
         }
@@ -196,6 +203,13 @@ public final class StateBytes {
             long[] a = new long[count];
             buffer.asLongBuffer().get(a);
             buffer.position(buffer.position() + 8 * count);
+            return a;
+        }
+
+        /** Bytes written by {@link Out#putBytes}. */
+        public byte[] getBytes() {
+            byte[] a = new byte[length(1)];
+            buffer.get(a);
             return a;
         }
 

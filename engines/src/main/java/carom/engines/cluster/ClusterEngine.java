@@ -20,8 +20,16 @@ import java.util.List;
  *
  * {@link #joining} makes runs over workers already running ({@code ./carom node}) instead.
  *
- * <p>Not yet: samples ({@code --every}, trajectories, observables, checkpoints), two-dimensional
- * blocks, recovery from a worker lost mid-run (the run stops with an error).
+ * <p>Samples ({@code --every}, trajectories, observables): gathered from the nodes between windows,
+ * the samples of {@code slabs} to rounding. Checkpoint files ({@code --checkpoint}, a signal, then
+ * {@link #resume}): every node's whole state at the start of a window ({@link ClusterCheckpoint}), so
+ * that a resumed run ends in the bits of one that never stopped; a resumed run starts its own workers
+ * on 127.0.0.1, as many as the saved run had. Faults: a worker JVM this run started that dies mid-run
+ * is recovered from, on the nodes that remain, from the coordinator's last in-memory checkpoint (exact
+ * to rounding; runs over {@code --seed-nodes} stop with an error instead); the coordinator's own death
+ * ends its workers ({@link ClusterWorker}), and the user resumes from the last checkpoint file.
+ *
+ * <p>Not yet: two-dimensional blocks; inelastic collisions under gravity (sleeping discs).
  */
 public final class ClusterEngine implements Engine {
     /** Seed nodes of running workers ("host:port"); empty: each run starts its own workers. */
@@ -93,17 +101,37 @@ public final class ClusterEngine implements Engine {
     }
 
     @Override
-    public RunResult run(Scene scene, RunOptions options) {
-        checkSupports(scene);
+    public boolean samples() {
+        return true;
+    }
+
+    @Override
+    public boolean checkpoints() {
+        return true;
+    }
+
+    @Override
+    public void checkSupports(Scene scene) {
+        Engine.super.checkSupports(scene);
         Effects e = scene.effects();
         if (e.hasGravity() && (e.dissipativePairs() || e.dissipativeWalls())) {
             // Discs that come to rest fall asleep (resting contact); sleeping discs are not carried across nodes yet.
             throw new BadInputException("engine cluster does not support inelastic collisions under gravity yet (discs "
                     + "that come to rest fall asleep, and sleeping discs are not carried across nodes); use fast, serial or slabs");
         }
-        if (options.sampled()) {
-            throw new BadInputException("engine cluster does not support samples yet (--every, --trajectory, --observe, --checkpoint)");
-        }
+    }
+
+    @Override
+    public RunResult run(Scene scene, RunOptions options) {
+        checkSupports(scene);
         return new ClusterRun(scene, options, seeds).run();
+    }
+
+    @Override
+    public RunResult resume(Scene scene, RunOptions options, byte[] saved) {
+        checkSupports(scene);
+        ClusterRun run = new ClusterRun(scene, options, seeds);
+        RunResult result = run.run(saved);
+        return result.resumedAfter(run.collisionsBefore);
     }
 }

@@ -27,8 +27,8 @@ import java.util.concurrent.TimeUnit;
  * worker JVMs it starts on 127.0.0.1 (or the running workers it joins), the wait for every expected
  * node, and the end: the system terminated and every worker it started destroyed with its process
  * tree, whether the run ended, failed or was interrupted (a JVM shutdown hook covers the last case;
- * a worker also exits when its standard input, a pipe from this JVM, closes, so not even a killed
- * coordinator leaves one behind).
+ * a worker also exits by itself when its standard input, a pipe from this JVM, closes or this JVM is
+ * gone, so not even a killed coordinator leaves one behind: {@link ClusterWorker}).
  */
 final class ClusterLife implements AutoCloseable {
     private final ActorSystem<NodeCommand> system;
@@ -116,8 +116,11 @@ final class ClusterLife implements AutoCloseable {
                 }
                 cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), ClusterWorker.class.getName(),
                         "--join", "127.0.0.1:" + port, "--host", "127.0.0.1", "--port", Integer.toString(workerPort),
-                        ClusterWorker.EXIT_WITH_STDIN));
-                Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log.toFile()).start();
+                        ClusterWorker.EXIT_WITH_STDIN, ClusterWorker.LOG, log.toString()));
+                // Its output goes to its log; its standard error is this JVM's, for the one line it
+                // prints should this JVM die first (ClusterWorker).
+                Process p = new ProcessBuilder(cmd).redirectOutput(log.toFile())
+                        .redirectError(ProcessBuilder.Redirect.INHERIT).start();
                 workers.add(p);
                 logs.add(log);
                 life.workerPorts.add(workerPort);

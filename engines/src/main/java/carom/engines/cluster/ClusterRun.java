@@ -9,6 +9,7 @@ import carom.core.engine.Counter;
 import carom.core.engine.EngineFailure;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
+import carom.core.engine.SampleSchedule;
 import carom.core.engine.Tunable;
 import carom.core.observe.Observables;
 import carom.core.observe.Pressure;
@@ -25,6 +26,8 @@ import carom.engines.cluster.Protocol.NodeCommand;
 import carom.engines.cluster.Protocol.Replan;
 import carom.engines.cluster.Protocol.Replanned;
 import carom.engines.cluster.Protocol.Reply;
+import carom.engines.cluster.Protocol.SampleAt;
+import carom.engines.cluster.Protocol.Sampled;
 import carom.engines.cluster.Protocol.SceneChunk;
 import carom.engines.cluster.Protocol.SceneStart;
 import carom.engines.cluster.Protocol.SpeciesSpec;
@@ -60,9 +63,14 @@ import java.util.function.IntFunction;
  * the mirror and {@link Install}ed at both owners, or a migration ({@link Emigrate}, then
  * {@link Install} at the new owner). Every message is counted with its serialized size.
  *
+ * <p>Samples ({@code --every}): windows end at the next sample's time, as in {@code SlabsRun}; between
+ * them the coordinator gathers every slab's discs at that time ({@link SampleAt}).
+ *
  * <p>Faults: every {@link #CHECKPOINT_WINDOWS} windows the coordinator takes a {@link Checkpoint}
  * (the first is the scene); when a worker JVM it started dies, the run carries on from the last one on
- * the nodes that remain ({@link #recover}).
+ * the nodes that remain ({@link #recover}), exact to rounding. A checkpoint file ({@code --checkpoint},
+ * {@link ClusterCheckpoint}) is another thing: every node's whole state at the start of a window, so
+ * that {@code resume} continues with the very same bits.
  */
 final class ClusterRun {
     static final Tunable.Whole NODES = new Tunable.Whole("nodes", 2, 1, 64, "JVMs",
@@ -80,32 +88,39 @@ final class ClusterRun {
 
     private final Scene scene;
     private final RunOptions options;
-    private final double until;
+    final double until;
     private final Duration replyTimeout;
     private ClusterLife life;
     private ActorSystem<NodeCommand> system;
     private Serialization serialization;
-    private List<ActorRef<NodeCommand>> nodes;
-    private SlabMirror mirror;
-    private int domains;
-    private final Map<String, Long> messages = new TreeMap<>();
-    private long messageCount;
-    private long bytes;
-    private long windowBytes;
-    private long crossEventBytes;
-    private long windows;
-    private long commits;
-    private long rollbacks;
-    private long crossDomainEvents;
-    private long migrations;
-    private long resyncs;
-    private double resyncAt;
+    List<ActorRef<NodeCommand>> nodes;
+    SlabMirror mirror;
+    int domains;
+    // The counters, which a checkpoint file keeps (ClusterCheckpoint).
+    final Map<String, Long> messages = new TreeMap<>();
+    long messageCount;
+    long bytes;
+    long windowBytes;
+    long crossEventBytes;
+    long windows;
+    long commits;
+    long rollbacks;
+    long crossDomainEvents;
+    long migrations;
+    long resyncs;
+    double resyncAt;
     private final long checkpointWindows;
     /** The last checkpoint; the slabs' counters and virial lost with the slabs a recovery replaced. */
-    private Checkpoint checkpoint;
-    private long[] counterBase = new long[6];
-    private double[] virialBase;
-    private long recoveries;
+    Checkpoint checkpoint;
+    long[] counterBase = new long[6];
+    double[] virialBase;
+    long recoveries;
+    /** Samples asked for ({@code --every}), and the next one's local time (+Infinity if none). */
+    final SampleSchedule samples;
+    private double sampleLocal;
+    /** The run's checkpoint files, or null without; collisions before the one a resumed run started from. */
+    private final ClusterCheckpoint checkpoints;
+    long collisionsBefore;
 
     /** A worker JVM died during the run: recover from the last checkpoint. */
     private static final class WorkerLost extends RuntimeException {
@@ -125,14 +140,28 @@ final class ClusterRun {
         this.replyTimeout = Duration.ofMillis((long) (REPLY_SECONDS.of(options) * 1000));
         this.checkpointWindows = CHECKPOINT_WINDOWS.of(options);
         this.virialBase = VirialAccumulator.forRun(until).blockSums();
+        this.samples = SampleSchedule.of(scene, options);
+        this.checkpoints = options.checkpoints() == null ? null : new ClusterCheckpoint(this, options.checkpoints());
     }
 
     RunResult run() {
-        int count = (int) NODES.of(options);
+        return run(null);
+    }
+
+    /** The run from the start, or continued from {@code saved} ({@link ClusterCheckpoint#save}) if not null. */
+    RunResult run(byte[] saved) {
+        // A resumed run has as many JVMs as the saved one had at its checkpoint.
+        int count = saved == null ? (int) NODES.of(options) : ClusterCheckpoint.nodesOf(saved);
         Duration join = Duration.ofMillis((long) (JOIN_SECONDS.of(options) * 1000));
         Discs initial = scene.newDiscs();
         double energyStart = Observables.kineticEnergy(initial);
         double[] momentumStart = Observables.momentum(initial);
+        mirror = new SlabMirror(scene, KernelTunables.CELL_FACTOR.of(options), count, until);
+        domains = mirror.domains();
+        // The first checkpoint is the scene itself, which every node holds: no message.
+        checkpoint = Checkpoint.atStart(counterBase.length, virialBase.length);
+        // A saved state is read whole, and refused if it does not fit, before any JVM starts.
+        ClusterCheckpoint.Resumed resumed = saved == null ? null : ClusterCheckpoint.read(this, saved);
         try (ClusterLife life = seeds.isEmpty() ? ClusterLife.local(count, join)
                 : ClusterLife.joining(seeds, ClusterLife.ownHost(seeds), 0, count, join)) {
             this.life = life;
@@ -140,26 +169,40 @@ final class ClusterRun {
             serialization = SerializationExtension.get(system.classicSystem());
             nodes = life.nodes();
             long started = System.nanoTime();
-            mirror = new SlabMirror(scene, KernelTunables.CELL_FACTOR.of(options), count, until);
-            domains = mirror.domains();
             for (int d = 0; d < nodes.size(); d++) {
                 sendScene(d, initial);
             }
-            // The first checkpoint is the scene itself, which every node holds: no message.
-            checkpoint = Checkpoint.atStart(counterBase.length, virialBase.length);
             boolean lost = false;
             boolean begun = false;
+            double now = 0;
             Reply[] finals;
             while (true) {
                 try {
                     if (lost) {
                         recover();
                         lost = false;
+                        now = 0;
                     } else if (!begun) {
                         begun = true;
-                        startSlabs();
+                        if (resumed == null) {
+                            startSlabs();
+                        } else {
+                            resumed.restoreNodes(this);
+                            now = resumed.now();
+                            if (checkpoints != null) {
+                                checkpoints.resumedAt(mirror.epoch() + now);
+                            }
+                        }
                     }
-                    loop();
+                    // Samples already handed out (before a recovery's checkpoint, or a resumed one's) are not again.
+                    sampleLocal = samples.next() - mirror.epoch();
+                    loop(now);
+                    while (samples.next() <= until) {
+                        sample();
+                    }
+                    if (checkpoints != null) {
+                        checkpoints.atEnd();
+                    }
                     finals = askAll("finish", d -> Finish::new);
                     break;
                 } catch (WorkerLost e) {
@@ -174,15 +217,7 @@ final class ClusterRun {
             VirialAccumulator virial = mirror.virial;
             for (Reply r : finals) {
                 Finished f = (Finished) r;
-                StateBatch fin = f.finals();
-                for (int q = 0; q < fin.size(); q++) {
-                    int o = fin.ids()[q];
-                    out.x[o] = fin.doubles()[4 * q];
-                    out.y[o] = fin.doubles()[4 * q + 1];
-                    out.vx[o] = fin.doubles()[4 * q + 2];
-                    out.vy[o] = fin.doubles()[4 * q + 3];
-                    out.t[o] = until;
-                }
+                copyStates(f.finals(), out, until);
                 for (int k = 0; k < sums.length; k++) {
                     sums[k] += f.counters()[k];
                 }
@@ -229,6 +264,18 @@ final class ClusterRun {
         return c;
     }
 
+    /** States of a batch of scene ids with x, y, vx, vy each ({@link Finished}, {@link Sampled}) into {@code out} at time t. */
+    private static void copyStates(StateBatch b, Discs out, double t) {
+        for (int q = 0; q < b.size(); q++) {
+            int o = b.ids()[q];
+            out.x[o] = b.doubles()[4 * q];
+            out.y[o] = b.doubles()[4 * q + 1];
+            out.vx[o] = b.doubles()[4 * q + 2];
+            out.vy[o] = b.doubles()[4 * q + 3];
+            out.t[o] = t;
+        }
+    }
+
     /** First predictions on every slab, the edge records into the mirror, the cross events predicted. */
     private void startSlabs() {
         double span = 0;
@@ -246,8 +293,7 @@ final class ClusterRun {
      * in parts of at most {@link #CHUNK} states per message, and the counts so far.
      */
     private void takeCheckpoint() {
-        int n = scene.size();
-        int parts = Math.max(1, (n + CHUNK - 1) / CHUNK);
+        int parts = parts();
         List<StateBatch> states = new ArrayList<>();
         long[] slabCounters = counterBase.clone();
         double[] slabVirial = virialBase.clone();
@@ -318,9 +364,18 @@ final class ClusterRun {
         }
     }
 
-    private void loop() {
-        double now = 0;
+    /** Messages a pass over every disc takes, each of at most {@link #CHUNK} discs. */
+    private int parts() {
+        return Math.max(1, (scene.size() + CHUNK - 1) / CHUNK);
+    }
+
+    /** The windows from local {@code now} to the end, and the serial events between them. */
+    private void loop(double now) {
         while (true) {
+            if (now >= sampleLocal) {
+                sample();
+                continue;
+            }
             if (now >= resyncAt) {
                 resync(now);
                 now = 0;
@@ -328,8 +383,12 @@ final class ClusterRun {
             int top = mirror.validTop(now);
             double h = top >= 0 ? mirror.crossTime(top) : INF;
             double untilLocal = mirror.untilLocal();
-            double end = Math.min(Math.min(h, resyncAt), untilLocal);
+            // The earliest cross event bounds the window, and so do the next resync and sample.
+            double end = Math.min(Math.min(Math.min(h, resyncAt), sampleLocal), untilLocal);
             boolean last = end == untilLocal && h > untilLocal && resyncAt > untilLocal;
+            if (checkpoints != null) {
+                checkpoints.atPassStart(now, end == untilLocal);
+            }
             mirror.startWindow();
             windows++;
             long before = bytes;
@@ -415,11 +474,38 @@ final class ClusterRun {
         crossEventBytes += bytes - before;
     }
 
+    /**
+     * The sample due now, between windows: every slab's discs at its time, from the nodes' records
+     * (which stay as they are). Events at exactly a sample's time come after it.
+     */
+    private void sample() {
+        double local = samples.next() - mirror.epoch();
+        Discs state = samples.state();
+        double virialSum = mirror.virial.total();
+        for (double b : virialBase) {
+            virialSum += b;
+        }
+        int parts = parts();
+        for (int part = 0; part < parts; part++) {
+            int p = part;
+            for (Reply r : askAll("sample", d -> rt -> new SampleAt(local, p, parts, rt))) {
+                Sampled s = (Sampled) r;
+                copyStates(s.states(), state, local);
+                if (p == 0) {
+                    virialSum += s.virial();
+                }
+            }
+        }
+        samples.emit(virialSum);
+        sampleLocal = samples.next() - mirror.epoch();
+    }
+
     /** Re-anchors local time at {@code now} everywhere and rebuilds the calendars. */
     private void resync(double now) {
         if (now > 0) {
             resyncs++;
             mirror.rebase(now);
+            sampleLocal = samples.next() - mirror.epoch();
         }
         double span = 0;
         for (Reply r : askAll("replan", d -> rt -> new Replan(now, rt))) {
@@ -439,7 +525,7 @@ final class ClusterRun {
         bytes += serialization.serialize(m).get().length;
     }
 
-    private CompletableFuture<Reply> ask(int d, String type, Function<ActorRef<Reply>, NodeCommand> make) {
+    CompletableFuture<Reply> ask(int d, String type, Function<ActorRef<Reply>, NodeCommand> make) {
         return AskPattern.<NodeCommand, Reply>ask(nodes.get(d), rt -> {
             NodeCommand m = make.apply(rt);
             count(type, m);
@@ -448,7 +534,7 @@ final class ClusterRun {
     }
 
     /** Sends every slab's node its command and waits for all the answers (in slab order). */
-    private Reply[] askAll(String type, IntFunction<Function<ActorRef<Reply>, NodeCommand>> make) {
+    Reply[] askAll(String type, IntFunction<Function<ActorRef<Reply>, NodeCommand>> make) {
         List<CompletableFuture<Reply>> pending = new ArrayList<>();
         for (int d = 0; d < domains; d++) {
             pending.add(ask(d, type, make.apply(d)));
@@ -460,7 +546,7 @@ final class ClusterRun {
         return replies;
     }
 
-    private Reply await(CompletableFuture<Reply> f, int d, String type) {
+    Reply await(CompletableFuture<Reply> f, int d, String type) {
         Reply r = null;
         long deadline = System.nanoTime() + replyTimeout.toNanos() + 1_000_000_000L;
         while (r == null) {

@@ -19,6 +19,12 @@ import carom.engines.cluster.Protocol.Finished;
 import carom.engines.cluster.Protocol.Install;
 import carom.engines.cluster.Protocol.NodeCommand;
 import carom.engines.cluster.Protocol.Recover;
+import carom.engines.cluster.Protocol.Restored;
+import carom.engines.cluster.Protocol.RestoreState;
+import carom.engines.cluster.Protocol.SampleAt;
+import carom.engines.cluster.Protocol.Sampled;
+import carom.engines.cluster.Protocol.SaveState;
+import carom.engines.cluster.Protocol.SavedState;
 import carom.engines.cluster.Protocol.RecoverChunk;
 import carom.engines.cluster.Protocol.Snapshot;
 import carom.engines.cluster.Protocol.SnapshotPart;
@@ -48,6 +54,8 @@ import java.util.function.Supplier;
  */
 final class NodeActor extends AbstractBehavior<NodeCommand> {
     static final ServiceKey<NodeCommand> KEY = ServiceKey.create(NodeCommand.class, "carom-node");
+    /** Bytes of a node state per message, well under Artery's frame ({@link ClusterLife#config}). */
+    static final int STATE_PART = 1 << 21;
 
     private SceneStart header;
     /** The slab this node runs now (a recovery may give it another), of how many. */
@@ -58,6 +66,9 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
     private Scene scene;
     private int received;
     private SlabNode slab;
+    /** The state a checkpoint is taking from this node ({@link SaveState}), or one coming in ({@link RestoreState}). */
+    private byte[] saving;
+    private java.io.ByteArrayOutputStream restoring;
 
     static Behavior<NodeCommand> create() {
         return Behaviors.setup(ctx -> {
@@ -80,13 +91,15 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
                     slab.restoreAll(m.states());
                     return this;
                 })
-                .onMessage(Snapshot.class, m -> answer(m.replyTo(), () -> {
-                    int n = slab.discs();
-                    int from = (int) ((long) n * m.part() / m.parts());
-                    int to = (int) ((long) n * (m.part() + 1) / m.parts());
-                    return new SnapshotPart(domain(), slab.ownStates(from, to), slab.counters(), slab.virialSums());
-                }))
+                .onMessage(Snapshot.class, m -> answer(m.replyTo(), () -> new SnapshotPart(domain(),
+                        slab.ownStates(partStart(m.part(), m.parts()), partStart(m.part() + 1, m.parts())),
+                        slab.counters(), slab.virialSums())))
                 .onMessage(Start.class, m -> answer(m.replyTo(), () -> start()))
+                .onMessage(SampleAt.class, m -> answer(m.replyTo(), () -> new Sampled(domain(),
+                        slab.statesAt(m.local(), partStart(m.part(), m.parts()), partStart(m.part() + 1, m.parts())),
+                        slab.virialTotal())))
+                .onMessage(SaveState.class, m -> answer(m.replyTo(), () -> saveState(m.part())))
+                .onMessage(RestoreState.class, m -> answer(m.replyTo(), () -> restoreState(m)))
                 .onMessage(Window.class, m -> answer(m.replyTo(), () -> {
                     slab.runWindow(m.end(), m.inclusive());
                     return new WindowDone(domain(), slab.stopTime(), slab.stopDisc(), slab.changedRecords(),
@@ -104,6 +117,11 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
                     return f;
                 }))
                 .build();
+    }
+
+    /** The first internal disc id of part {@code part} of {@code parts} of the scene (a message's share of a pass over every disc). */
+    private int partStart(int part, int parts) {
+        return (int) ((long) slab.discs() * part / parts);
     }
 
     private int domain() {
@@ -160,6 +178,13 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
     }
 
     private Reply start() {
+        buildSlab();
+        double span = slab.start();
+        return new Started(domain(), span, slab.edgeStates());
+    }
+
+    /** This run's slab from the scene the coordinator sent, unless it is built already. */
+    private void buildSlab() {
         if (slab == null) {
             if (builder == null || received != header.discs()) {
                 throw new IllegalStateException("scene incomplete: " + received + " of "
@@ -169,8 +194,36 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
             builder = null;
             slab = new SlabNode(scene, header.cellFactor(), domains, domain, header.until());
         }
-        double span = slab.start();
-        return new Started(domain(), span, slab.edgeStates());
+    }
+
+    /** Part {@code part} of this slab's state; part 0 takes it, the last lets it go. */
+    private Reply saveState(int part) {
+        if (part == 0) {
+            saving = slab.save();
+        }
+        int parts = Math.max(1, (saving.length + STATE_PART - 1) / STATE_PART);
+        byte[] bytes = java.util.Arrays.copyOfRange(saving, Math.min(saving.length, part * STATE_PART),
+                Math.min(saving.length, (part + 1) * STATE_PART));
+        long[] counters = part == 0 ? slab.counters() : new long[0];
+        if (part == parts - 1) {
+            saving = null;
+        }
+        return new SavedState(domain(), parts, bytes, counters);
+    }
+
+    /** A part of a saved state; with the last, the slab (built from the scene) takes the whole state up. */
+    private Reply restoreState(RestoreState m) {
+        if (m.part() == 0) {
+            restoring = new java.io.ByteArrayOutputStream();
+        }
+        restoring.writeBytes(m.bytes());
+        if (m.part() == m.parts() - 1) {
+            byte[] whole = restoring.toByteArray();
+            restoring = null;
+            buildSlab();
+            slab.restore(whole);
+        }
+        return new Restored(domain());
     }
 
     private Reply install(Install m) {

@@ -79,6 +79,27 @@ public final class Protocol {
     public record Replan(double shift, ActorRef<Reply> replyTo) implements NodeCommand {
     }
 
+    /**
+     * A sample at local {@code local} (between windows): the slab's discs with internal ids in part
+     * {@code part} of {@code parts}, as {@link Sampled}.
+     */
+    public record SampleAt(double local, int part, int parts, ActorRef<Reply> replyTo) implements NodeCommand {
+    }
+
+    /**
+     * Part {@code part} of the node's whole state for a checkpoint file (between windows; part 0 takes
+     * the state, the node keeps it until the last part is sent).
+     */
+    public record SaveState(int part, ActorRef<Reply> replyTo) implements NodeCommand {
+    }
+
+    /**
+     * Part {@code part} of {@code parts} of a state {@link SaveState} gave, for a resumed run: the node,
+     * sent its scene, takes the state up with the last part (instead of {@link Start}).
+     */
+    public record RestoreState(int part, int parts, byte[] bytes, ActorRef<Reply> replyTo) implements NodeCommand {
+    }
+
     /** The run is over: send the slab's final states and counters. */
     public record Finish(ActorRef<Reply> replyTo) implements NodeCommand {
     }
@@ -108,6 +129,18 @@ public final class Protocol {
 
     /** Final states (scene ids; x, y, vx, vy), counters ({@code SlabNode#counters}) and pair virial sums. */
     public record Finished(int domain, StateBatch finals, long[] counters, double[] virial) implements Reply {
+    }
+
+    /** A sample's part: scene ids, then x, y, vx, vy per disc; the slab's pair virial sum so far. */
+    public record Sampled(int domain, StateBatch states, double virial) implements Reply {
+    }
+
+    /** A node state's part {@code bytes} of {@code parts}, and (part 0) the slab's counters ({@code SlabNode#counters}). */
+    public record SavedState(int domain, int parts, byte[] bytes, long[] counters) implements Reply {
+    }
+
+    /** A part of a state was taken (with the last, the state was taken up). */
+    public record Restored(int domain) implements Reply {
     }
 
     /** A command the node could not carry out, and why. */

@@ -10,6 +10,7 @@ import carom.core.state.Discs;
 import carom.engines.kernel.DiscMotion;
 import carom.engines.kernel.DiscTable;
 import carom.engines.kernel.SavedStates;
+import carom.engines.kernel.TableState;
 
 /**
  * The coordinator's side of the {@code cluster} engine's slabs: what {@link SlabsRun} does between
@@ -327,6 +328,38 @@ public final class SlabMirror {
         }
         clock.shift(now);
         motion.rebase(now, null, table.n);
+    }
+
+    /**
+     * The mirror between windows, for a checkpoint file: clocks, records, marks, cross events, the
+     * cross-domain collisions and their virial. {@link #restore} on a mirror built from the same scene
+     * and slab count continues with the very same bits.
+     */
+    public void save(carom.core.engine.StateBytes.Out out) {
+        out.putInt(columns.domains).putDouble(clock.until).putDouble(clock.epoch).putLong(crossPairCollisions)
+                .putDoubles(virial.blockSums()).putDouble(virial.total());
+        TableState.save(table, out);
+        marks.save(out);
+        if (cross != null) {
+            cross.save(out);
+        }
+    }
+
+    /** Takes up what {@link #save} wrote; a state that does not fit is an {@link IllegalArgumentException}. */
+    public void restore(carom.core.engine.StateBytes.In in) {
+        int domains = in.getInt();
+        if (domains != columns.domains) {
+            throw new IllegalArgumentException("engine state: " + domains + " slabs, the run has " + columns.domains);
+        }
+        double savedUntil = in.getDouble();
+        startAt(in.getDouble());
+        crossPairCollisions = in.getLong();
+        virial.restore(in.getDoubles(), savedUntil, in.getDouble());
+        TableState.restore(table, in);
+        marks.restore(in);
+        if (cross != null) {
+            cross.restore(in);
+        }
     }
 
     /** The scene id of internal disc i, for messages. */

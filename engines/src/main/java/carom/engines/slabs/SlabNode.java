@@ -1,11 +1,13 @@
 package carom.engines.slabs;
 
 import carom.core.engine.ProgressListener;
+import carom.core.engine.StateBytes;
 import carom.core.observe.VirialAccumulator;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
 import carom.engines.kernel.DiscTable;
 import carom.engines.kernel.SavedStates;
+import carom.engines.kernel.TableState;
 
 /**
  * One slab of the {@code cluster} engine, in a JVM of its own: a {@link Domain} over a table of its
@@ -18,6 +20,8 @@ import carom.engines.kernel.SavedStates;
  * disc going out ({@link #emigrate}) is moved into the foreign column it enters.
  */
 public final class SlabNode {
+    private static final String TAG = "cluster-node/1";
+
     private final DiscTable table;
     private final SlabColumns columns;
     private final DiscMarks marks;
@@ -27,6 +31,8 @@ public final class SlabNode {
     /** Slot 0: a state on its way in or out. */
     private final SavedStates scratch;
     private final int doublesPer;
+    /** Every disc at a sample's time, by scene id (this slab's filled in); made at the first sample. */
+    private Discs sample;
 
     public SlabNode(Scene scene, double cellFactor, int domains, int id, double until) {
         this.table = new DiscTable(scene, scene.newDiscs(), cellFactor);
@@ -209,15 +215,73 @@ public final class SlabNode {
         for (int k = 0; k < table.n; k++) {
             if (columns.ownerOfDisc(k) == domain.id) {
                 domain.motion.finalRange(out, k, k + 1, clock.untilLocal, clock.until);
-                int o = table.sceneId(k);
-                int q = b.add(o, 0, 0);
-                b.doubles()[4 * q] = out.x[o];
-                b.doubles()[4 * q + 1] = out.y[o];
-                b.doubles()[4 * q + 2] = out.vx[o];
-                b.doubles()[4 * q + 3] = out.vy[o];
+                addXyv(b, table.sceneId(k), out);
             }
         }
         return b.build();
+    }
+
+    /** Disc o of {@code from} (scene id) into the batch: its id, then x, y, vx, vy. */
+    private static void addXyv(StateBatch.Builder b, int o, Discs from) {
+        int q = b.add(o, 0, 0);
+        b.doubles()[4 * q] = from.x[o];
+        b.doubles()[4 * q + 1] = from.y[o];
+        b.doubles()[4 * q + 2] = from.vx[o];
+        b.doubles()[4 * q + 3] = from.vy[o];
+    }
+
+    /**
+     * This slab's discs with internal ids in [from, to) at local time {@code local} (a sample between
+     * windows), without moving any record: scene ids, then x, y, vx, vy per disc as {@link #finalStates}.
+     */
+    public StateBatch statesAt(double local, int from, int to) {
+        if (sample == null) {
+            sample = new Discs(table.n);
+        }
+        StateBatch.Builder b = new StateBatch.Builder(4, 0, (to - from) / columns.domains + 1);
+        for (int k = from; k < to; k++) {
+            if (columns.ownerOfDisc(k) == domain.id) {
+                domain.motion.stateAt(sample, k, k + 1, local);
+                addXyv(b, table.sceneId(k), sample);
+            }
+        }
+        return b.build();
+    }
+
+    /** The pair virial sum of this slab's collisions so far, in the order added (a sample's running total). */
+    public double virialTotal() {
+        return domain.virial.total();
+    }
+
+    /**
+     * This node's whole state between windows, for a checkpoint file: clocks, table, calendar,
+     * counters and marks. {@link #restore} on a node built from the same scene, slab and slab count
+     * continues with the very same bits.
+     */
+    public byte[] save() {
+        StateBytes.Out out = new StateBytes.Out(TAG).putInt(domain.id).putInt(columns.domains)
+                .putDouble(clock.until).putDouble(clock.epoch);
+        TableState.save(table, out);
+        domain.save(out);
+        marks.save(out);
+        return out.bytes();
+    }
+
+    /** Takes up a state {@link #save} wrote; a state of another slab or scene is an {@link IllegalArgumentException}. */
+    public void restore(byte[] saved) {
+        StateBytes.In in = new StateBytes.In(saved, TAG);
+        int id = in.getInt();
+        int domains = in.getInt();
+        if (id != domain.id || domains != columns.domains) {
+            throw new IllegalArgumentException("engine state: slab " + id + " of " + domains + " given to slab "
+                    + domain.id + " of " + columns.domains);
+        }
+        double savedUntil = in.getDouble();
+        startAt(in.getDouble());
+        TableState.restore(table, in);
+        domain.restore(in, savedUntil);
+        marks.restore(in);
+        in.end();
     }
 
     /** This slab's counters: events, pair and wall collisions, cell crossings, stale and undone events. */

@@ -1,0 +1,222 @@
+package carom.engines.cluster;
+
+import carom.core.engine.Checkpoints;
+import carom.core.engine.RunStopped;
+import carom.core.engine.StateBytes;
+import carom.core.observe.VirialAccumulator;
+import carom.engines.cluster.Protocol.RestoreState;
+import carom.engines.cluster.Protocol.SaveState;
+import carom.engines.cluster.Protocol.SavedState;
+import carom.engines.slabs.StateBatch;
+import java.io.ByteArrayOutputStream;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * A cluster run's checkpoint file state ({@code --checkpoint}), taken at the start of a window
+ * ({@link ClusterRun}), every node idle: the coordinator's clocks and counters, its mirror of the edge
+ * columns, the recovery {@link Checkpoint} it holds, and every node's whole state (table, calendar,
+ * counters: {@link carom.engines.slabs.SlabNode#save}), gathered in parts of at most
+ * {@link NodeActor#STATE_PART} bytes. Nothing is predicted anew on resume, so a resumed run continues
+ * with the very same bits as one that never stopped; taking it changes nothing of the run. The price is
+ * size: the mirror and each node keep a table over every disc, so the state is about K + 2 tables of
+ * the scene for K nodes.
+ *
+ * <p>A state is resumed by a run of the same scene and settings on as many JVMs as the saved run had
+ * when it was taken (fewer than {@code --nodes} after a recovery); it starts them itself on 127.0.0.1.
+ */
+final class ClusterCheckpoint {
+    private static final String TAG = "cluster/1";
+
+    private final ClusterRun run;
+    private final Checkpoints sink;
+    /** The next periodic checkpoint's index. */
+    private long next;
+    /** The state at the start of the latest window that may end the run (it reaches until), or null. */
+    private Checkpoints.Held lastPassStart;
+
+    ClusterCheckpoint(ClusterRun run, Checkpoints sink) {
+        this.run = run;
+        this.sink = sink;
+        this.next = Checkpoints.nextIndexAfter(0, sink.every());
+    }
+
+    /** A resumed run takes up the periodic checkpoints after absolute {@code time}. */
+    void resumedAt(double time) {
+        next = Checkpoints.nextIndexAfter(time, sink.every());
+    }
+
+    /**
+     * At the start of a window at local {@code now}: saves and stops if asked to, saves if a periodic
+     * checkpoint is due, and holds the state if this window may end the run ({@code mayEnd}).
+     */
+    void atPassStart(double now, boolean mayEnd) {
+        double time = run.mirror.epoch() + now;
+        if (sink.stopRequested()) {
+            sink.save(time, save(run, now));
+            throw new RunStopped(time);
+        }
+        if (time >= Checkpoints.timeOf(next, sink.every())) {
+            sink.save(time, save(run, now));
+            next = Checkpoints.nextIndexAfter(time, sink.every());
+        }
+        lastPassStart = mayEnd ? sink.hold(time, save(run, now)) : null;
+    }
+
+    /** The end's checkpoint: the start of the window that reached until. */
+    void atEnd() {
+        if (lastPassStart != null) {
+            lastPassStart.write();
+        }
+    }
+
+    /** The run's state at local {@code now}, the start of a window. */
+    static byte[] save(ClusterRun run, double now) {
+        byte[][] nodeStates = new byte[run.domains][];
+        long collisions = run.mirror.crossPairCollisions + run.counterBase[1] + run.counterBase[2];
+        for (int d = 0; d < run.domains; d++) {
+            ByteArrayOutputStream whole = new ByteArrayOutputStream();
+            int parts = 1;
+            for (int part = 0; part < parts; part++) {
+                int p = part;
+                SavedState s = (SavedState) run.await(run.ask(d, "save", rt -> new SaveState(p, rt)), d, "save");
+                parts = s.parts();
+                whole.writeBytes(s.bytes());
+                if (part == 0) {
+                    collisions += s.counters()[1] + s.counters()[2];
+                }
+            }
+            nodeStates[d] = whole.toByteArray();
+        }
+        StateBytes.Out out = new StateBytes.Out(TAG).putInt(run.nodes.size()).putInt(run.domains)
+                .putDouble(run.until).putDouble(now).putDouble(run.resyncAt).putLong(run.samples.index())
+                .putLongs(new long[] {run.windows, run.commits, run.rollbacks, run.crossDomainEvents, run.migrations,
+                    run.resyncs, run.recoveries, run.messageCount, run.bytes, run.windowBytes, run.crossEventBytes})
+                .putInt(run.messages.size());
+        for (Map.Entry<String, Long> e : run.messages.entrySet()) {
+            out.putString(e.getKey()).putLong(e.getValue());
+        }
+        out.putLongs(run.counterBase).putDoubles(run.virialBase);
+        saveRecovery(run.checkpoint, out);
+        run.mirror.save(out);
+        out.putLong(collisions);
+        for (byte[] state : nodeStates) {
+            out.putBytes(state);
+        }
+        return out.bytes();
+    }
+
+    /** The JVMs of the run that saved {@code saved}: a resumed run starts as many. */
+    static int nodesOf(byte[] saved) {
+        int nodes = new StateBytes.In(saved, TAG).getInt();
+        if (nodes < 1 || nodes > ClusterRun.NODES.max()) {
+            throw new IllegalArgumentException("engine state: " + nodes + " nodes");
+        }
+        return nodes;
+    }
+
+    /** A saved state read into the coordinator: where its window starts, and what goes to each node. */
+    record Resumed(double now, byte[][] nodeStates) {
+        /** Every node takes up its state (it holds the scene already), in parts. */
+        void restoreNodes(ClusterRun run) {
+            for (int d = 0; d < nodeStates.length; d++) {
+                byte[] state = nodeStates[d];
+                int parts = Math.max(1, (state.length + NodeActor.STATE_PART - 1) / NodeActor.STATE_PART);
+                for (int part = 0; part < parts; part++) {
+                    int p = part;
+                    byte[] bytes = Arrays.copyOfRange(state, part * NodeActor.STATE_PART,
+                            Math.min(state.length, (part + 1) * NodeActor.STATE_PART));
+                    run.await(run.ask(d, "restore", rt -> new RestoreState(p, parts, bytes, rt)), d, "restore");
+                }
+            }
+        }
+    }
+
+    /**
+     * Reads a saved state into a run built from the same scene and settings (its mirror cut into as many
+     * slabs as {@link #nodesOf} says), before any node starts; a state that does not fit is an
+     * {@link IllegalArgumentException}.
+     */
+    static Resumed read(ClusterRun run, byte[] saved) {
+        StateBytes.In in = new StateBytes.In(saved, TAG);
+        in.getInt();
+        int domains = in.getInt();
+        if (domains != run.domains) {
+            throw new IllegalArgumentException("engine state: " + domains + " slabs, the run has " + run.domains);
+        }
+        double savedUntil = in.getDouble();
+        double now = in.getDouble();
+        run.resyncAt = in.getDouble();
+        run.samples.resumeAt(in.getLong());
+        long[] c = in.getLongs(11);
+        run.windows = c[0];
+        run.commits = c[1];
+        run.rollbacks = c[2];
+        run.crossDomainEvents = c[3];
+        run.migrations = c[4];
+        run.resyncs = c[5];
+        run.recoveries = c[6];
+        run.messageCount = c[7];
+        run.bytes = c[8];
+        run.windowBytes = c[9];
+        run.crossEventBytes = c[10];
+        int types = in.getInt();
+        if (types < 0 || types > 1000) {
+            throw new IllegalArgumentException("engine state: " + types + " message types");
+        }
+        for (int k = 0; k < types; k++) {
+            run.messages.put(in.getString(), in.getLong());
+        }
+        run.counterBase = in.getLongs(run.counterBase.length);
+        run.virialBase = remap(in.getDoubles(), savedUntil, run.until);
+        run.checkpoint = readRecovery(in, savedUntil, run.until, run.counterBase.length);
+        run.mirror.restore(in);
+        run.collisionsBefore = in.getLong();
+        byte[][] nodeStates = new byte[domains][];
+        for (int d = 0; d < domains; d++) {
+            nodeStates[d] = in.getBytes();
+        }
+        in.end();
+        if (!(now <= run.mirror.untilLocal())) {
+            throw new IllegalArgumentException("the checkpoint is at t = " + (run.mirror.epoch() + now)
+                    + ", after until = " + run.until);
+        }
+        return new Resumed(now, nodeStates);
+    }
+
+    /** Block sums of a run to {@code savedUntil} as blocks of a run to {@code until} (the same if equal). */
+    private static double[] remap(double[] sums, double savedUntil, double until) {
+        VirialAccumulator v = VirialAccumulator.forRun(until);
+        double total = 0;
+        for (double s : sums) {
+            total += s;
+        }
+        v.restore(sums, savedUntil, total);
+        return v.blockSums();
+    }
+
+    private static void saveRecovery(Checkpoint cp, StateBytes.Out out) {
+        out.putDouble(cp.epoch()).putInt(cp.states().size());
+        for (StateBatch b : cp.states()) {
+            out.putInts(b.ids()).putInts(b.entries()).putDoubles(b.ends()).putDoubles(b.doubles()).putInts(b.ints());
+        }
+        out.putLongs(cp.slabCounters()).putDoubles(cp.slabVirial()).putDoubles(cp.crossVirial())
+                .putLong(cp.crossPairCollisions()).putLong(cp.crossDomainEvents()).putLong(cp.migrations());
+    }
+
+    private static Checkpoint readRecovery(StateBytes.In in, double savedUntil, double until, int counters) {
+        double epoch = in.getDouble();
+        int batches = in.getInt();
+        if (batches < 0 || batches > (1 << 20)) {
+            throw new IllegalArgumentException("engine state: " + batches + " batches of states");
+        }
+        List<StateBatch> states = new ArrayList<>();
+        for (int k = 0; k < batches; k++) {
+            states.add(new StateBatch(in.getInts(), in.getInts(), in.getDoubles(), in.getDoubles(), in.getInts()));
+        }
+        return new Checkpoint(epoch, states, in.getLongs(counters), remap(in.getDoubles(), savedUntil, until),
+                remap(in.getDoubles(), savedUntil, until), in.getLong(), in.getLong(), in.getLong());
+    }
+}
