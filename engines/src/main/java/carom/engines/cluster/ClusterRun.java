@@ -106,6 +106,9 @@ final class ClusterRun {
     private long[] counterBase = new long[6];
     private double[] virialBase;
     private long recoveries;
+    /** Wall time from sending the windows to having read every node's report, and in the rest of the loop. */
+    private long windowNanos;
+    private long loopNanos;
 
     /** A worker JVM died during the run: recover from the last checkpoint. */
     private static final class WorkerLost extends RuntimeException {
@@ -149,7 +152,7 @@ final class ClusterRun {
             checkpoint = Checkpoint.atStart(counterBase.length, virialBase.length);
             boolean lost = false;
             boolean begun = false;
-            Reply[] finals;
+            List<Reply> finals;
             while (true) {
                 try {
                     if (lost) {
@@ -159,8 +162,13 @@ final class ClusterRun {
                         begun = true;
                         startSlabs();
                     }
-                    loop();
-                    finals = askAll("finish", d -> Finish::new);
+                    long loopStart = System.nanoTime();
+                    try {
+                        loop();
+                    } finally {
+                        loopNanos += System.nanoTime() - loopStart;
+                    }
+                    finals = finish();
                     break;
                 } catch (WorkerLost e) {
                     if (!seeds.isEmpty()) {
@@ -217,6 +225,8 @@ final class ClusterRun {
         c.put(Counter.STALE_EVENTS.key, sums[4]);
         c.put(Counter.RESYNCS.key, resyncs);
         c.put(Counter.RECOVERIES.key, recoveries);
+        c.put(Counter.WINDOW_NANOS.key, windowNanos);
+        c.put(Counter.SERIAL_NANOS.key, loopNanos - windowNanos);
         c.put(Counter.MESSAGES.key, messageCount);
         c.put(Counter.MESSAGE_BYTES.key, bytes);
         c.put(Counter.MESSAGES_PER_WINDOW.key, windows == 0 ? 0 : Math.round((double) messageCount / windows));
@@ -227,6 +237,17 @@ final class ClusterRun {
             c.put(Counter.messagesOf(e.getKey()), e.getValue());
         }
         return c;
+    }
+
+    /** Every node's final states, in parts of at most {@link #CHUNK} discs per message, and its counters. */
+    private List<Reply> finish() {
+        int parts = Math.max(1, (scene.size() + CHUNK - 1) / CHUNK);
+        List<Reply> all = new ArrayList<>();
+        for (int part = 0; part < parts; part++) {
+            int p = part;
+            all.addAll(List.of(askAll("finish", d -> rt -> new Finish(p, parts, rt))));
+        }
+        return all;
     }
 
     /** First predictions on every slab, the edge records into the mirror, the cross events predicted. */
@@ -336,6 +357,7 @@ final class ClusterRun {
             double reached = end;
             int stopper = -1;
             int stopDisc = -1;
+            long windowStart = System.nanoTime();
             for (Reply r : askAll("window", d -> rt -> new Window(end, last, rt))) {
                 WindowDone w = (WindowDone) r;
                 mirror.windowReport(w.domain(), w.changed(), w.segments());
@@ -345,6 +367,7 @@ final class ClusterRun {
                     stopDisc = w.stopDisc();
                 }
             }
+            windowNanos += System.nanoTime() - windowStart;
             double violation = mirror.verify(now, reached);
             boolean contact = violation <= reached;
             double tStar = contact ? violation : reached;

@@ -99,8 +99,16 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
                         () -> new States(domain(), slab.emigrate(m.disc(), m.now()))))
                 .onMessage(Replan.class, m -> answer(m.replyTo(), () -> new Replanned(domain(), slab.replan(m.shift()))))
                 .onMessage(Finish.class, m -> answer(m.replyTo(), () -> {
-                    Finished f = new Finished(domain(), slab.finalStates(), slab.counters(), slab.virialSums());
-                    slab = null;
+                    int n = slab.discs();
+                    int from = (int) ((long) n * m.part() / m.parts());
+                    int to = (int) ((long) n * (m.part() + 1) / m.parts());
+                    boolean first = m.part() == 0;
+                    Finished f = new Finished(domain(), slab.finalStates(from, to),
+                            first ? slab.counters() : new long[slab.counters().length],
+                            first ? slab.virialSums() : new double[slab.virialSums().length]);
+                    if (m.part() == m.parts() - 1) {
+                        slab = null;
+                    }
                     return f;
                 }))
                 .build();
