@@ -121,6 +121,9 @@ final class ClusterRun {
     /** The run's checkpoint files, or null without; collisions before the one a resumed run started from. */
     private final ClusterCheckpoint checkpoints;
     long collisionsBefore;
+    /** Wall time from sending the windows to having read every node's report, and in the rest of the loop. */
+    private long windowNanos;
+    private long loopNanos;
 
     /** A worker JVM died during the run: recover from the last checkpoint. */
     private static final class WorkerLost extends RuntimeException {
@@ -175,7 +178,7 @@ final class ClusterRun {
             boolean lost = false;
             boolean begun = false;
             double now = 0;
-            Reply[] finals;
+            List<Reply> finals;
             while (true) {
                 try {
                     if (lost) {
@@ -196,14 +199,19 @@ final class ClusterRun {
                     }
                     // Samples already handed out (before a recovery's checkpoint, or a resumed one's) are not again.
                     sampleLocal = samples.next() - mirror.epoch();
-                    loop(now);
+                    long loopStart = System.nanoTime();
+                    try {
+                        loop(now);
+                    } finally {
+                        loopNanos += System.nanoTime() - loopStart;
+                    }
                     while (samples.next() <= until) {
                         sample();
                     }
                     if (checkpoints != null) {
                         checkpoints.atEnd();
                     }
-                    finals = askAll("finish", d -> Finish::new);
+                    finals = finish();
                     break;
                 } catch (WorkerLost e) {
                     if (!seeds.isEmpty()) {
@@ -217,7 +225,7 @@ final class ClusterRun {
             VirialAccumulator virial = mirror.virial;
             for (Reply r : finals) {
                 Finished f = (Finished) r;
-                copyStates(f.finals(), out, until);
+                f.finals().copyXyvInto(out, until);
                 for (int k = 0; k < sums.length; k++) {
                     sums[k] += f.counters()[k];
                 }
@@ -252,6 +260,8 @@ final class ClusterRun {
         c.put(Counter.STALE_EVENTS.key, sums[4]);
         c.put(Counter.RESYNCS.key, resyncs);
         c.put(Counter.RECOVERIES.key, recoveries);
+        c.put(Counter.WINDOW_NANOS.key, windowNanos);
+        c.put(Counter.SERIAL_NANOS.key, loopNanos - windowNanos);
         c.put(Counter.MESSAGES.key, messageCount);
         c.put(Counter.MESSAGE_BYTES.key, bytes);
         c.put(Counter.MESSAGES_PER_WINDOW.key, windows == 0 ? 0 : Math.round((double) messageCount / windows));
@@ -264,16 +274,15 @@ final class ClusterRun {
         return c;
     }
 
-    /** States of a batch of scene ids with x, y, vx, vy each ({@link Finished}, {@link Sampled}) into {@code out} at time t. */
-    private static void copyStates(StateBatch b, Discs out, double t) {
-        for (int q = 0; q < b.size(); q++) {
-            int o = b.ids()[q];
-            out.x[o] = b.doubles()[4 * q];
-            out.y[o] = b.doubles()[4 * q + 1];
-            out.vx[o] = b.doubles()[4 * q + 2];
-            out.vy[o] = b.doubles()[4 * q + 3];
-            out.t[o] = t;
+    /** Every node's final states, in parts of at most {@link #CHUNK} discs per message, and its counters. */
+    private List<Reply> finish() {
+        int parts = parts();
+        List<Reply> all = new ArrayList<>();
+        for (int part = 0; part < parts; part++) {
+            int p = part;
+            all.addAll(List.of(askAll("finish", d -> rt -> new Finish(p, parts, rt))));
         }
+        return all;
     }
 
     /** First predictions on every slab, the edge records into the mirror, the cross events predicted. */
@@ -395,6 +404,7 @@ final class ClusterRun {
             double reached = end;
             int stopper = -1;
             int stopDisc = -1;
+            long windowStart = System.nanoTime();
             for (Reply r : askAll("window", d -> rt -> new Window(end, last, rt))) {
                 WindowDone w = (WindowDone) r;
                 mirror.windowReport(w.domain(), w.changed(), w.segments());
@@ -404,6 +414,7 @@ final class ClusterRun {
                     stopDisc = w.stopDisc();
                 }
             }
+            windowNanos += System.nanoTime() - windowStart;
             double violation = mirror.verify(now, reached);
             boolean contact = violation <= reached;
             double tStar = contact ? violation : reached;
@@ -490,7 +501,7 @@ final class ClusterRun {
             int p = part;
             for (Reply r : askAll("sample", d -> rt -> new SampleAt(local, p, parts, rt))) {
                 Sampled s = (Sampled) r;
-                copyStates(s.states(), state, local);
+                s.states().copyXyvInto(state, local);
                 if (p == 0) {
                     virialSum += s.virial();
                 }

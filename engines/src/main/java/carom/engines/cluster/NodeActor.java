@@ -112,8 +112,14 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
                         () -> new States(domain(), slab.emigrate(m.disc(), m.now()))))
                 .onMessage(Replan.class, m -> answer(m.replyTo(), () -> new Replanned(domain(), slab.replan(m.shift()))))
                 .onMessage(Finish.class, m -> answer(m.replyTo(), () -> {
-                    Finished f = new Finished(domain(), slab.finalStates(), slab.counters(), slab.virialSums());
-                    slab = null;
+                    boolean first = m.part() == 0;
+                    Finished f = new Finished(domain(),
+                            slab.finalStates(partStart(m.part(), m.parts()), partStart(m.part() + 1, m.parts())),
+                            first ? slab.counters() : new long[slab.counters().length],
+                            first ? slab.virialSums() : new double[slab.virialSums().length]);
+                    if (m.part() == m.parts() - 1) {
+                        slab = null;
+                    }
                     return f;
                 }))
                 .build();

@@ -100,8 +100,11 @@ public final class Protocol {
     public record RestoreState(int part, int parts, byte[] bytes, ActorRef<Reply> replyTo) implements NodeCommand {
     }
 
-    /** The run is over: send the slab's final states and counters. */
-    public record Finish(ActorRef<Reply> replyTo) implements NodeCommand {
+    /**
+     * The run is over: send the final states of the slab's discs with internal ids in part {@code part}
+     * of {@code parts} (each reply under Artery's frame size), and with part 0 the counters.
+     */
+    public record Finish(int part, int parts, ActorRef<Reply> replyTo) implements NodeCommand {
     }
 
     public record Started(int domain, double span, StateBatch edge) implements Reply {
@@ -127,7 +130,7 @@ public final class Protocol {
     public record Replanned(int domain, double span) implements Reply {
     }
 
-    /** Final states (scene ids; x, y, vx, vy), counters ({@code SlabNode#counters}) and pair virial sums. */
+    /** Final states (scene ids; x, y, vx, vy), counters ({@code SlabNode#counters}) and pair virial sums (zeros after part 0). */
     public record Finished(int domain, StateBatch finals, long[] counters, double[] virial) implements Reply {
     }
 

@@ -214,9 +214,11 @@ final class Domain {
         return count;
     }
 
-    /** Starts a window: an empty log, no stop. */
+    /** Starts a window: an empty log (none on a single domain), no stop. */
     void startWindow() {
-        log.clear();
+        if (log != null) {
+            log.clear();
+        }
         stopTime = INF;
         stopDisc = -1;
     }

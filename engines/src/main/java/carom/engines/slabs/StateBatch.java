@@ -18,6 +18,21 @@ public record StateBatch(int[] ids, int[] entries, double[] ends, double[] doubl
         return ids.length;
     }
 
+    /**
+     * A batch of scene ids with x, y, vx, vy each (final states, samples: {@code SlabNode}) written into
+     * {@code out} at those ids, at time {@code t}.
+     */
+    public void copyXyvInto(carom.core.state.Discs out, double t) {
+        for (int q = 0; q < ids.length; q++) {
+            int o = ids[q];
+            out.x[o] = doubles[4 * q];
+            out.y[o] = doubles[4 * q + 1];
+            out.vx[o] = doubles[4 * q + 2];
+            out.vy[o] = doubles[4 * q + 3];
+            out.t[o] = t;
+        }
+    }
+
     /** The batch of state q alone. */
     public StateBatch select(int q) {
         int d = doubles.length / ids.length;

@@ -69,6 +69,24 @@ class ClusterEngineTest {
     }
 
     @Test
+    void oneNodeRunsTheWholeBoxInTheCoordinatorsJvmAndMatchesSerial() {
+        Scene scene = RandomScenes.dense(900, 0.7, true, 4, 0.15);
+        RunResult r = cluster(scene, 1);
+        assertThat(r.counters().get("domains")).isEqualTo(1);
+        assertThat(r.counters().get("crossDomainEvents")).isZero();
+        Invariants.assertSameRun(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())), SAME);
+    }
+
+    @Test
+    void finalStatesOfMoreDiscsThanOneMessageHoldsComeInPartsAndMatchFast() {
+        // 40,000 discs: each node's final states exceed one part of 16,384 (and, at 1e6 discs, Artery's frame).
+        Scene scene = RandomScenes.dense(40_000, 0.5, true, 5, 0.05);
+        RunResult r = cluster(scene, 2);
+        assertThat(r.counters().get("messages.finish")).isEqualTo(2L * 3);
+        Invariants.assertSameRun(scene.name(), r, new FastEngine().run(scene, RunOptions.until(scene.until())), SAME);
+    }
+
+    @Test
     void theSixDiscChainAcrossASlabEdgeMatchesSerial() {
         Scene scene = ChainScenes.alongX();
         RunResult r = cluster(scene, 2);
