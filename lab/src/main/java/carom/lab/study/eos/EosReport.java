@@ -131,8 +131,9 @@ final class EosReport {
                 .append(lengthsDescription())
                 .append("- Z = PA/(NkT) from the collision virial; βPσ² = Z·4φ/π; |ψ6| the global bond-orientational order ")
                 .append("(neighbours within 1.4σ) at each block's end. Error bars: standard errors by blocking (neighbouring blocks ")
-                .append("merged in pairs until the error stops growing, so that the bins are longer than the correlation time; ")
-                .append("\"not converged\" where it still grew with ").append(BlockedError.MIN_BINS).append(" bins left: then a lower ")
+                .append("merged into bins of 2, 4, 8, ... blocks; the first bin length B with B³ > 2n(σ_B/σ_1)⁴, Lee et al. 2011, at ")
+                .append("which the bins outlast the correlation time and the error has stopped growing; \"not converged\" (nc) where no ")
+                .append("bin length with at least ").append(BlockedError.MIN_BINS).append(" bins meets it: the error is then a lower ")
                 .append("bound)\n");
         if (settings.deadline().end() != null) {
             md.append(String.format(Locale.ROOT, "- deadline %s%s; the study ran %s%n", settings.deadline().end(),
@@ -187,7 +188,7 @@ final class EosReport {
     }
 
     private String lengthsDescription() {
-        String measure = String.format(Locale.ROOT, "blocks of about %s collisions per disc; ", Table.readable(settings.blockCollisions()));
+        String measure = String.format(Locale.ROOT, "- blocks of about %s collisions per disc; ", Table.readable(settings.blockCollisions()));
         if (settings.deadline().fill()) {
             return measure + String.format(Locale.ROOT, "each point's run gets an equal share of the time left to the deadline: the "
                     + "first %.0f%% equilibrates, the rest measures (at least %d blocks); \"stationary\" says whether Z and |ψ6| over "
