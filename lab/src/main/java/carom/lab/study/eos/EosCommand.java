@@ -21,13 +21,15 @@ import picocli.CommandLine.Spec;
 
 /**
  * {@code carom study eos}: the equation of state of equal hard discs at packing fractions through the
- * liquid-hexatic transition, each point equilibrated as its own data says and measured in blocks; writes
- * the report folder whole or not at all.
+ * liquid-hexatic transition, each point run from a crystal and from a liquid (by default), equilibrated,
+ * measured in blocks with blocked error bars, and accepted where the two starts agree; writes the report
+ * folder whole or not at all, also when a deadline stops the runs (the points not reached then say so).
+ * The two starts run side by side, one thread each, each walking the packing fractions upwards.
  */
 @Command(name = "eos", mixinStandardHelpOptions = true, sortOptions = false,
         description = {"The equation of state of equal hard discs through the liquid-hexatic transition (packing fractions "
-                + "0.30-0.74): each point started as a triangular crystal, equilibrated until its pressure and bond order stop "
-                + "drifting, then measured in blocks; the literature's values beside ours.",
+                + "0.30-0.74): each point started as a triangular crystal and as a liquid, equilibrated, then measured in blocks; "
+                + "a point is accepted where the two starts agree; the literature's values beside ours.",
                 "Writes report.md, eos.csv, plots (PNG and SVG) and snapshots coloured by local ψ6 into --out. The default "
                         + "(N = 16384, 14 packing fractions) takes hours; try --quick first."})
 public final class EosCommand implements Callable<Integer> {
@@ -36,6 +38,7 @@ public final class EosCommand implements Callable<Integer> {
     static final List<Double> SNAPSHOTS = List.of(0.70, 0.71, 0.72);
     static final String CRYSTAL = "crystal";
     static final String FLUID = "fluid";
+    static final String BOTH = "both";
 
     @Spec
     CommandSpec spec;
@@ -55,13 +58,14 @@ public final class EosCommand implements Callable<Integer> {
             description = "An exact engine (default ${DEFAULT-VALUE}).")
     String engine;
 
-    @Option(names = "--threads", paramLabel = "K", description = "Threads of the engine (default: the available processors).")
+    @Option(names = "--threads", paramLabel = "K", description = "Threads of each engine run (default: the available processors, "
+            + "halved with --start both, whose two starts run side by side).")
     Integer threads;
 
-    @Option(names = "--block-collisions", paramLabel = "C", description = "Collisions per disc in each block (default 20; --quick: 5).")
+    @Option(names = "--block-collisions", paramLabel = "C", description = "Collisions per disc in each block (default 10; --quick: 5).")
     Double blockCollisions;
 
-    @Option(names = "--window", paramLabel = "B", description = "Blocks in each window of the stationarity test (default 5; --quick: 2).")
+    @Option(names = "--window", paramLabel = "B", description = "Blocks in each window of the stationarity test (default 10; --quick: 2).")
     Integer window;
 
     @Option(names = "--min-equilibration", paramLabel = "C",
@@ -72,16 +76,25 @@ public final class EosCommand implements Callable<Integer> {
             description = "Collisions per disc after which a point still drifting is measured anyway, flagged (default 5000; --quick: 40).")
     Double maxEquilibration;
 
-    @Option(names = "--blocks", paramLabel = "B", description = "Measurement blocks (default 20; --quick: 4).")
+    @Option(names = "--blocks", paramLabel = "B", description = "Measurement blocks (default 64; --quick: 16); the error bars merge them into longer bins until these outlast the correlation time.")
     Integer blocks;
 
     @Option(names = "--seed", paramLabel = "S", defaultValue = "1", description = "Seed of the starting velocities (default ${DEFAULT-VALUE}).")
     long seed;
 
-    @Option(names = "--start", paramLabel = "crystal|fluid", defaultValue = CRYSTAL,
-            description = "Each point's start: a triangular crystal (default), or a liquid melted at 0.60 and compressed to "
-                    + "the packing fraction by growing the discs. The two agreeing is the test that a point is in equilibrium.")
+    @Option(names = "--start", paramLabel = "both|crystal|fluid", defaultValue = BOTH,
+            description = "Each point's start: a triangular crystal, a liquid melted at 0.60 and compressed to the packing "
+                    + "fraction by growing the discs, or both (default), side by side: a point is accepted only where the two "
+                    + "agree within two combined standard errors.")
     String start;
+
+    @Option(names = "--deadline", paramLabel = "WHEN", description = "Stop the runs by then and write the report with the points "
+            + "finished (the others as not run): an instant (2026-12-02T01:05:00Z) or a duration from now (90s, 70m, 2h).")
+    String deadline;
+
+    @Option(names = "--fill-to-deadline", description = "With --deadline: give each point an equal share of the time left instead "
+            + "of fixed run lengths (40% equilibrating, the rest measuring, at least --blocks blocks).")
+    boolean fill;
 
     @Option(names = "--snapshots", split = ",", paramLabel = "PHI",
             description = "Packing fractions whose final state is drawn coloured by local ψ6 (default 0.70,0.71,0.72; those in --phis).")
@@ -104,24 +117,37 @@ public final class EosCommand implements Callable<Integer> {
         OutputFolder.check(out, "--out");
         Machine machine = Machine.current();
         double loadBefore = Machine.loadAverage();
+        long began = System.currentTimeMillis();
         EosRunner runner = new EosRunner(chosen, settings);
         List<EosPoint> points = new ArrayList<>();
         PrintWriter log = spec.commandLine().getErr();
-        try (ProgressBar bar = ProgressBar.forCount(err, settings.phis().size(), "packing fractions")) {
-            for (double phi : settings.phis()) {
-                EosPoint p = runner.measure(phi, status -> bar.completed(points.size(), status));
-                points.add(p);
-                bar.completed(points.size(), "phi " + phi);
-                if (!bar.visible()) {
-                    log.printf(Locale.ROOT, "eos: [%d/%d] phi %s: Z %s, |psi6| %s, %s, %,d pair collisions, %.1f s%n", points.size(),
-                            settings.phis().size(), phi, EosReport.pm(p.z(), p.zError()), EosReport.pm(p.psi6(), p.psi6Error()),
-                            p.equilibrated() ? "equilibrated" : "NOT equilibrated", p.pairCollisions(), p.wallSeconds());
-                    log.flush();
+        int total = settings.phis().size() * settings.starts().size();
+        try (ProgressBar bar = ProgressBar.forCount(err, total, "points")) {
+            List<Thread> branches = new ArrayList<>();
+            List<Throwable> failures = new ArrayList<>();
+            for (String from : settings.starts()) {
+                branches.add(Thread.ofPlatform().name("eos-" + from).start(() -> {
+                    try {
+                        runBranch(runner, settings, from, points, total, bar, log);
+                    } catch (RuntimeException | Error e) {
+                        synchronized (failures) {
+                            failures.add(e);
+                        }
+                    }
+                }));
+            }
+            for (Thread t : branches) {
+                join(t);
+            }
+            if (!failures.isEmpty()) {
+                if (failures.getFirst() instanceof Error error) {
+                    throw error;
                 }
+                throw (RuntimeException) failures.getFirst();
             }
         }
         double loadAfter = Machine.loadAverage();
-        EosReport report = new EosReport(settings, points, machine, loadBefore, loadAfter);
+        EosReport report = new EosReport(settings, points, machine, loadBefore, loadAfter, (System.currentTimeMillis() - began) / 1e3);
         Map<String, byte[]> files = report.files();
         OutputFolder.write(out, files);
         PrintWriter stdout = spec.commandLine().getOut();
@@ -129,6 +155,45 @@ public final class EosCommand implements Callable<Integer> {
         stdout.println(report.loopVerdict());
         stdout.flush();
         return 0;
+    }
+
+    /** One start's points, in ascending packing fraction, onto {@code points}; a line on {@code log} for each. */
+    private static void runBranch(EosRunner runner, EosSettings settings, String from, List<EosPoint> points, int total,
+                                  ProgressBar bar, PrintWriter log) {
+        List<Double> phis = settings.phis();
+        for (int i = 0; i < phis.size(); i++) {
+            double phi = phis.get(i);
+            EosPoint p = runner.measure(phi, from, settings.deadline(), phis.size() - i, status -> {
+                synchronized (points) {
+                    bar.completed(points.size(), status);
+                }
+            });
+            synchronized (points) {
+                if (p != null) {
+                    points.add(p);
+                }
+                bar.completed(points.size(), "phi " + phi + " " + from);
+                if (!bar.visible()) {
+                    log.printf(Locale.ROOT, "eos: [%d/%d] phi %s, %s start: %s%n", points.size(), total, phi, from, p == null
+                            ? "not run (deadline)" : String.format(Locale.ROOT, "Z %s (error bins of %.0f collisions/disc%s), |psi6| %s, "
+                                    + "%s%s, %.0f + %.0f collisions/disc, %,d pair collisions, %.1f s, load %.2f",
+                                    EosReport.pm(p.z(), p.zError()), p.errorBinPerDisc(), p.zStats().converged() ? "" : ", not converged",
+                                    EosReport.pm(p.psi6(), p.psi6Error()), p.stationary() ? "stationary" : "NOT stationary",
+                                    p.cutShort() ? ", cut short by the deadline" : "", p.equilibrationPerDisc(), p.measurementPerDisc(),
+                                    p.pairCollisions(), p.wallSeconds(), p.loadAtEnd()));
+                    log.flush();
+                }
+            }
+        }
+    }
+
+    private static void join(Thread t) {
+        try {
+            t.join();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("interrupted while the study ran", e);
+        }
     }
 
     EosSettings settings() {
@@ -151,12 +216,17 @@ public final class EosCommand implements Callable<Integer> {
         if (!e.exact()) {
             throw new BadInputException("--engine: " + engine + " is relaxed; the equation of state needs an exact engine");
         }
-        int k = threads != null ? threads : Runtime.getRuntime().availableProcessors();
+        List<String> starts = switch (start) {
+            case BOTH -> List.of(CRYSTAL, FLUID);
+            case CRYSTAL, FLUID -> List.of(start);
+            default -> throw new BadInputException("--start: " + carom.core.Quoted.of(start) + " is neither both, crystal nor fluid");
+        };
+        int k = threads != null ? threads : Math.max(1, Runtime.getRuntime().availableProcessors() / starts.size());
         if (k < 1 || k > 1024) {
             throw new BadInputException("--threads: must be 1 to 1024, got " + k);
         }
-        double block = positive(blockCollisions != null ? blockCollisions : quick ? 5 : 20, "--block-collisions");
-        int w = window != null ? window : quick ? 2 : 5;
+        double block = positive(blockCollisions != null ? blockCollisions : quick ? 5 : 10, "--block-collisions");
+        int w = window != null ? window : quick ? 2 : 10;
         if (w < 2 || w > 10_000) {
             throw new BadInputException("--window: must be 2 to 10000 blocks, got " + w);
         }
@@ -165,20 +235,21 @@ public final class EosCommand implements Callable<Integer> {
         if (maxEq < minEq) {
             throw new BadInputException("--max-equilibration must be at least --min-equilibration");
         }
-        int b = blocks != null ? blocks : quick ? 4 : 20;
+        int b = blocks != null ? blocks : quick ? 16 : 64;
         if (b < 2 || b > 1_000_000) {
             throw new BadInputException("--blocks: must be 2 to 1000000, got " + b);
         }
-        if (!start.equals(CRYSTAL) && !start.equals(FLUID)) {
-            throw new BadInputException("--start: " + carom.core.Quoted.of(start) + " is neither crystal nor fluid");
+        if (starts.contains(FLUID) && !e.supportsGrowth()) {
+            throw new BadInputException("--start " + start + ": engine " + engine + " does not simulate growing discs, which make "
+                    + "the liquid start (use fast or slabs, or --start crystal)");
         }
-        if (start.equals(FLUID) && !e.supportsGrowth()) {
-            throw new BadInputException("--start fluid: engine " + engine + " does not simulate growing discs, which make the "
-                    + "liquid start (use fast or slabs)");
+        if (fill && deadline == null) {
+            throw new BadInputException("--fill-to-deadline needs --deadline");
         }
+        Deadline until = deadline == null ? Deadline.NONE : Deadline.parse(deadline, fill, System::currentTimeMillis);
         List<Double> snaps = snapshots != null ? snapshots : quick ? chosenPhis.stream().filter(p -> p >= 0.70).toList() : SNAPSHOTS;
-        return new EosSettings(n, chosenPhis, engine, e.threadsFor(k), block, w, minEq, maxEq, b, seed, start, snaps,
-                carom.lab.LabMain.commandLine(spec), quick);
+        return new EosSettings(n, chosenPhis, engine, e.threadsFor(k), block, w, minEq, maxEq, b, seed, starts, snaps,
+                carom.lab.LabMain.commandLine(spec), quick, until);
     }
 
     private static double positive(double v, String option) {

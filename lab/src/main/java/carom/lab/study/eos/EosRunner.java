@@ -8,22 +8,36 @@ import carom.core.observe.sample.BondOrder;
 import carom.core.observe.sample.Sample;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
+import carom.lab.run.Machine;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
+import java.util.function.Consumer;
 
 /**
- * Measures one packing fraction: a short pilot run sizes the blocks (simulated time for about
- * {@code blockCollisions} collisions per disc), then blocks run one after another, each a run of the
+ * Measures one packing fraction from one start: a short pilot run sizes the blocks (simulated time for
+ * about {@code blockCollisions} collisions per disc), then blocks run one after another, each a run of the
  * engine from the previous block's final state, until {@link Equilibration} finds Z and |ψ6| stationary
- * (or the budget is spent), and then {@code blocks} measurement blocks give the means and their standard
- * errors. Z of a block is the engine's collision-virial pressure over it; |ψ6| is read at each block's end.
+ * (or the budget is spent), and then {@code blocks} measurement blocks give the means and their blocked
+ * standard errors ({@link BlockedError}). Z of a block is the engine's collision-virial pressure over it;
+ * |ψ6| is read at each block's end.
+ *
+ * <p>A {@link Deadline} stops the point between blocks: still equilibrating, it is not run (null);
+ * measuring, it keeps what it has if that is at least {@link #MIN_KEPT_BLOCKS} blocks ({@code cutShort}).
+ * A filling deadline gives the point a share of the wall time left instead of fixed lengths: the first
+ * {@link #EQUILIBRATION_SHARE} of it equilibrates (the stationarity test is then only reported), the rest
+ * measures, at least {@code blocks} blocks.
  */
 final class EosRunner {
     /** First pilot run's length in simulated time (diameter 1, kT 1, mass 1); it doubles until the discs have collided. */
     static final double PILOT_TIME = 0.1;
     /** The floor of |ψ6|'s standard error in the stationarity test: changes below it are not drift. */
     static final double PSI6_FLOOR = 0.005;
+    /** Fewest measurement blocks a point stopped by the deadline keeps (two levels of blocking). */
+    static final int MIN_KEPT_BLOCKS = 4 * BlockedError.MIN_BINS;
+    /** With a filling deadline, the part of a point's time that equilibrates. */
+    static final double EQUILIBRATION_SHARE = 0.4;
 
     private final Engine engine;
     private final int threads;
@@ -37,9 +51,18 @@ final class EosRunner {
         this.settings = settings;
     }
 
-    /** The point at {@code phi}; {@code status} hears a line per block (for the progress display). */
-    EosPoint measure(double phi, java.util.function.Consumer<String> status) {
-        Scene scene = settings.start().equals(EosCommand.FLUID) ? EosScene.fluid(settings.discs(), phi, settings.seed(), engine, threads)
+    /**
+     * The point at {@code phi} from {@code start}, or null if {@code deadline} came first; {@code status} hears a line
+     * per block (for the progress display); {@code pointsLeft} (this one included) sizes the point's share of a filling
+     * deadline.
+     */
+    EosPoint measure(double phi, String start, Deadline deadline, int pointsLeft, Consumer<String> status) {
+        if (deadline.passed()) {
+            return null;
+        }
+        long began = deadline.now();
+        double share = deadline.shareSeconds(pointsLeft);
+        Scene scene = start.equals(EosCommand.FLUID) ? EosScene.fluid(settings.discs(), phi, settings.seed(), engine, threads)
                 : EosScene.crystal(settings.discs(), phi, settings.seed());
         int n = scene.size();
         Chain chain = new Chain(scene);
@@ -55,32 +78,41 @@ final class EosRunner {
         Equilibration judge = new Equilibration(settings.window(), 2.0);
         List<Double> zBlocks = new ArrayList<>();
         List<Double> psiBlocks = new ArrayList<>();
-        boolean equilibrated;
+        boolean stationary;
         while (true) {
+            if (deadline.passed()) {
+                return null;
+            }
             double perDisc = 2.0 * chain.pairs / n;
-            boolean stationary = perDisc >= settings.minEquilibration() && judge.stationary(zBlocks, 0)
-                    && judge.stationary(psiBlocks, PSI6_FLOOR);
-            if (stationary || perDisc >= settings.maxEquilibration()) {
-                equilibrated = stationary;
+            stationary = judge.stationary(zBlocks, 0) && judge.stationary(psiBlocks, PSI6_FLOOR);
+            boolean done = deadline.fill() ? deadline.secondsSince(began) >= EQUILIBRATION_SHARE * share
+                    : stationary && perDisc >= settings.minEquilibration() || perDisc >= settings.maxEquilibration();
+            if (done) {
                 break;
             }
             chain.block(blockTime, zBlocks, psiBlocks);
-            status.accept(String.format(java.util.Locale.ROOT, "phi %s equilibrating: %.0f collisions/disc, Z %.4f, |psi6| %.3f",
-                    phi, 2.0 * chain.pairs / n, zBlocks.getLast(), psiBlocks.getLast()));
+            status.accept(String.format(Locale.ROOT, "phi %s %s equilibrating: %.0f collisions/disc, Z %.4f, |psi6| %.3f", phi,
+                    start, 2.0 * chain.pairs / n, zBlocks.getLast(), psiBlocks.getLast()));
         }
         long equilibrationPairs = chain.pairs;
         zBlocks.clear();
         psiBlocks.clear();
-        for (int b = 0; b < settings.blocks(); b++) {
+        boolean cutShort = false;
+        while (zBlocks.size() < settings.blocks() || deadline.fill() && deadline.secondsSince(began) < share) {
+            if (deadline.passed()) {
+                if (zBlocks.size() < MIN_KEPT_BLOCKS) {
+                    return null;
+                }
+                cutShort = true;
+                break;
+            }
             chain.block(blockTime, zBlocks, psiBlocks);
-            status.accept(String.format(java.util.Locale.ROOT, "phi %s measuring: block %d of %d, Z %.4f", phi, b + 1,
-                    settings.blocks(), zBlocks.get(b)));
+            status.accept(String.format(Locale.ROOT, "phi %s %s measuring: block %d%s, Z %.4f", phi, start, zBlocks.size(),
+                    deadline.fill() ? "" : " of " + settings.blocks(), zBlocks.getLast()));
         }
-        Equilibration.Window z = Equilibration.Window.of(zBlocks);
-        Equilibration.Window psi = Equilibration.Window.of(psiBlocks);
-        return new EosPoint(phi, equilibrated, 2.0 * equilibrationPairs / n, 2.0 * (chain.pairs - equilibrationPairs) / n,
-                settings.blocks(), blockTime, z.mean(), z.standardError(), psi.mean(), psi.standardError(), chain.pairs,
-                chain.wall, scene, chain.state);
+        return new EosPoint(phi, start, stationary, cutShort, 2.0 * equilibrationPairs / n,
+                2.0 * (chain.pairs - equilibrationPairs) / n, zBlocks.size(), blockTime, BlockedError.of(zBlocks),
+                BlockedError.of(psiBlocks), chain.pairs, chain.wall, Machine.loadAverage(), scene, chain.state);
     }
 
     /**

@@ -15,16 +15,24 @@ import java.util.List;
  * @param maxEquilibration  collisions per disc after which a point is measured anyway, flagged as not equilibrated
  * @param blocks            measurement blocks
  * @param seed              seed of the starting velocities
- * @param start             {@code crystal} or {@code fluid} ({@link EosScene#crystal}, {@link EosScene#fluid})
+ * @param starts            the starts each point runs from, {@code crystal} and/or {@code fluid} ({@link EosScene#crystal},
+ *                          {@link EosScene#fluid}); with both, a point is accepted where they agree ({@link BranchAgreement})
  * @param snapshots         packing fractions whose final state is drawn coloured by local ψ6
  * @param commandLine       the command as given, for the report
  * @param quick             --quick: a try of the command, not a measurement
+ * @param deadline          when the runs stop, and whether the points fill the time up to it ({@link Deadline#NONE}: no deadline)
  */
 record EosSettings(int discs, List<Double> phis, String engine, int threads, double blockCollisions, int window,
-                   double minEquilibration, double maxEquilibration, int blocks, long seed, String start, List<Double> snapshots,
-                   String commandLine, boolean quick) {
+                   double minEquilibration, double maxEquilibration, int blocks, long seed, List<String> starts, List<Double> snapshots,
+                   String commandLine, boolean quick, Deadline deadline) {
     EosSettings {
         phis = phis.stream().sorted().toList();
         snapshots = List.copyOf(snapshots);
+        starts = List.copyOf(starts);
+    }
+
+    /** Whether each point runs from both starts, and is judged by their agreement. */
+    boolean bothStarts() {
+        return starts.size() == 2;
     }
 }
