@@ -31,21 +31,7 @@ public final class PairLaw {
      * @param sigma contact distance Ri + Rj
      */
     public static double timeToContact(double dx, double dy, double dvx, double dvy, double sigma) {
-        double b = dx * dvx + dy * dvy;
-        if (b >= 0) {
-            return Double.POSITIVE_INFINITY;
-        }
-        double r2 = dx * dx + dy * dy;
-        double c = r2 - sigma * sigma;
-        double v2 = dvx * dvx + dvy * dvy;
-        if (c <= 0) {
-            return closing(b, r2, v2) ? 0 : Double.POSITIVE_INFINITY;
-        }
-        double discriminant = b * b - v2 * c;
-        if (discriminant <= 0) {
-            return Double.POSITIVE_INFINITY;
-        }
-        return c / (Math.sqrt(discriminant) - b);
+        return timeToContactBefore(dx, dy, dvx, dvy, sigma, Double.POSITIVE_INFINITY);
     }
 
     /**

@@ -1,7 +1,7 @@
 package carom.engines.slabs;
 
 import carom.core.engine.Checkpoints;
-import carom.core.engine.RunStopped;
+import carom.core.engine.PassCheckpoints;
 import carom.core.engine.StateBytes;
 import carom.engines.kernel.TableState;
 
@@ -17,45 +17,27 @@ final class SlabsCheckpoint {
     private static final String TAG = "slabs/1";
 
     private final SlabsRun run;
-    private final Checkpoints sink;
-    /** The next periodic checkpoint's index. */
-    private long next;
-    /** The state at the start of the latest pass that may end the run (it reaches until), or null. */
-    private Checkpoints.Held lastPassStart;
+    /** When to save: the schedule every engine that saves at pass starts shares. */
+    private final PassCheckpoints schedule;
 
     SlabsCheckpoint(SlabsRun run, Checkpoints sink) {
         this.run = run;
-        this.sink = sink;
-        this.next = Checkpoints.nextIndexAfter(0, sink.every());
+        this.schedule = new PassCheckpoints(sink);
     }
 
     /** A resumed run takes up the periodic checkpoints after absolute {@code time}. */
     void resumedAt(double time) {
-        next = Checkpoints.nextIndexAfter(time, sink.every());
+        schedule.resumedAt(time);
     }
 
-    /**
-     * At the start of a pass at local {@code now}: saves and stops if asked to, saves if a periodic
-     * checkpoint is due, and holds the state if this pass may end the run ({@code mayEnd}).
-     */
+    /** At the start of a pass at local {@code now} ({@link PassCheckpoints#atPassStart}). */
     void atPassStart(double now, boolean mayEnd) {
-        double time = run.clock.epoch + now;
-        if (sink.stopRequested()) {
-            sink.save(time, save(run, now));
-            throw new RunStopped(time);
-        }
-        if (time >= Checkpoints.timeOf(next, sink.every())) {
-            sink.save(time, save(run, now));
-            next = Checkpoints.nextIndexAfter(time, sink.every());
-        }
-        lastPassStart = mayEnd ? sink.hold(time, save(run, now)) : null;
+        schedule.atPassStart(run.clock.epoch + now, mayEnd, () -> save(run, now));
     }
 
     /** The end's checkpoint: the start of the pass that reached until. */
     void atEnd() {
-        if (lastPassStart != null) {
-            lastPassStart.write();
-        }
+        schedule.atEnd();
     }
 
     /** The state at local {@code now}, the start of a pass. */
