@@ -4,7 +4,6 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.within;
 
-import carom.core.engine.Checkpoints;
 import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
@@ -12,6 +11,7 @@ import carom.core.engine.RunStopped;
 import carom.core.engine.Sampler;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
+import carom.engines.reference.ExactEngineCheckpointContract.Kept;
 import carom.engines.reference.ExactEngineCheckpointContract;
 import carom.engines.reference.RandomScenes;
 import carom.engines.slabs.SlabsEngine;
@@ -55,36 +55,6 @@ class ClusterCheckpointTest {
                 .as("processes left behind").isEmpty();
     }
 
-    /** Keeps every checkpoint; asks to stop once {@code stopAfterPolls} polls have come. */
-    private static final class Kept implements Checkpoints {
-        final List<double[]> times = new ArrayList<>();
-        final List<byte[]> states = new ArrayList<>();
-        private final double every;
-        private final long stopAfterPolls;
-        private long polls;
-
-        Kept(double every, long stopAfterPolls) {
-            this.every = every;
-            this.stopAfterPolls = stopAfterPolls;
-        }
-
-        @Override
-        public double every() {
-            return every;
-        }
-
-        @Override
-        public boolean stopRequested() {
-            return ++polls > stopAfterPolls;
-        }
-
-        @Override
-        public void save(double time, byte[] engineState) {
-            times.add(new double[] {time});
-            states.add(engineState);
-        }
-    }
-
     private static Sampler collect(List<double[]> into) {
         return (t, state, virial) -> {
             double[] all = new double[2 + 4 * state.n];
@@ -126,12 +96,12 @@ class ClusterCheckpointTest {
                 .withSamples(every, collect(checkpointedSamples)).withCheckpoints(kept));
         assertSameBits("with checkpoints", checkpointed, straight);
         assertSameSamples("with checkpoints", checkpointedSamples, straightSamples);
-        assertThat(kept.states).as("two periodic checkpoints and the end's").hasSizeGreaterThanOrEqualTo(3);
+        assertThat(kept.saved).as("two periodic checkpoints and the end's").hasSizeGreaterThanOrEqualTo(3);
 
         List<double[]> resumedSamples = new ArrayList<>();
         RunResult resumed = new ClusterEngine().resume(SCENE, twoNodes(until).withSamples(every, collect(resumedSamples)),
-                kept.states.get(0));
-        assertSameBits("resumed from t = " + kept.times.get(0)[0], resumed, straight);
+                kept.saved.get(0).state());
+        assertSameBits("resumed from t = " + kept.saved.get(0).time(), resumed, straight);
         assertThat(resumedSamples).as("samples after the checkpoint").isNotEmpty();
         assertSameSamples("resumed", resumedSamples,
                 straightSamples.subList(straightSamples.size() - resumedSamples.size(), straightSamples.size()));
@@ -163,9 +133,9 @@ class ClusterCheckpointTest {
         Kept kept = new Kept(Double.POSITIVE_INFINITY, 20);
         assertThatThrownBy(() -> new ClusterEngine().run(scene, twoNodes(scene.until())
                 .withSamples(EVERY, collect(new ArrayList<>())).withCheckpoints(kept))).isInstanceOf(RunStopped.class);
-        assertThat(kept.states).hasSize(1);
+        assertThat(kept.saved).hasSize(1);
         assertThat(ProcessHandle.current().descendants().filter(ProcessHandle::isAlive)).as("workers after a stop").isEmpty();
-        byte[] state = kept.states.getFirst();
+        byte[] state = kept.saved.getFirst().state();
         List<double[]> resumedSamples = new ArrayList<>();
         assertSameBits("resumed after a stop", new ClusterEngine().resume(scene, twoNodes(scene.until())
                 .withSamples(EVERY, collect(resumedSamples)), state), straight);

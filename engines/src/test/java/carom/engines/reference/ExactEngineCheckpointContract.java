@@ -39,17 +39,17 @@ public abstract class ExactEngineCheckpointContract {
     }
 
     /** A saved checkpoint. */
-    protected record Saved(double time, byte[] state) {
+    public record Saved(double time, byte[] state) {
     }
 
     /** Keeps every checkpoint in memory; asks to stop once {@code stopAfterPolls} polls have come. */
-    protected static final class Kept implements Checkpoints {
-        final List<Saved> saved = new ArrayList<>();
+    public static final class Kept implements Checkpoints {
+        public final List<Saved> saved = new ArrayList<>();
         private final double every;
         private final long stopAfterPolls;
         private long polls;
 
-        Kept(double every, long stopAfterPolls) {
+        public Kept(double every, long stopAfterPolls) {
             this.every = every;
             this.stopAfterPolls = stopAfterPolls;
         }
