@@ -10,7 +10,6 @@ import carom.engines.cluster.Protocol.SavedState;
 import carom.engines.slabs.StateBatch;
 import java.io.ByteArrayOutputStream;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
 
@@ -105,11 +104,10 @@ final class ClusterCheckpoint {
         void restoreNodes(ClusterRun run) {
             for (int d = 0; d < nodeStates.length; d++) {
                 byte[] state = nodeStates[d];
-                int parts = Math.max(1, (state.length + NodeActor.STATE_PART - 1) / NodeActor.STATE_PART);
+                int parts = NodeActor.stateParts(state);
                 for (int part = 0; part < parts; part++) {
                     int p = part;
-                    byte[] bytes = Arrays.copyOfRange(state, part * NodeActor.STATE_PART,
-                            Math.min(state.length, (part + 1) * NodeActor.STATE_PART));
+                    byte[] bytes = NodeActor.statePart(state, part);
                     run.await(run.ask(d, "restore", rt -> new RestoreState(p, parts, bytes, rt)), d, "restore");
                 }
             }

@@ -53,6 +53,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.function.Function;
 import java.util.function.IntFunction;
+import java.util.function.ObjIntConsumer;
 
 /**
  * One run of the cluster engine, on the coordinator: the slabs' protocol ({@code SlabsRun}'s windows,
@@ -276,13 +277,23 @@ final class ClusterRun {
 
     /** Every node's final states, in parts of at most {@link #CHUNK} discs per message, and its counters. */
     private List<Reply> finish() {
-        int parts = parts();
         List<Reply> all = new ArrayList<>();
+        askInParts("finish", Finish::new, (r, part) -> all.add(r));
+        return all;
+    }
+
+    /**
+     * A pass over every disc, in {@link #parts()} messages to each node (at most {@link #CHUNK} discs
+     * each), part by part: every node's reply to each part goes to {@code take} with the part's index.
+     */
+    private void askInParts(String type, Protocol.PartCommand make, ObjIntConsumer<Reply> take) {
+        int parts = parts();
         for (int part = 0; part < parts; part++) {
             int p = part;
-            all.addAll(List.of(askAll("finish", d -> rt -> new Finish(p, parts, rt))));
+            for (Reply r : askAll(type, d -> rt -> make.make(p, parts, rt))) {
+                take.accept(r, p);
+            }
         }
-        return all;
     }
 
     /** First predictions on every slab, the edge records into the mirror, the cross events predicted. */
@@ -302,25 +313,21 @@ final class ClusterRun {
      * in parts of at most {@link #CHUNK} states per message, and the counts so far.
      */
     private void takeCheckpoint() {
-        int parts = parts();
         List<StateBatch> states = new ArrayList<>();
         long[] slabCounters = counterBase.clone();
         double[] slabVirial = virialBase.clone();
-        for (int part = 0; part < parts; part++) {
-            int p = part;
-            for (Reply r : askAll("snapshot", d -> rt -> new Protocol.Snapshot(p, parts, rt))) {
-                Protocol.SnapshotPart sp = (Protocol.SnapshotPart) r;
-                states.add(sp.states());
-                if (part == 0) {
-                    for (int k = 0; k < slabCounters.length; k++) {
-                        slabCounters[k] += sp.counters()[k];
-                    }
-                    for (int b = 0; b < slabVirial.length; b++) {
-                        slabVirial[b] += sp.virial()[b];
-                    }
+        askInParts("snapshot", Protocol.Snapshot::new, (r, part) -> {
+            Protocol.SnapshotPart sp = (Protocol.SnapshotPart) r;
+            states.add(sp.states());
+            if (part == 0) {
+                for (int k = 0; k < slabCounters.length; k++) {
+                    slabCounters[k] += sp.counters()[k];
+                }
+                for (int b = 0; b < slabVirial.length; b++) {
+                    slabVirial[b] += sp.virial()[b];
                 }
             }
-        }
+        });
         checkpoint = new Checkpoint(mirror.epoch(), states, slabCounters, slabVirial, mirror.virial.blockSums(),
                 mirror.crossPairCollisions, crossDomainEvents, migrations);
     }
@@ -492,22 +499,18 @@ final class ClusterRun {
     private void sample() {
         double local = samples.next() - mirror.epoch();
         Discs state = samples.state();
-        double virialSum = mirror.virial.total();
+        double[] virialSum = {mirror.virial.total()};
         for (double b : virialBase) {
-            virialSum += b;
+            virialSum[0] += b;
         }
-        int parts = parts();
-        for (int part = 0; part < parts; part++) {
-            int p = part;
-            for (Reply r : askAll("sample", d -> rt -> new SampleAt(local, p, parts, rt))) {
-                Sampled s = (Sampled) r;
-                s.states().copyXyvInto(state, local);
-                if (p == 0) {
-                    virialSum += s.virial();
-                }
+        askInParts("sample", (part, parts, rt) -> new SampleAt(local, part, parts, rt), (r, part) -> {
+            Sampled s = (Sampled) r;
+            s.states().copyXyvInto(state, local);
+            if (part == 0) {
+                virialSum[0] += s.virial();
             }
-        }
-        samples.emit(virialSum);
+        });
+        samples.emit(virialSum[0]);
         sampleLocal = samples.next() - mirror.epoch();
     }
 

@@ -207,14 +207,24 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
         if (part == 0) {
             saving = slab.save();
         }
-        int parts = Math.max(1, (saving.length + STATE_PART - 1) / STATE_PART);
-        byte[] bytes = java.util.Arrays.copyOfRange(saving, Math.min(saving.length, part * STATE_PART),
-                Math.min(saving.length, (part + 1) * STATE_PART));
+        int parts = stateParts(saving);
+        byte[] bytes = statePart(saving, part);
         long[] counters = part == 0 ? slab.counters() : new long[0];
         if (part == parts - 1) {
             saving = null;
         }
         return new SavedState(domain(), parts, bytes, counters);
+    }
+
+    /** Messages a node state of {@code state.length} bytes travels in, each of at most {@link #STATE_PART} bytes. */
+    static int stateParts(byte[] state) {
+        return Math.max(1, (state.length + STATE_PART - 1) / STATE_PART);
+    }
+
+    /** Part {@code part} of a node state ({@link #stateParts}). */
+    static byte[] statePart(byte[] state, int part) {
+        return java.util.Arrays.copyOfRange(state, Math.min(state.length, part * STATE_PART),
+                Math.min(state.length, (part + 1) * STATE_PART));
     }
 
     /** A part of a saved state; with the last, the slab (built from the scene) takes the whole state up. */

@@ -51,6 +51,12 @@ public final class Protocol {
     public record RecoverChunk(StateBatch states) implements NodeCommand {
     }
 
+    /** A command for part {@code part} of {@code parts} of a pass over every disc ({@link Snapshot}, {@link SampleAt}, {@link Finish}). */
+    @FunctionalInterface
+    public interface PartCommand {
+        NodeCommand make(int part, int parts, ActorRef<Reply> replyTo);
+    }
+
     /** A checkpoint's part {@code part} of {@code parts}: the slab's discs with internal ids in that share. */
     public record Snapshot(int part, int parts, ActorRef<Reply> replyTo) implements NodeCommand {
     }

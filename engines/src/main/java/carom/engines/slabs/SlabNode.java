@@ -31,10 +31,8 @@ public final class SlabNode {
     /** Slot 0: a state on its way in or out. */
     private final SavedStates scratch;
     private final int doublesPer;
-    /** Every disc at a sample's time, by scene id (this slab's filled in); made at the first sample. */
-    private Discs sample;
-    /** Where {@link #finalStates} computes final states, by scene id (made at the first call). */
-    private Discs finals;
+    /** Where {@link #finalStates} and {@link #statesAt} compute states, by scene id (made at the first call). */
+    private Discs scratchDiscs;
 
     public SlabNode(Scene scene, double cellFactor, int domains, int id, double until) {
         this.table = new DiscTable(scene, scene.newDiscs(), cellFactor);
@@ -218,27 +216,7 @@ public final class SlabNode {
      * {@code ids}, then x, y, vx, vy per disc in {@code doubles}.
      */
     public StateBatch finalStates(int from, int to) {
-        if (finals == null) {
-            finals = new Discs(table.n);
-        }
-        Discs out = finals;
-        StateBatch.Builder b = new StateBatch.Builder(4, 0, (to - from) / columns.domains + 1);
-        for (int k = from; k < to; k++) {
-            if (columns.ownerOfDisc(k) == domain.id) {
-                domain.motion.finalRange(out, k, k + 1, clock.untilLocal, clock.until);
-                addXyv(b, table.sceneId(k), out);
-            }
-        }
-        return b.build();
-    }
-
-    /** Disc o of {@code from} (scene id) into the batch: its id, then x, y, vx, vy. */
-    private static void addXyv(StateBatch.Builder b, int o, Discs from) {
-        int q = b.add(o, 0, 0);
-        b.doubles()[4 * q] = from.x[o];
-        b.doubles()[4 * q + 1] = from.y[o];
-        b.doubles()[4 * q + 2] = from.vx[o];
-        b.doubles()[4 * q + 3] = from.vy[o];
+        return xyvOf(from, to, (out, k) -> domain.motion.finalRange(out, k, k + 1, clock.untilLocal, clock.until));
     }
 
     /**
@@ -246,14 +224,30 @@ public final class SlabNode {
      * windows), without moving any record: scene ids, then x, y, vx, vy per disc as {@link #finalStates}.
      */
     public StateBatch statesAt(double local, int from, int to) {
-        if (sample == null) {
-            sample = new Discs(table.n);
+        return xyvOf(from, to, (out, k) -> domain.motion.stateAt(out, k, k + 1, local));
+    }
+
+    /** How the state of disc k (internal id) is written into a scratch {@link Discs} at its scene id. */
+    @FunctionalInterface
+    private interface StateOf {
+        void write(Discs out, int k);
+    }
+
+    /** This slab's discs with internal ids in [from, to), each as {@code state} writes it: scene ids, then x, y, vx, vy. */
+    private StateBatch xyvOf(int from, int to, StateOf state) {
+        if (scratchDiscs == null) {
+            scratchDiscs = new Discs(table.n);
         }
         StateBatch.Builder b = new StateBatch.Builder(4, 0, (to - from) / columns.domains + 1);
         for (int k = from; k < to; k++) {
             if (columns.ownerOfDisc(k) == domain.id) {
-                domain.motion.stateAt(sample, k, k + 1, local);
-                addXyv(b, table.sceneId(k), sample);
+                state.write(scratchDiscs, k);
+                int o = table.sceneId(k);
+                int q = b.add(o, 0, 0);
+                b.doubles()[4 * q] = scratchDiscs.x[o];
+                b.doubles()[4 * q + 1] = scratchDiscs.y[o];
+                b.doubles()[4 * q + 2] = scratchDiscs.vx[o];
+                b.doubles()[4 * q + 3] = scratchDiscs.vy[o];
             }
         }
         return b.build();
