@@ -1,5 +1,6 @@
 package carom.lab.study.eos;
 
+import carom.lab.report.Stats;
 import java.util.List;
 
 /**
@@ -31,10 +32,7 @@ record BlockedError(double mean, double naiveError, double error, int binBlocks,
             throw new IllegalArgumentException("blocking needs at least two blocks, got " + n);
         }
         double[] level = blocks.stream().mapToDouble(Double::doubleValue).toArray();
-        double mean = 0;
-        for (double v : level) {
-            mean += v / n;
-        }
+        double mean = Stats.of(level).mean();
         double naive = naiveError(level);
         double error = naive;
         int bin = 1;
@@ -57,17 +55,9 @@ record BlockedError(double mean, double naiveError, double error, int binBlocks,
         return new BlockedError(mean, naive, error, bin, level.length, false);
     }
 
+    /** The standard error of the mean of {@code values} as if they were independent. */
     private static double naiveError(double[] values) {
-        int n = values.length;
-        double mean = 0;
-        for (double v : values) {
-            mean += v / n;
-        }
-        double ss = 0;
-        for (double v : values) {
-            ss += (v - mean) * (v - mean);
-        }
-        return Math.sqrt(ss / (n - 1) / n);
+        return Stats.of(values).sd() / Math.sqrt(values.length);
     }
 
     /**

@@ -1,5 +1,6 @@
 package carom.lab.study.eos;
 
+import carom.lab.report.Stats;
 import java.util.List;
 
 /**
@@ -32,14 +33,8 @@ record Equilibration(int window, double sigmas) {
     /** Mean and standard error of the mean of some blocks. */
     record Window(double mean, double standardError) {
         static Window of(List<Double> values) {
-            int n = values.size();
-            double mean = values.stream().mapToDouble(Double::doubleValue).sum() / n;
-            double ss = 0;
-            for (double v : values) {
-                ss += (v - mean) * (v - mean);
-            }
-            double sd = n > 1 ? Math.sqrt(ss / (n - 1)) : 0;
-            return new Window(mean, sd / Math.sqrt(n));
+            Stats s = Stats.of(values);
+            return new Window(s.mean(), s.count() > 1 ? s.sd() / Math.sqrt(s.count()) : 0);
         }
     }
 }
