@@ -19,8 +19,7 @@ import java.util.stream.Stream;
  *
  * <p>One process must train every engine a user is likely to start cold, since a method that the
  * training never ran gets no profile, and an engine whose loop was left out would then warm up later
- * than the others (trained on {@code fast} alone, {@code slabs} ran thesis-100k 1.4x slower than
- * {@code fast} from the cache, against 1.1x without a cache). So it runs {@code simulate} on the
+ * than the others (lab note {@code slabs-short-runs} measures it). So it runs {@code simulate} on the
  * given scene with the default engine and with {@code slabs} on two threads, writing the usual outputs
  * into a scratch folder it deletes.
  *
@@ -50,8 +49,7 @@ public final class StartupTraining {
                         "--threads", "2", "--until", UNTIL, "--out", scratch.resolve(engine + ".csv").toString(),
                         "--summary", scratch.resolve(engine + ".json").toString()));
                 if (engine.equals("slabs")) {
-                    // Split early, so that the windows are trained too, not only the merged loop (trained on
-                    // its merged loop alone, slabs ran the thesis workload at N = 1e6 1.24x fast's time, 0.98x so).
+                    // Split early, so that the windows are trained too, not only the merged loop.
                     args.addAll(List.of("--option", "mergeEvents=4096"));
                 }
                 ok &= Main.run(quiet, quiet, args.toArray(String[]::new)) == 0;

@@ -47,11 +47,10 @@ final class MergePolicy {
     /**
      * Events of the merged phase a run starts with (unless {@code mergeEvents} is given). A split
      * pays only once the JIT has compiled the event loop: until then its compiler threads want a
-     * core, and on two cores a second slab thread takes it (thesis-100k from a fresh JVM, 2 threads,
-     * 10 paired rounds: split after 4,096 events 0.258 s, merged throughout 0.195 s, {@code fast}
-     * 0.171 s; warm, split 0.081 s against {@code fast}'s 0.106 s). About a quarter of a million
-     * events is a quarter second of one core, long enough for the loop's compilation; a run that
-     * short gains nothing from a second thread.
+     * core, and on two cores a second slab thread takes it, so a short run from a fresh JVM split
+     * early is slower than merged throughout, though split is faster once warm (lab note
+     * {@code slabs-short-runs}). About a quarter of a million events is a quarter second of one
+     * core, long enough for the loop's compilation; a run that short gains nothing from a second thread.
      */
     static final long START_BUDGET = 1 << 18;
     /** Events of a merged phase that goes on after a phase that found windows would not pay. */
