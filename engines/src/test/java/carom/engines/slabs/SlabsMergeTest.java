@@ -54,6 +54,25 @@ class SlabsMergeTest {
     }
 
     @Test
+    void aRunStartsMergedForTheStartBudgetAndOnlyThenMaySplit() {
+        // From a fresh JVM a split before the loop is compiled costs more than it saves (lab note
+        // slabs-short-runs): a run shorter than the start budget never starts a thread, a longer one
+        // splits once the budget is spent, where windows pay (a large gas).
+        Scene shortRun = example("thesis-100k.json");
+        RunResult merged = new SlabsEngine().run(shortRun, RunOptions.until(shortRun.until()).withThreads(2));
+        assertThat(merged.events()).isLessThan(MergePolicy.START_BUDGET);
+        assertThat(merged.counters().get("windows")).as("windows").isZero();
+        assertThat(merged.counters().get("mergedEvents")).isEqualTo(merged.events());
+
+        Scene longRun = example("thesis-100k.json").withUntil(2.0);
+        RunResult split = new SlabsEngine().run(longRun, RunOptions.until(longRun.until()).withThreads(2));
+        assertThat(split.events()).isGreaterThan(MergePolicy.START_BUDGET);
+        assertThat(split.counters().get("mergedEvents")).as("merged at the start")
+                .isGreaterThanOrEqualTo(MergePolicy.START_BUDGET).isLessThan(split.events());
+        assertThat(split.counters().get("windows")).as("windows after the start").isPositive();
+    }
+
+    @Test
     void everyEventIsASlabsASerialPhasesOrAMergedPhases() {
         Scene scene = example("settling-stack.json");
         RunResult r = FixedDomains.alternating(2, 500).run(scene, RunOptions.until(2));
