@@ -3,7 +3,7 @@
 #   N         discs (packing fraction 0.5, periodic: GasBench's gas, see make_scene.py)
 #   PER_DISC  pair collisions per disc of each measured run (after 2 per disc of equilibration)
 #   CONFIG    fast | slabs2 | clusterK (K nodes, default checkpoints) | clusterK-nock (no checkpoint:
-#             checkpointWindows=2^40)
+#             checkpointWindows=2^40) | clusterKxT-nock (K nodes of T slabs each, --threads T, no checkpoint)
 # Writes raw/N-CONFIG.json (SUMMARY.json), .err (stderr), .proc.json (CPU and peak memory per JVM,
 # procwatch.py) and a line per run in raw/runs.log with `uptime` before and after. Large scenes go to
 # $SCRATCH (default /tmp/carom-cluster-costs), not into the repository.
@@ -36,6 +36,8 @@ for config in "$@"; do
   case $config in
     fast) args=(--engine fast) ;;
     slabs2) args=(--engine slabs --threads 2) ;;
+    cluster*x*-nock) kt=${config#cluster}; kt=${kt%-nock}
+        args=(--engine cluster --nodes "${kt%x*}" --threads "${kt#*x}" --option checkpointWindows=1099511627776) ;;
     cluster*-nock) k=${config#cluster}; k=${k%-nock}; args=(--engine cluster --nodes "$k" --option checkpointWindows=1099511627776) ;;
     cluster*) args=(--engine cluster --nodes "${config#cluster}") ;;
     *) echo "unknown config $config" >&2; exit 2 ;;

@@ -5,7 +5,7 @@ import carom.core.engine.Engine;
 import carom.engines.cluster.ClusterEngine;
 import java.util.Map;
 
-/** {@code simulate --nodes K} and {@code --seed-nodes}: the cluster engine's options, refused for any other engine. */
+/** {@code simulate --nodes K}, {@code --seed-nodes} and {@code --threads} (slabs per JVM): the cluster engine's options, the first two refused for any other engine. */
 final class ClusterOptions {
     static final int MAX_NODES = 64;
 
@@ -36,5 +36,12 @@ final class ClusterOptions {
             throw new BadInputException("--nodes: must be from 1 to " + MAX_NODES + ", got " + nodes);
         }
         tunables.put("nodes", Integer.toString(nodes));
+    }
+
+    /** {@code --threads} of a cluster run, the slabs on each JVM, checked before anything starts. */
+    static void checkThreads(Engine engine, int threads) {
+        if (engine instanceof ClusterEngine) {
+            ClusterEngine.checkSlabsPerJvm(threads);
+        }
     }
 }

@@ -29,6 +29,11 @@ public final class EnginesCommand implements Callable<Integer> {
      */
     public static final int MAX_THREADS = 4096;
 
+    /** The threads a run of {@code engine} gets when the user names none: the engine's choice of the processors, within the bound. */
+    public static int defaultThreads(Engine engine) {
+        return engine.defaultThreads(Math.min(Runtime.getRuntime().availableProcessors(), MAX_THREADS));
+    }
+
     @Spec
     CommandSpec spec;
 

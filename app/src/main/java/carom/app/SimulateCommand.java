@@ -67,8 +67,8 @@ final class SimulateCommand implements Callable<Integer> {
 
     @Option(names = "--threads", paramLabel = "K",
             description = "Worker threads for parallel engines, 1 to " + EnginesCommand.MAX_THREADS
-                    + "; default: the available processors. Serial engines use one whatever this says, "
-                    + "and the summary says so.")
+                    + "; default: the available processors (engine cluster: 1). Serial engines use one whatever this "
+                    + "says, and the summary says so; engine cluster runs this many slabs on each JVM.")
     Integer threads;
 
     @Option(names = "--nodes", paramLabel = "K",
@@ -138,10 +138,11 @@ final class SimulateCommand implements Callable<Integer> {
     public Integer call() {
         // Options first: they are cheap to check, and a scene may take long to read.
         Double checkedUntil = until == null ? null : checkedUntil(until);
-        int workers = threads == null ? Math.min(Runtime.getRuntime().availableProcessors(), EnginesCommand.MAX_THREADS)
-                : checkedThreads(threads);
+        Integer named = threads == null ? null : checkedThreads(threads);
         Engine engine = ClusterOptions.withSeeds(new SceneFile(sceneFile).about(() -> EnginesCommand.engineNamed(engineName)),
                 seedNodes);
+        int workers = named != null ? named : EnginesCommand.defaultThreads(engine);
+        ClusterOptions.checkThreads(engine, workers);
         ClusterOptions.putNodes(engine, nodes, tunables);
         checkTunables(engine);
         checkSampling(engine);

@@ -20,8 +20,13 @@ class ClusterCommandsTest {
         Path scene = Scenes.write(dir, "periodic.json", Scenes.periodic());
         Path cluster = dir.resolve("cluster.csv");
         Path fast = dir.resolve("fast.csv");
-        Cli r = Cli.run("simulate", scene.toString(), "--engine", "cluster", "--nodes", "2", "--out", cluster.toString());
+        Path summary = dir.resolve("summary.json");
+        Cli r = Cli.run("simulate", scene.toString(), "--engine", "cluster", "--nodes", "2", "--out", cluster.toString(),
+                "--summary", summary.toString());
         assertThat(r.status()).as(r.err()).isZero();
+        var json = new com.fasterxml.jackson.databind.ObjectMapper().readTree(summary.toFile());
+        assertThat(json.get("counters").get("domains").asInt()).as("one slab per JVM without --threads").isEqualTo(2);
+        assertThat(json.get("threads").asInt()).as("threads: the slabs in all").isEqualTo(2);
         assertThat(Cli.run("simulate", scene.toString(), "--engine", "fast", "--out", fast.toString()).status()).isZero();
         java.util.List<String> a = Files.readAllLines(cluster);
         java.util.List<String> b = Files.readAllLines(fast);
@@ -39,6 +44,20 @@ class ClusterCommandsTest {
     }
 
     @Test
+    void threadsAreTheSlabsOnEachJvm() throws Exception {
+        Path scene = Scenes.write(dir, "periodic.json", Scenes.periodic());
+        Path summary = dir.resolve("summary.json");
+        Cli r = Cli.run("simulate", scene.toString(), "--engine", "cluster", "--nodes", "2", "--threads", "2",
+                "--summary", summary.toString());
+        assertThat(r.status()).as(r.err()).isZero();
+        var json = new com.fasterxml.jackson.databind.ObjectMapper().readTree(summary.toFile());
+        assertThat(json.get("counters").get("nodes").asInt()).isEqualTo(2);
+        assertThat(json.get("counters").get("domains").asInt()).as("slabs: 2 JVMs of 2").isEqualTo(4);
+        assertThat(json.get("threads").asInt()).as("threads: the slabs in all").isEqualTo(4);
+        assertThat(ProcessHandle.current().descendants().filter(ProcessHandle::isAlive)).as("workers left").isEmpty();
+    }
+
+    @Test
     void clusterOptionsAreRefusedWhereTheyDoNotApply() {
         Path scene = Scenes.write(dir, "head-on.json", Scenes.headOn());
         Path out = dir.resolve("out.csv");
@@ -48,6 +67,8 @@ class ClusterCommandsTest {
                 "error: --nodes: must be from 1 to 64, got 65");
         assertRefused(Cli.run("simulate", scene.toString(), "--engine", "cluster", "--seed-nodes", "here"),
                 "error: --seed-nodes: expected HOST:PORT, got 'here'");
+        assertRefused(Cli.run("simulate", scene.toString(), "--engine", "cluster", "--threads", "65", "--out", out.toString()),
+                "error: --threads: engine cluster runs 1 to 64 slabs on each JVM, got 65");
         assertRefused(Cli.run("node", "--join", "127.0.0.1"), "error: --join: expected HOST:PORT, got '127.0.0.1'");
         assertThat(out).doesNotExist();
     }

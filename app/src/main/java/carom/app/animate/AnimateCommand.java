@@ -152,7 +152,7 @@ public final class AnimateCommand implements Callable<Integer> {
         });
         double dt = every != null ? every : scene.until() / DEFAULT_STEPS;
         long frames = frameCount(scene.until(), dt);
-        int threads = Math.min(Runtime.getRuntime().availableProcessors(), EnginesCommand.MAX_THREADS);
+        int threads = EnginesCommand.defaultThreads(engine);
         double topSpeed = 0;
         if (mode == ColourMode.SPEED) {
             double[] top = {0};

@@ -124,8 +124,7 @@ public final class RenderCommand implements Callable<Integer> {
         if (t == 0) {
             return scene.newDiscs();
         }
-        // The processors, as simulate's default, within its bound.
-        int threads = Math.min(Runtime.getRuntime().availableProcessors(), EnginesCommand.MAX_THREADS);
+        int threads = EnginesCommand.defaultThreads(engine);
         return new SceneFile(sceneFile).about(() -> engine.run(scene.withUntil(t), RunOptions.until(t).withThreads(threads))).finalState();
     }
 

@@ -52,6 +52,14 @@ public interface Engine {
         return false;
     }
 
+    /**
+     * The threads a run gets when the user names none, given the machine's {@code processors}: all of
+     * them, unless the engine knows better.
+     */
+    default int defaultThreads(int processors) {
+        return processors;
+    }
+
     /** The threads this engine runs on when given {@code requested} (single-threaded engines: 1). */
     default int threadsFor(int requested) {
         return requested;

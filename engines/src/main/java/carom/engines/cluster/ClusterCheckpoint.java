@@ -24,10 +24,11 @@ import java.util.Map;
  * the scene for K nodes.
  *
  * <p>A state is resumed by a run of the same scene and settings on as many JVMs as the saved run had
- * when it was taken (fewer than {@code --nodes} after a recovery); it starts them itself on 127.0.0.1.
+ * when it was taken (fewer than {@code --nodes} after a recovery), each hosting as many slabs
+ * ({@code --threads}); it starts them itself on 127.0.0.1.
  */
 final class ClusterCheckpoint {
-    private static final String TAG = "cluster/1";
+    private static final String TAG = "cluster/2";
 
     private final ClusterRun run;
     /** When to save: the schedule every engine that saves at pass starts shares. */
@@ -71,7 +72,8 @@ final class ClusterCheckpoint {
             }
             nodeStates[d] = whole.toByteArray();
         }
-        StateBytes.Out out = new StateBytes.Out(TAG).putInt(run.nodes.size()).putInt(run.domains)
+        StateBytes.Out out = new StateBytes.Out(TAG).putInt(run.nodes.size() / run.slabsPerJvm).putInt(run.slabsPerJvm)
+                .putInt(run.domains)
                 .putDouble(run.until).putDouble(now).putDouble(run.resyncAt).putLong(run.samples.index())
                 .putLongs(new long[] {run.windows, run.commits, run.rollbacks, run.crossDomainEvents, run.migrations,
                     run.resyncs, run.recoveries, run.messageCount, run.bytes, run.windowBytes, run.crossEventBytes})
@@ -98,6 +100,17 @@ final class ClusterCheckpoint {
         return nodes;
     }
 
+    /** The slabs on each JVM of the run that saved {@code saved} ({@code --threads}): a resumed run hosts as many. */
+    static int slabsPerJvmOf(byte[] saved) {
+        StateBytes.In in = new StateBytes.In(saved, TAG);
+        in.getInt();
+        int perJvm = in.getInt();
+        if (perJvm < 1 || perJvm > ClusterLife.MAX_SLABS_PER_NODE) {
+            throw new IllegalArgumentException("engine state: " + perJvm + " slabs per JVM");
+        }
+        return perJvm;
+    }
+
     /** A saved state read into the coordinator: where its window starts, and what goes to each node. */
     record Resumed(double now, byte[][] nodeStates) {
         /** Every node takes up its state (it holds the scene already), in parts. */
@@ -121,6 +134,7 @@ final class ClusterCheckpoint {
      */
     static Resumed read(ClusterRun run, byte[] saved) {
         StateBytes.In in = new StateBytes.In(saved, TAG);
+        in.getInt();
         in.getInt();
         int domains = in.getInt();
         if (domains != run.domains) {

@@ -13,8 +13,9 @@ import java.util.List;
 /**
  * An exact engine over an Akka Cluster: the {@code slabs} protocol (vertical slabs of cell columns,
  * optimistic windows, verification against logged trajectories, rollback to the first cross-slab
- * contact, serial cross-slab events) with each slab in a JVM of its own that shares nothing with the
- * others; the JVM the user started coordinates, by messages ({@link ClusterRun}). {@code --nodes K}
+ * contact, serial cross-slab events) with each slab in a node actor that shares nothing with the
+ * others: one per JVM, or {@code --threads K} per JVM (each on a thread of its own while it computes);
+ * the JVM the user started coordinates, by messages ({@link ClusterRun}). {@code --nodes K}
  * starts K-1 worker JVMs on 127.0.0.1 and stops them when the run ends, whatever happens
  * ({@link ClusterLife}).
  *
@@ -86,7 +87,7 @@ public final class ClusterEngine implements Engine {
 
     @Override
     public String description() {
-        return "the slabs' exact protocol over an Akka Cluster: one slab per JVM (--nodes K starts K-1 workers on 127.0.0.1), windows driven and verified by the coordinator through messages";
+        return "the slabs' exact protocol over an Akka Cluster: --threads slabs per JVM, default 1 (--nodes K starts K-1 workers on 127.0.0.1), windows driven and verified by the coordinator through messages";
     }
 
     @Override
@@ -95,8 +96,9 @@ public final class ClusterEngine implements Engine {
                 ClusterRun.CHECKPOINT_WINDOWS);
     }
 
+    /** One slab per JVM: the JVMs of a {@code --nodes} run share this machine's cores already. */
     @Override
-    public int threadsFor(int requested) {
+    public int defaultThreads(int processors) {
         return 1;
     }
 
@@ -124,7 +126,16 @@ public final class ClusterEngine implements Engine {
     @Override
     public RunResult run(Scene scene, RunOptions options) {
         checkSupports(scene);
+        checkSlabsPerJvm(options.threads());
         return new ClusterRun(scene, options, seeds).run();
+    }
+
+    /** {@code --threads}: the slabs each JVM hosts, 1 to {@link ClusterLife#MAX_SLABS_PER_NODE}. */
+    public static void checkSlabsPerJvm(int threads) {
+        if (threads < 1 || threads > ClusterLife.MAX_SLABS_PER_NODE) {
+            throw new BadInputException("--threads: engine cluster runs 1 to " + ClusterLife.MAX_SLABS_PER_NODE
+                    + " slabs on each JVM, got " + threads);
+        }
     }
 
     @Override

@@ -36,7 +36,10 @@ final class ClusterLife implements AutoCloseable {
     private final List<Path> workerLogs;
     private final List<Integer> workerPorts = new ArrayList<>();
     private final Thread reaper;
+    /** Every JVM's guardian node, this JVM's first. */
     private List<ActorRef<NodeCommand>> nodes = List.of();
+    /** The nodes a run's slabs go to: {@link #hostSlabs} of them on every JVM, JVM by JVM. */
+    private List<ActorRef<NodeCommand>> slabNodes = List.of();
 
     private ClusterLife(ActorSystem<NodeCommand> system, List<Process> workers, List<Path> workerLogs) {
         this.system = system;
@@ -45,6 +48,9 @@ final class ClusterLife implements AutoCloseable {
         this.reaper = new Thread(this::destroyWorkers, "carom-cluster-reaper");
         Runtime.getRuntime().addShutdownHook(reaper);
     }
+
+    /** The most slabs one JVM hosts ({@code --threads} of a cluster run). */
+    static final int MAX_SLABS_PER_NODE = 64;
 
     /** Akka's configuration of a node at host:port joining {@code seeds} ("host:port" each). */
     static Config config(String host, int port, List<String> seeds) {
@@ -64,6 +70,9 @@ final class ClusterLife implements AutoCloseable {
                   coordinated-shutdown.exit-jvm = off
                   actor {
                     provider = cluster
+                    # A node computes a window on the thread it runs on: enough threads for the most
+                    # slabs a JVM may host (--threads), however few cores the machine has.
+                    default-dispatcher.fork-join-executor { parallelism-min = %d, parallelism-max = %d }
                     serialization-bindings { "carom.engines.cluster.ClusterMessage" = jackson-cbor }
                   }
                   remote.artery {
@@ -78,7 +87,7 @@ final class ClusterLife implements AutoCloseable {
                     log-info = off
                   }
                 }
-                """.formatted(host, port, s)).withFallback(ConfigFactory.defaultReference()).resolve();
+                """.formatted(MAX_SLABS_PER_NODE, MAX_SLABS_PER_NODE, host, port, s)).withFallback(ConfigFactory.defaultReference()).resolve();
     }
 
     /** A port free right now on 127.0.0.1. */
@@ -158,7 +167,7 @@ final class ClusterLife implements AutoCloseable {
         for (int w = 0; w < workers.size(); w++) {
             Process p = workers.get(w);
             int port = w < workerPorts.size() ? workerPorts.get(w) : -1;
-            if (!p.isAlive() && nodes.stream().anyMatch(r -> r.path().address().getPort().map(q -> q == port).orElse(false))) {
+            if (!p.isAlive() && nodes.stream().anyMatch(r -> onPort(r, port))) {
                 return "worker " + (w + 1) + " (pid " + p.pid() + ") exited with status " + p.exitValue();
             }
         }
@@ -182,19 +191,53 @@ final class ClusterLife implements AutoCloseable {
     }
 
     /**
+     * The nodes a run's slabs go to: {@code perJvm} on every JVM (its guardian and {@code perJvm - 1}
+     * node actors it spawns beside it, the previous run's stopped), JVM by JVM, this JVM's first.
+     */
+    List<ActorRef<NodeCommand>> hostSlabs(int perJvm, Duration timeout) {
+        List<ActorRef<NodeCommand>> all = new ArrayList<>();
+        for (ActorRef<NodeCommand> node : nodes) {
+            Protocol.Reply r;
+            try {
+                r = AskPattern.<NodeCommand, Protocol.Reply>ask(node, rt -> new Protocol.Host(perJvm, rt), timeout,
+                        system.scheduler()).toCompletableFuture().get(timeout.toMillis() + 1000, TimeUnit.MILLISECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new IllegalStateException("cluster: interrupted while the nodes got ready");
+            } catch (java.util.concurrent.ExecutionException | java.util.concurrent.TimeoutException e) {
+                throw new IllegalStateException("cluster: node at " + node.path().address() + " did not get ready: " + e);
+            }
+            if (!(r instanceof Protocol.Hosted hosted)) {
+                throw new IllegalStateException("cluster: node at " + node.path().address() + " could not host "
+                        + perJvm + " slabs: " + r);
+            }
+            all.addAll(hosted.nodes());
+        }
+        slabNodes = List.copyOf(all);
+        return slabNodes;
+    }
+
+    /**
      * Forgets the nodes of workers that are no longer running (their processes reaped); returns the
-     * nodes that remain, this JVM's first.
+     * slab nodes ({@link #hostSlabs}) that remain, this JVM's first.
      */
     List<ActorRef<NodeCommand>> dropDeadWorkers() {
         List<ActorRef<NodeCommand>> alive = new ArrayList<>(nodes);
+        List<ActorRef<NodeCommand>> aliveSlabNodes = new ArrayList<>(slabNodes);
         for (int w = 0; w < workers.size(); w++) {
             if (!workers.get(w).isAlive()) {
                 int port = workerPorts.get(w);
-                alive.removeIf(r -> r.path().address().getPort().map(p -> p == port).orElse(false));
+                alive.removeIf(r -> onPort(r, port));
+                aliveSlabNodes.removeIf(r -> onPort(r, port));
             }
         }
         nodes = List.copyOf(alive);
-        return nodes;
+        slabNodes = List.copyOf(aliveSlabNodes);
+        return slabNodes;
+    }
+
+    private static boolean onPort(ActorRef<?> node, int port) {
+        return node.path().address().getPort().map(p -> p == port).orElse(false);
     }
 
     /** Whether any worker this JVM started has died and is still counted among the nodes. */
@@ -202,7 +245,7 @@ final class ClusterLife implements AutoCloseable {
         for (int w = 0; w < workers.size(); w++) {
             int port = workerPorts.get(w);
             if (!workers.get(w).isAlive()
-                    && nodes.stream().anyMatch(r -> r.path().address().getPort().map(p -> p == port).orElse(false))) {
+                    && nodes.stream().anyMatch(r -> onPort(r, port))) {
                 return true;
             }
         }

@@ -94,7 +94,9 @@ final class ClusterRun {
     private ClusterLife life;
     private ActorSystem<NodeCommand> system;
     private Serialization serialization;
+    /** The slabs' nodes, slab d's at d ({@link ClusterLife#hostSlabs}), and how many each JVM hosts ({@code --threads}). */
     List<ActorRef<NodeCommand>> nodes;
+    int slabsPerJvm;
     SlabMirror mirror;
     int domains;
     // The counters, which a checkpoint file keeps (ClusterCheckpoint).
@@ -154,13 +156,14 @@ final class ClusterRun {
 
     /** The run from the start, or continued from {@code saved} ({@link ClusterCheckpoint#save}) if not null. */
     RunResult run(byte[] saved) {
-        // A resumed run has as many JVMs as the saved one had at its checkpoint.
+        // A resumed run has as many JVMs, and slabs on each, as the saved one had at its checkpoint.
         int count = saved == null ? (int) NODES.of(options) : ClusterCheckpoint.nodesOf(saved);
+        slabsPerJvm = saved == null ? options.threads() : ClusterCheckpoint.slabsPerJvmOf(saved);
         Duration join = Duration.ofMillis((long) (JOIN_SECONDS.of(options) * 1000));
         Discs initial = scene.newDiscs();
         double energyStart = Observables.kineticEnergy(initial);
         double[] momentumStart = Observables.momentum(initial);
-        mirror = new SlabMirror(scene, KernelTunables.CELL_FACTOR.of(options), count, until);
+        mirror = new SlabMirror(scene, KernelTunables.CELL_FACTOR.of(options), count * slabsPerJvm, until);
         domains = mirror.domains();
         // The first checkpoint is the scene itself, which every node holds: no message.
         checkpoint = Checkpoint.atStart(counterBase.length, virialBase.length);
@@ -171,7 +174,7 @@ final class ClusterRun {
             this.life = life;
             system = life.system();
             serialization = SerializationExtension.get(system.classicSystem());
-            nodes = life.nodes();
+            nodes = life.hostSlabs(slabsPerJvm, replyTimeout);
             long started = System.nanoTime();
             for (int d = 0; d < nodes.size(); d++) {
                 sendScene(d, initial);

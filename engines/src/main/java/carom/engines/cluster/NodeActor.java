@@ -16,6 +16,8 @@ import carom.engines.cluster.Protocol.Emigrate;
 import carom.engines.cluster.Protocol.Failed;
 import carom.engines.cluster.Protocol.Finish;
 import carom.engines.cluster.Protocol.Finished;
+import carom.engines.cluster.Protocol.Host;
+import carom.engines.cluster.Protocol.Hosted;
 import carom.engines.cluster.Protocol.Install;
 import carom.engines.cluster.Protocol.NodeCommand;
 import carom.engines.cluster.Protocol.Recover;
@@ -50,7 +52,10 @@ import java.util.function.Supplier;
  * A node of the cluster: the guardian actor of every JVM of a run (the coordinator's too), registered
  * with the receptionist under {@link #KEY}. It holds one slab ({@link SlabNode}) per run, built from
  * the scene the coordinator sends, and does what the coordinator's commands say; it shares nothing
- * with any other node.
+ * with any other node. With {@code --threads K} the guardian spawns K - 1 more node actors beside it
+ * ({@link Host}), unregistered, each holding a slab of its own: they share the JVM and its cores (the
+ * dispatcher runs each on a thread of its own while it works) but nothing else, and talk to the
+ * coordinator only, like any node.
  */
 final class NodeActor extends AbstractBehavior<NodeCommand> {
     static final ServiceKey<NodeCommand> KEY = ServiceKey.create(NodeCommand.class, "carom-node");
@@ -70,11 +75,20 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
     private byte[] saving;
     private java.io.ByteArrayOutputStream restoring;
 
+    /** Node actors this guardian spawned for the current run ({@link Host}). */
+    private final java.util.List<ActorRef<NodeCommand>> beside = new java.util.ArrayList<>();
+
+    /** The guardian of a JVM: the node the cluster finds. */
     static Behavior<NodeCommand> create() {
         return Behaviors.setup(ctx -> {
             ctx.getSystem().receptionist().tell(Receptionist.register(KEY, ctx.getSelf()));
             return new NodeActor(ctx);
         });
+    }
+
+    /** A further node of the guardian's JVM, known to the coordinator only through {@link Host}. */
+    private static Behavior<NodeCommand> besideGuardian() {
+        return Behaviors.setup(NodeActor::new);
     }
 
     private NodeActor(ActorContext<NodeCommand> ctx) {
@@ -84,6 +98,7 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
     @Override
     public Receive<NodeCommand> createReceive() {
         return newReceiveBuilder()
+                .onMessage(Host.class, m -> answer(m.replyTo(), () -> host(m.count())))
                 .onMessage(SceneStart.class, this::sceneStart)
                 .onMessage(SceneChunk.class, this::sceneChunk)
                 .onMessage(Recover.class, this::recover)
@@ -144,6 +159,21 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
         }
         replyTo.tell(reply);
         return this;
+    }
+
+    /** This node and {@code count - 1} fresh ones beside it, the previous run's stopped. */
+    private Reply host(int count) {
+        for (ActorRef<NodeCommand> old : beside) {
+            getContext().stop(old);
+        }
+        beside.clear();
+        java.util.List<ActorRef<NodeCommand>> all = new java.util.ArrayList<>(java.util.List.of(getContext().getSelf()));
+        for (int k = 1; k < count; k++) {
+            ActorRef<NodeCommand> node = getContext().spawnAnonymous(besideGuardian());
+            beside.add(node);
+            all.add(node);
+        }
+        return new Hosted(domain(), all);
     }
 
     private Behavior<NodeCommand> sceneStart(SceneStart m) {

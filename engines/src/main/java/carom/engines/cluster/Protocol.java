@@ -21,6 +21,17 @@ public final class Protocol {
     public sealed interface Reply extends ClusterMessage {
     }
 
+    /**
+     * A run begins on this JVM: host {@code count} slabs, this node and {@code count - 1} actors it
+     * spawns beside it (the previous run's are stopped), each a node of its own to the coordinator.
+     */
+    public record Host(int count, ActorRef<Reply> replyTo) implements NodeCommand {
+    }
+
+    /** The nodes a {@link Host} made ready on one JVM, the asked one first. */
+    public record Hosted(int domain, List<ActorRef<NodeCommand>> nodes) implements Reply {
+    }
+
     /** A species as the scene file gives it. */
     public record SpeciesSpec(String name, double radius, double mass, boolean fixed) {
     }

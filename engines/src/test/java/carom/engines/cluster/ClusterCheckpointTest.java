@@ -55,7 +55,8 @@ class ClusterCheckpointTest {
                 .as("processes left behind").isEmpty();
     }
 
-    private static Sampler collect(List<double[]> into) {
+    /** A sampler that copies every sample into {@code into}: time, virial sum, then x, y, vx, vy of each disc. */
+    static Sampler collect(List<double[]> into) {
         return (t, state, virial) -> {
             double[] all = new double[2 + 4 * state.n];
             all[0] = t;
@@ -115,7 +116,8 @@ class ClusterCheckpointTest {
         }
     }
 
-    private static void assertSameBits(String what, RunResult actual, RunResult expected) {
+    /** The same counts and the same final state, bit for bit. */
+    static void assertSameBits(String what, RunResult actual, RunResult expected) {
         assertThat(actual.pairCollisions()).as(what + ": pair collisions").isEqualTo(expected.pairCollisions());
         assertThat(actual.wallCollisions()).as(what + ": wall collisions").isEqualTo(expected.wallCollisions());
         assertThat(actual.events()).as(what + ": events").isEqualTo(expected.events());

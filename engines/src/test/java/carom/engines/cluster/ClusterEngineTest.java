@@ -2,6 +2,7 @@ package carom.engines.cluster;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
+import static org.assertj.core.api.Assertions.within;
 
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
@@ -9,9 +10,12 @@ import carom.core.scene.Effects;
 import carom.core.scene.Scene;
 import carom.engines.fast.FastEngine;
 import carom.engines.reference.ChainScenes;
+import carom.engines.reference.ExactEngineCheckpointContract;
+import carom.engines.reference.ExactEngineCheckpointContract.Kept;
 import carom.engines.reference.Invariants;
 import carom.engines.reference.RandomScenes;
 import carom.engines.serial.SerialEngine;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
@@ -23,11 +27,12 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
 /**
- * The cluster engine with real worker JVMs on 127.0.0.1 (2 and 3 nodes) against the serial reference
- * and {@code fast}, on short horizons (before chaos separates exact engines): a walled and a periodic
- * gas, a gas with gravity, restitution and the TC model, the six-disc chain across a slab edge, and a
- * dense scene at packing fraction 0.7 that rolls windows back. After every test, passed or failed,
- * no worker process may be left.
+ * The cluster engine with real worker JVMs on 127.0.0.1 (2 and 3 nodes, one or two slabs on each) against
+ * the serial reference and {@code fast}, on short horizons (before chaos separates exact engines): a walled
+ * and a periodic gas, a gas with gravity, restitution and the TC model, the six-disc chain across a slab
+ * edge, and a dense scene at packing fraction 0.7 that rolls windows back; a worker killed mid-run, with
+ * samples and checkpoint files being taken. After every test, passed or failed, no worker process may be
+ * left.
  */
 class ClusterEngineTest {
     private static final double SAME = 1e-8;
@@ -116,15 +121,41 @@ class ClusterEngineTest {
         assertThat(ProcessHandle.current().descendants().filter(ProcessHandle::isAlive)).isEmpty();
     }
 
-    @ParameterizedTest(name = "checkpoints every {0} windows")
-    @CsvSource({"40", "1000000"})
-    void aWorkerKilledMidRunIsRecoveredFromTheLastCheckpointAndTheRunEndsInTheSameState(String checkpointWindows)
-            throws Exception {
-        // Killed after 64 windows: recovered from the checkpoint of window 40, or from the scene (the first checkpoint).
+    @Test
+    void twoSlabsOnEachOfTwoJvmsMatchSerial() {
+        // --threads 2: each JVM hosts two node actors, four slabs in all, two of them in the coordinator's JVM.
+        Scene scene = RandomScenes.dense(900, 0.7, false, 4, 0.15);
+        RunResult r = new ClusterEngine().run(scene, RunOptions.until(scene.until()).withThreads(2).withTunable("nodes", "2"));
+        Invariants.noOverlapsAndInside(scene, r.finalState());
+        assertThat(r.counters().get("nodes")).isEqualTo(2);
+        assertThat(r.counters().get("domains")).isEqualTo(4);
+        assertThat(r.counters().get("crossDomainEvents")).as("cross-slab contacts").isPositive();
+        assertThat(r.counters().get("rollbacks")).as("rollbacks").isPositive();
+        Invariants.assertSameRun(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())), SAME);
+    }
+
+    @Test
+    void moreSlabsPerJvmThanTheDispatcherServesAreRefusedBeforeAnyWorkerStarts() {
+        Scene scene = RandomScenes.dense(100, 0.5, false, 11, 0.25);
+        assertThatThrownBy(() -> new ClusterEngine().run(scene, RunOptions.until(scene.until()).withThreads(65)))
+                .isInstanceOf(carom.core.BadInputException.class).hasMessageContaining("--threads");
+        assertThat(ProcessHandle.current().descendants().filter(ProcessHandle::isAlive)).isEmpty();
+    }
+
+    @ParameterizedTest(name = "checkpoints every {0} windows, {1} slabs per JVM")
+    @CsvSource({"40, 1", "1000000, 1", "40, 2"})
+    void aWorkerKilledMidRunIsRecoveredFromTheLastCheckpointAndTheRunEndsInTheSameState(String checkpointWindows,
+            int slabsPerJvm) throws Exception {
+        // Killed after 64 windows: recovered from the checkpoint of window 40, or from the scene (the first
+        // checkpoint). The run hands out samples and saves checkpoint files all along.
         Scene scene = RandomScenes.dense(900, 0.5, true, 5, 0.5);
+        double every = scene.until() / 8;
         CountDownLatch running = new CountDownLatch(1);
-        RunOptions o = new RunOptions(scene.until(), 1, t -> running.countDown(),
-                Map.of("nodes", "3", "checkpointWindows", checkpointWindows));
+        List<double[]> samples = new ArrayList<>();
+        Kept kept = new Kept(scene.until() / 4, Long.MAX_VALUE);
+        RunOptions o = new RunOptions(scene.until(), slabsPerJvm, t -> running.countDown(),
+                Map.of("nodes", "3", "checkpointWindows", checkpointWindows))
+                .withSamples(every, ClusterCheckpointTest.collect(samples)).withCheckpoints(kept);
         CompletableFuture<RunResult> run = CompletableFuture.supplyAsync(() -> new ClusterEngine().run(scene, o));
         try {
             assertThat(running.await(300, TimeUnit.SECONDS)).as("the run got going").isTrue();
@@ -133,9 +164,38 @@ class ClusterEngineTest {
             worker.destroyForcibly();
             RunResult r = run.get(300, TimeUnit.SECONDS);
             assertThat(r.counters().get("recoveries")).as("recoveries").isEqualTo(1);
-            assertThat(r.counters().get("domains")).as("slabs after the recovery").isEqualTo(2);
+            assertThat(r.counters().get("domains")).as("slabs after the recovery").isEqualTo(2L * slabsPerJvm);
             Invariants.noOverlapsAndInside(scene, r.finalState());
             Invariants.assertSameRun(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())), SAME);
+
+            // Every sample once, in order, as fast's to rounding, whether before or after the recovery.
+            List<double[]> fastSamples = new ArrayList<>();
+            new FastEngine().run(scene, RunOptions.until(scene.until()).withSamples(every, ClusterCheckpointTest.collect(fastSamples)));
+            assertThat(samples).as("samples").hasSize(9).hasSameSizeAs(fastSamples);
+            for (int k = 0; k < samples.size(); k++) {
+                assertThat(samples.get(k)[0]).as("sample %d: time", k).isEqualTo(fastSamples.get(k)[0]);
+                for (int q = 2; q < samples.get(k).length; q++) {
+                    assertThat(samples.get(k)[q]).as("sample %d, value %d", k, q).isCloseTo(fastSamples.get(k)[q], within(SAME));
+                }
+            }
+
+            // A checkpoint file saved after the recovery resumes on the JVMs that were left, with the same
+            // samples (windows end at sample times) and tunables (a recovery checkpoint re-anchors the
+            // clocks), as 'carom resume' does, to the recovered run's bits and samples.
+            ExactEngineCheckpointContract.Saved after = kept.saved.stream().filter(c -> ClusterCheckpoint.nodesOf(c.state()) == 2).findFirst()
+                    .orElseThrow(() -> new AssertionError("no checkpoint after the recovery: " + kept.saved.size() + " saved"));
+            assertThat(ClusterCheckpoint.slabsPerJvmOf(after.state())).isEqualTo(slabsPerJvm);
+            List<double[]> resumedSamples = new ArrayList<>();
+            RunResult resumed = new ClusterEngine().resume(scene, new RunOptions(scene.until(), 1, t -> { },
+                    Map.of("nodes", "3", "checkpointWindows", checkpointWindows))
+                    .withSamples(every, ClusterCheckpointTest.collect(resumedSamples)), after.state());
+            String what = "resumed from t = " + after.time() + ", after the recovery";
+            ClusterCheckpointTest.assertSameBits(what, resumed, r);
+            assertThat(resumedSamples).as(what + ": samples").isNotEmpty();
+            for (int k = 0; k < resumedSamples.size(); k++) {
+                assertThat(resumedSamples.get(k)).as(what + ": sample " + k)
+                        .isEqualTo(samples.get(samples.size() - resumedSamples.size() + k));
+            }
         } finally {
             // Whatever failed above, the run must end (and with it its workers) before the next test.
             if (!run.isDone()) {
