@@ -76,7 +76,11 @@ def expected_max_poisson(mean, k):
     if mean > 2000:  # normal approximation with the Gumbel mean of the maximum
         z = math.sqrt(2 * math.log(k)) - (math.log(math.log(k)) + math.log(4 * math.pi) - 2 * 0.5772) / (2 * math.sqrt(2 * math.log(k)))
         return mean + z * math.sqrt(mean)
-    total, cdf, pj, j = 0.0, 0.0, math.exp(-mean), 0
+    # Below j0 = mean - 15 sd, F(j) is under 1e-40: each of those terms is 1. Starting there, in
+    # logarithms, keeps exp(-mean) from underflowing to 0 (from mean 745 on), which made every term 1.
+    j0 = max(0, int(mean - 15 * math.sqrt(mean)))
+    total, cdf, j = float(j0), 0.0, j0
+    pj = math.exp(-mean + j0 * math.log(mean) - math.lgamma(j0 + 1)) if mean > 0 else 1.0
     while True:
         cdf += pj
         tail = 1 - cdf ** k
