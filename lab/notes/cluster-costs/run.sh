@@ -4,7 +4,7 @@
 #   PER_DISC  pair collisions per disc of each measured run (after 2 per disc of equilibration)
 #   CONFIG    fast | slabs2 | clusterK (K nodes, default checkpoints) | clusterK-nock (no checkpoint:
 #             checkpointWindows=2^40) | clusterKxT-nock (K nodes of T slabs each, --threads T, no checkpoint)
-# Writes raw/N-CONFIG.json (SUMMARY.json), .err (stderr), .proc.json (CPU and peak memory per JVM,
+# Writes raw/N-CONFIG.json (or into $RAW) (SUMMARY.json), .err (stderr), .proc.json (CPU and peak memory per JVM,
 # procwatch.py) and a line per run in raw/runs.log with `uptime` before and after. Large scenes go to
 # $SCRATCH (default /tmp/carom-cluster-costs), not into the repository.
 set -euo pipefail
@@ -13,7 +13,7 @@ root=$(cd "$here/../../.." && pwd)
 n=$1 perdisc=$2
 shift 2
 scratch=${SCRATCH:-/tmp/carom-cluster-costs}
-raw=$here/raw
+raw=${RAW:-$here/raw}
 mkdir -p "$scratch" "$raw"
 export CAROM_JAVA_OPTS=${CAROM_JAVA_OPTS:--Xmx8g}
 cd "$root"

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """table.py [RAWDIR]: the README's tables from raw/ (SUMMARY.json per run, procwatch's .proc.json), as
-Markdown on stdout and as costs.csv (one row per run, every derived figure; model.py reads it).
+Markdown on stdout and as costs.csv (one row per run, every derived figure; model.py reads it); from
+raw-quiet/ (the quiet machine's runs), costs-quiet.csv.
 
 Per run: wall time (the summary's wallSeconds: the engine's run, for cluster after the nodes joined),
 pair collisions, events, the window counters, messages and bytes (cluster), and derived per collision
@@ -19,8 +20,9 @@ ORDER = {"fast": 0, "slabs2": 1}
 
 def key(tag):
     n, per, config = tag.split("-", 2)
-    m = re.match(r"cluster(\d+)(-nock)?", config)
-    rank = ORDER.get(config, 10 + (int(m.group(1)) * 2 + (0 if m.group(2) else 1)) if m else 99)
+    m = re.match(r"cluster(\d+)(?:x(\d+))?(-nock)?", config)
+    slabs = int(m.group(1)) * int(m.group(2) or 1) if m else 0
+    rank = ORDER.get(config, 10 + slabs * 4 + (2 if m.group(2) else 0) + (0 if m.group(3) else 1) if m else 99)
     return int(n), float(per), rank
 
 
@@ -107,7 +109,10 @@ def main():
             fast[tag.rsplit("-", 1)[0]] = s["wallSeconds"]
     for tag, s, proc in runs:
         rows.append(derive(tag, s, proc, fast.get("-".join(tag.split("-")[:2]), 0)))
-    with open(os.path.join(raw, "..", "costs.csv") if len(sys.argv) == 1 else os.devnull, "w", newline="") as f:
+    # raw/ gives costs.csv, raw-quiet/ costs-quiet.csv, raw/round1/ costs-round1.csv (beside the folder).
+    base = os.path.basename(os.path.normpath(raw))
+    csv_name = "costs" + (base[3:] if base.startswith("raw") else "-" + base) + ".csv"
+    with open(os.path.join(raw, "..", csv_name), "w", newline="") as f:
         wr = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
         wr.writeheader()
         wr.writerows(rows)
