@@ -1,16 +1,19 @@
 """Steady-state CPU rate of each code per density from cpu-pairs.sh outputs: within each round, the
 collisions and CPU seconds between the short run (T1) and the long one (T2), so start-up, JIT and set-up
-cancel. usage: summarize.py LABEL=FILE ..."""
+cancel. usage: summarize.py [--wall] LABEL=FILE ... (--wall: per wall second, from lines that carry it)"""
 import collections, statistics as st, sys
-print("| packing fraction | rounds | Smallenburg M coll per CPU s | `fast` M coll per CPU s | `fast` / Smallenburg (median of rounds) | range | load |")
+wall = "--wall" in sys.argv
+unit = "wall s" if wall else "CPU s"
+print(f"| packing fraction | rounds | Smallenburg M coll per {unit} | `fast` M coll per {unit} | `fast` / Smallenburg (median of rounds) | range | load |")
 print("|---|---|---|---|---|---|---|")
-for arg in sys.argv[1:]:
+for arg in [a for a in sys.argv[1:] if a != "--wall"]:
     label, path = arg.split("=")
     runs = collections.defaultdict(dict)
     loads = []
     for line in open(path):
-        r, code, t, cpu, coll, load = line.split()
-        runs[(r, code)][float(t)] = (float(cpu), int(coll))
+        fields = line.split()
+        r, code, t, cpu, coll, load = fields[:6]
+        runs[(r, code)][float(t)] = (float(fields[6] if wall else cpu), int(coll))
         loads.append(float(load))
     rates = collections.defaultdict(list)
     rounds = sorted({r for r, _ in runs})
