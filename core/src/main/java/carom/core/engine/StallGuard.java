@@ -38,11 +38,14 @@ public final class StallGuard {
      * Far above any finite cascade of a scene (a Newton's cradle, a row landing at once).
      */
     static final int ZERO_TIME_BOUND = 1000;
-    /** Events of each disc at the current instant: open addressing on disc + 1, slots in use listed. */
+    /**
+     * Events of each disc at the current instant, kept only under gravity (where discs rest on
+     * supports; null otherwise): open addressing on disc + 1, the slots in use listed.
+     */
     private static final int SLOTS = 4096;
-    private final int[] instantDisc = new int[SLOTS];
-    private final int[] instantEvents = new int[SLOTS];
-    private final int[] slotsUsed = new int[SLOTS / 2];
+    private final int[] instantDisc;
+    private final int[] instantEvents;
+    private final int[] slotsUsed;
     private int slotsInUse;
 
     public StallGuard(Scene scene) {
@@ -60,6 +63,10 @@ public final class StallGuard {
         this.gravityX = scene.effects().gravityX();
         this.gravityY = scene.effects().gravityY();
         this.rest = new RestRule(scene.box(), scene.effects());
+        boolean gravity = scene.effects().hasGravity();
+        this.instantDisc = gravity ? new int[SLOTS] : null;
+        this.instantEvents = gravity ? new int[SLOTS] : null;
+        this.slotsUsed = gravity ? new int[SLOTS / 2] : null;
     }
 
     /** The partner of an event that is disc a reaching a cell side (engines that schedule crossings). */
@@ -79,9 +86,11 @@ public final class StallGuard {
             slotsInUse = 0;
             return;
         }
-        countAtInstant(a);
-        if (b >= 0) {
-            countAtInstant(b);
+        if (instantDisc != null) {
+            countAtInstant(a);
+            if (b >= 0) {
+                countAtInstant(b);
+            }
         }
         if (++atLastTime > limit) {
             String with = b >= 0 ? "disc " + sceneId.applyAsInt(b) : (b == CELL_SIDE ? "a cell side" : "wall " + (-1 - b));
