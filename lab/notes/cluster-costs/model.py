@@ -191,6 +191,12 @@ def predict(m, n, k, geometry, rtt, gbit, s):
             "band": w * band, "cross": w * (m.fc + m.fm) / n, "bytes": m.bytes_per_window(k)}
 
 
+def domains_label(k, geometry):
+    """'16 slabs' or '4x4 blocks'."""
+    a, b = blocks(k)
+    return f"{k} slabs" if geometry == "slabs" else f"{a}x{b} blocks"
+
+
 def peak(m, n, geometry, rtt, gbit, s):
     best = (1, 1.0)
     grid = sorted({round(2 ** (x / 8)) for x in range(8, 97)})  # 2 to 4096, 8 a doubling
@@ -254,8 +260,7 @@ def main():
     for n in (1e8, 1e9):
         for k in (16, 64):
             for geo in ("slabs", "blocks"):
-                a, b = blocks(k)
-                dom = f"{k} slabs" if geo == "slabs" else f"{a}x{b} blocks"
+                dom = domains_label(k, geo)
                 p0 = predict(m, n, k, geo, *sc[0][1:])
                 row = f"| {n:.0e} | {k} | {dom} | {g(p0['W'])} | {p0['cross']:.1e} | {g(p0['mean'])} | {g(p0['bytes'])} | {g(n * m.e * m.c)} |"
                 for _, rtt, gbit, s in sc:
@@ -272,8 +277,7 @@ def main():
     for n in (1e8, 1e9):
         for k in (16, 64):
             for geo in ("slabs", "blocks"):
-                a, b = blocks(k)
-                dom = f"{k} slabs" if geo == "slabs" else f"{a}x{b} blocks"
+                dom = domains_label(k, geo)
                 p = predict(m, n, k, geo, *sc[0][1:])
                 print(f"| {n:.0e} | {dom} | {g(p['work'])} | {g(p['soft'])} | {g(p['lat'])} | {g(p['band'])} | {g(p['T'])} |")
     print()

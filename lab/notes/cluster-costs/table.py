@@ -99,6 +99,12 @@ def fmt(x, digits=3):
     return f"{x:.{digits}g}"
 
 
+def print_head(cols):
+    """A Markdown table's heading row and rule, from (key, heading) pairs."""
+    print("| " + " | ".join(h for _, h in cols) + " |")
+    print("|" + "---|" * len(cols))
+
+
 def main():
     rows = []
     fast = {}
@@ -123,8 +129,7 @@ def main():
             ("messagesPerWindow", "messages / window"), ("windowBytesPerWindow", "window bytes / window"),
             ("bytesPerCrossEvent", "bytes / cross event"), ("messagesPerCollision", "messages / collision"),
             ("bytesPerCollision", "bytes / collision")]
-    print("| " + " | ".join(h for _, h in cols) + " |")
-    print("|" + "---|" * len(cols))
+    print_head(cols)
     for r in rows:
         print("| " + " | ".join(fmt(r[k]) for k, _ in cols) + " |")
     print()
@@ -136,8 +141,7 @@ def main():
              ("coordinatorCpu", "coordinator CPU s"), ("workerCpu", "workers CPU s"),
              ("processSeconds", "process s"), ("peakRssCoordinator", "peak RSS coordinator"),
              ("peakRssWorker", "peak RSS a worker")]
-    print("| " + " | ".join(h for _, h in cols2) + " |")
-    print("|" + "---|" * len(cols2))
+    print_head(cols2)
     for r in rows:
         vals = []
         for k, _ in cols2:

@@ -12,6 +12,8 @@ import org.junit.jupiter.api.io.TempDir;
  * and the options it refuses before anything starts (one {@code error:} line, exit status 2, no file).
  */
 class ClusterCommandsTest {
+    private static final com.fasterxml.jackson.databind.ObjectMapper JSON = new com.fasterxml.jackson.databind.ObjectMapper();
+
     @TempDir
     Path dir;
 
@@ -24,7 +26,7 @@ class ClusterCommandsTest {
         Cli r = Cli.run("simulate", scene.toString(), "--engine", "cluster", "--nodes", "2", "--out", cluster.toString(),
                 "--summary", summary.toString());
         assertThat(r.status()).as(r.err()).isZero();
-        var json = new com.fasterxml.jackson.databind.ObjectMapper().readTree(summary.toFile());
+        var json = JSON.readTree(summary.toFile());
         assertThat(json.get("counters").get("domains").asInt()).as("one slab per JVM without --threads").isEqualTo(2);
         assertThat(json.get("threads").asInt()).as("threads: the slabs in all").isEqualTo(2);
         assertThat(Cli.run("simulate", scene.toString(), "--engine", "fast", "--out", fast.toString()).status()).isZero();
@@ -50,7 +52,7 @@ class ClusterCommandsTest {
         Cli r = Cli.run("simulate", scene.toString(), "--engine", "cluster", "--nodes", "2", "--threads", "2",
                 "--summary", summary.toString());
         assertThat(r.status()).as(r.err()).isZero();
-        var json = new com.fasterxml.jackson.databind.ObjectMapper().readTree(summary.toFile());
+        var json = JSON.readTree(summary.toFile());
         assertThat(json.get("counters").get("nodes").asInt()).isEqualTo(2);
         assertThat(json.get("counters").get("domains").asInt()).as("slabs: 2 JVMs of 2").isEqualTo(4);
         assertThat(json.get("threads").asInt()).as("threads: the slabs in all").isEqualTo(4);
