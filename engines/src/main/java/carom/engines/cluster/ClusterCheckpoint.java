@@ -81,7 +81,7 @@ final class ClusterCheckpoint {
         for (Map.Entry<String, Long> e : run.messages.entrySet()) {
             out.putString(e.getKey()).putLong(e.getValue());
         }
-        out.putLongs(run.counterBase).putDoubles(run.virialBase);
+        out.putLongs(run.counterBase).putDoubles(run.virialBase).putBoolean(run.sleepersNoted);
         saveRecovery(run.checkpoint, out);
         run.mirror.save(out);
         out.putLong(collisions);
@@ -124,6 +124,9 @@ final class ClusterCheckpoint {
                     run.await(run.ask(d, "restore", rt -> new RestoreState(p, parts, bytes, rt)), d, "restore");
                 }
             }
+            if (run.sleepersNoted) {
+                run.tellSleepers();
+            }
         }
     }
 
@@ -165,6 +168,7 @@ final class ClusterCheckpoint {
         }
         run.counterBase = in.getLongs(run.counterBase.length);
         run.virialBase = remap(in.getDoubles(), savedUntil, run.until);
+        run.sleepersNoted = in.getBoolean();
         run.checkpoint = readRecovery(in, savedUntil, run.until, run.counterBase.length);
         run.mirror.restore(in);
         run.collisionsBefore = in.getLong();

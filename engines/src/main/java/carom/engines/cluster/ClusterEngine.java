@@ -5,7 +5,6 @@ import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.engine.Tunable;
-import carom.core.scene.Effects;
 import carom.core.scene.Scene;
 import carom.engines.kernel.KernelTunables;
 import java.util.List;
@@ -30,7 +29,12 @@ import java.util.List;
  * to rounding; runs over {@code --seed-nodes} stop with an error instead); the coordinator's own death
  * ends its workers ({@link ClusterWorker}), and the user resumes from the last checkpoint file.
  *
- * <p>Not yet: two-dimensional blocks; inelastic collisions under gravity (sleeping discs).
+ * <p>Resting contact (inelastic collisions under gravity): a disc that comes to rest sleeps in its
+ * record, which travels with it; once any slab or the coordinator's cross-slab collisions put one to
+ * sleep, every slab is told to re-predict in full after crossings, between windows, as {@code slabs}
+ * does.
+ *
+ * <p>Not yet: two-dimensional blocks.
  */
 public final class ClusterEngine implements Engine {
     /** Seed nodes of running workers ("host:port"); empty: each run starts its own workers. */
@@ -110,17 +114,6 @@ public final class ClusterEngine implements Engine {
     @Override
     public boolean checkpoints() {
         return true;
-    }
-
-    @Override
-    public void checkSupports(Scene scene) {
-        Engine.super.checkSupports(scene);
-        Effects e = scene.effects();
-        if (e.hasGravity() && (e.dissipativePairs() || e.dissipativeWalls())) {
-            // Discs that come to rest fall asleep (resting contact); sleeping discs are not carried across nodes yet.
-            throw new BadInputException("engine cluster does not support inelastic collisions under gravity yet (discs "
-                    + "that come to rest fall asleep, and sleeping discs are not carried across nodes); use fast, serial or slabs");
-        }
     }
 
     @Override

@@ -115,7 +115,7 @@ final class ClusterRun {
     private final long checkpointWindows;
     /** The last checkpoint; the slabs' counters and virial lost with the slabs a recovery replaced. */
     Checkpoint checkpoint;
-    long[] counterBase = new long[6];
+    long[] counterBase = SlabCounts.none();
     double[] virialBase;
     long recoveries;
     /** Samples asked for ({@code --every}), and the next one's local time (+Infinity if none). */
@@ -125,8 +125,11 @@ final class ClusterRun {
     private final ClusterCheckpoint checkpoints;
     long collisionsBefore;
     /** Wall time from sending the windows to having read every node's report, and in the rest of the loop. */
-    private long windowNanos;
-    private long loopNanos;
+    long windowNanos;
+    long loopNanos;
+    /** Whether a slab or the mirror has put discs to sleep, and whether every slab has been told so. */
+    private boolean slept;
+    boolean sleepersNoted;
 
     /** A worker JVM died during the run: recover from the last checkpoint. */
     private static final class WorkerLost extends RuntimeException {
@@ -225,18 +228,14 @@ final class ClusterRun {
                 }
             }
             Discs out = scene.newDiscs();
-            long[] sums = new long[6];
+            long[] sums = counterBase.clone();
+            SlabCounts.add(sums, mirror.restCounts(), SlabCounts.SLEEPS);
             VirialAccumulator virial = mirror.virial;
             for (Reply r : finals) {
                 Finished f = (Finished) r;
                 f.finals().copyXyvInto(out, until);
-                for (int k = 0; k < sums.length; k++) {
-                    sums[k] += f.counters()[k];
-                }
+                SlabCounts.add(sums, f.counters(), 0);
                 virial.addSums(f.virial());
-            }
-            for (int k = 0; k < sums.length; k++) {
-                sums[k] += counterBase[k];
             }
             virial.addSums(virialBase);
             double seconds = (System.nanoTime() - started) * 1e-9;
@@ -245,37 +244,8 @@ final class ClusterRun {
             long events = sums[0] + crossDomainEvents + migrations;
             return new RunResult("cluster", true, out, until, sums[1] + mirror.crossPairCollisions, sums[2], events,
                     energyStart, energyEnd, momentumStart, Observables.momentum(out), pressure, 0, seconds,
-                    counters(count, sums));
+                    SlabCounts.counters(this, count, sums, scene.effects().hasGravity()), SlabCounts.energyPutToRest(sums));
         }
-    }
-
-    private Map<String, Long> counters(int count, long[] sums) {
-        Map<String, Long> c = new java.util.LinkedHashMap<>();
-        c.put(Counter.NODES.key, (long) count);
-        c.put(Counter.DOMAINS.key, (long) domains);
-        c.put(Counter.WINDOWS.key, windows);
-        c.put(Counter.COMMITS.key, commits);
-        c.put(Counter.ROLLBACKS.key, rollbacks);
-        c.put(Counter.UNDONE_EVENTS.key, sums[5]);
-        c.put(Counter.CROSS_DOMAIN_EVENTS.key, crossDomainEvents);
-        c.put(Counter.MIGRATIONS.key, migrations);
-        c.put(Counter.CROSS_PREDICTIONS.key, mirror.crossPredictions());
-        c.put(Counter.CELL_CROSSINGS.key, sums[3]);
-        c.put(Counter.STALE_EVENTS.key, sums[4]);
-        c.put(Counter.RESYNCS.key, resyncs);
-        c.put(Counter.RECOVERIES.key, recoveries);
-        c.put(Counter.WINDOW_NANOS.key, windowNanos);
-        c.put(Counter.SERIAL_NANOS.key, loopNanos - windowNanos);
-        c.put(Counter.MESSAGES.key, messageCount);
-        c.put(Counter.MESSAGE_BYTES.key, bytes);
-        c.put(Counter.MESSAGES_PER_WINDOW.key, windows == 0 ? 0 : Math.round((double) messageCount / windows));
-        c.put(Counter.MESSAGE_BYTES_PER_WINDOW.key, windows == 0 ? 0 : Math.round((double) windowBytes / windows));
-        long crossEvents = crossDomainEvents + migrations;
-        c.put(Counter.MESSAGE_BYTES_PER_CROSS_EVENT.key, crossEvents == 0 ? 0 : Math.round((double) crossEventBytes / crossEvents));
-        for (Map.Entry<String, Long> e : messages.entrySet()) {
-            c.put(Counter.messagesOf(e.getKey()), e.getValue());
-        }
-        return c;
     }
 
     /** Every node's final states, in parts of at most {@link #CHUNK} discs per message, and its counters. */
@@ -323,14 +293,14 @@ final class ClusterRun {
             Protocol.SnapshotPart sp = (Protocol.SnapshotPart) r;
             states.add(sp.states());
             if (part == 0) {
-                for (int k = 0; k < slabCounters.length; k++) {
-                    slabCounters[k] += sp.counters()[k];
-                }
+                SlabCounts.add(slabCounters, sp.counters(), 0);
                 for (int b = 0; b < slabVirial.length; b++) {
                     slabVirial[b] += sp.virial()[b];
                 }
             }
         });
+        // The mirror's rest counts go with the slabs': a recovery starts a new mirror from none.
+        SlabCounts.add(slabCounters, mirror.restCounts(), SlabCounts.SLEEPS);
         checkpoint = new Checkpoint(mirror.epoch(), states, slabCounters, slabVirial, mirror.virial.blockSums(),
                 mirror.crossPairCollisions, crossDomainEvents, migrations);
     }
@@ -363,6 +333,9 @@ final class ClusterRun {
             }
         }
         startSlabs();
+        if (sleepersNoted) {
+            tellSleepers();
+        }
     }
 
     /** The scene to node d: its header, then its discs in chunks (each under Artery's frame size). */
@@ -399,6 +372,10 @@ final class ClusterRun {
                 resync(now);
                 now = 0;
             }
+            if (!sleepersNoted && (slept || mirror.restCounts()[0] > 0)) {
+                sleepersNoted = true;
+                tellSleepers();
+            }
             int top = mirror.validTop(now);
             double h = top >= 0 ? mirror.crossTime(top) : INF;
             double untilLocal = mirror.untilLocal();
@@ -417,6 +394,7 @@ final class ClusterRun {
             long windowStart = System.nanoTime();
             for (Reply r : askAll("window", d -> rt -> new Window(end, last, rt))) {
                 WindowDone w = (WindowDone) r;
+                slept |= w.sleepers();
                 mirror.windowReport(w.domain(), w.changed(), w.segments());
                 if (w.stopTime() < reached) {
                     reached = w.stopTime();
@@ -463,6 +441,14 @@ final class ClusterRun {
                 options.progress().simulatedTime(mirror.epoch() + now);
             }
         }
+    }
+
+    /**
+     * Once a disc sleeps anywhere, every slab re-predicts in full after a crossing, as in {@code slabs}:
+     * told between windows, so that the run does not depend on timing; again to slabs built anew.
+     */
+    void tellSleepers() {
+        askAll("sleepers", d -> Protocol.SleepersNear::new);
     }
 
     /** Contact of discs a and b of two slabs at local {@code now}: computed here, installed at both owners. */

@@ -118,13 +118,17 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
                 .onMessage(Window.class, m -> answer(m.replyTo(), () -> {
                     slab.runWindow(m.end(), m.inclusive());
                     return new WindowDone(domain(), slab.stopTime(), slab.stopDisc(), slab.changedRecords(),
-                            slab.changedSegments());
+                            slab.changedSegments(), slab.counters()[SlabCounts.SLEEPS] > 0);
                 }))
                 .onMessage(Undo.class, m -> answer(m.replyTo(), () -> new Undone(domain(),
                         slab.undo(m.tStar(), m.keepDisc(), m.keepEntry()) ? slab.changedRecords() : StateBatch.EMPTY)))
                 .onMessage(Install.class, m -> answer(m.replyTo(), () -> install(m)))
                 .onMessage(Emigrate.class, m -> answer(m.replyTo(),
                         () -> new States(domain(), slab.emigrate(m.disc(), m.now()))))
+                .onMessage(Protocol.SleepersNear.class, m -> answer(m.replyTo(), () -> {
+                    slab.sleepersMayBeNear();
+                    return new Protocol.Told(domain());
+                }))
                 .onMessage(Replan.class, m -> answer(m.replyTo(), () -> new Replanned(domain(), slab.replan(m.shift()))))
                 .onMessage(Finish.class, m -> answer(m.replyTo(), () -> {
                     boolean first = m.part() == 0;

@@ -127,9 +127,20 @@ public final class Protocol {
     public record Started(int domain, double span, StateBatch edge) implements Reply {
     }
 
-    /** A window's outcome: where it stopped early (a migration; +Infinity if not), changed discs' records and segments. */
-    public record WindowDone(int domain, double stopTime, int stopDisc, StateBatch changed, StateBatch segments)
-            implements Reply {
+    /**
+     * A window's outcome: where it stopped early (a migration; +Infinity if not), changed discs' records
+     * and segments, and whether the slab has put discs to sleep (resting contact under gravity).
+     */
+    public record WindowDone(int domain, double stopTime, int stopDisc, StateBatch changed, StateBatch segments,
+                             boolean sleepers) implements Reply {
+    }
+
+    /** Discs sleep somewhere in the run: from now on, crossings re-predict in full (as in {@code slabs}). */
+    public record SleepersNear(ActorRef<Reply> replyTo) implements NodeCommand {
+    }
+
+    /** A {@link SleepersNear} was taken. */
+    public record Told(int domain) implements Reply {
     }
 
     /** After an undo: the changed discs' restored records (empty if nothing was undone). */

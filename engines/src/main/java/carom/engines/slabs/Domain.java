@@ -163,10 +163,13 @@ final class Domain {
         windowCpuNanos += lastWindowCpu;
     }
 
-    /** Schedules every mobile disc of this domain's columns (before the first window). */
+    /**
+     * Schedules every mobile disc of this domain's columns, awake or asleep (before the first window;
+     * a cluster node also after a recovery, from a checkpoint in which discs may sleep).
+     */
     private void predictOwn() {
         for (int i = 0; i < n; i++) {
-            if (columns.ownerOfDisc(i) == id && table.invMass(i) > 0) {
+            if (columns.ownerOfDisc(i) == id && table.mobile(i)) {
                 table.setEventTime(i, predictFull(i, 0));
             }
         }

@@ -338,6 +338,7 @@ public final class SlabMirror {
     public void save(carom.core.engine.StateBytes.Out out) {
         out.putInt(columns.domains).putDouble(clock.until).putDouble(clock.epoch).putLong(crossPairCollisions)
                 .putDoubles(virial.blockSums()).putDouble(virial.total());
+        motion.saveRestCounts(out);
         TableState.save(table, out);
         marks.save(out);
         if (cross != null) {
@@ -355,11 +356,20 @@ public final class SlabMirror {
         startAt(in.getDouble());
         crossPairCollisions = in.getLong();
         virial.restore(in.getDoubles(), savedUntil, in.getDouble());
+        motion.restoreRestCounts(in);
         TableState.restore(table, in);
         marks.restore(in);
         if (cross != null) {
             cross.restore(in);
         }
+    }
+
+    /**
+     * Resting contact in the cross-slab collisions computed here: discs put to sleep, woken, and the
+     * kinetic energy put to rest (raw long bits), laid out as the end of {@link SlabNode#counters}.
+     */
+    public long[] restCounts() {
+        return new long[] {motion.sleeps(), motion.wakes(), Double.doubleToRawLongBits(motion.energyPutToRest())};
     }
 
     /** The scene id of internal disc i, for messages. */

@@ -99,7 +99,7 @@ public final class SlabNode {
     public StateBatch edgeStates() {
         StateBatch.Builder b = builder(64);
         for (int i = 0; i < table.n; i++) {
-            if (table.invMass(i) > 0 && columns.ownerOfDisc(i) == domain.id && columns.inEdgeColumn(i)) {
+            if (table.mobile(i) && columns.ownerOfDisc(i) == domain.id && columns.inEdgeColumn(i)) {
                 addRecord(b, i);
             }
         }
@@ -183,7 +183,8 @@ public final class SlabNode {
             throw new IllegalStateException("disc " + table.sceneId(i) + " installed in slab " + domain.id
                     + " but lies in column " + table.colOfDisc(i));
         }
-        if (table.invMass(i) > 0) {
+        // Mobile in the scene, awake or asleep: a sleeping disc keeps an event (its contacts with discs awake).
+        if (table.mobile(i)) {
             domain.queue.insert(i, domain.predictFull(i, now));
         }
         return single(i);
@@ -289,10 +290,19 @@ public final class SlabNode {
         in.end();
     }
 
-    /** This slab's counters: events, pair and wall collisions, cell crossings, stale and undone events. */
+    /**
+     * This slab's counters: events, pair and wall collisions, cell crossings, stale and undone events,
+     * discs put to sleep and woken, and the kinetic energy put to rest (its raw long bits).
+     */
     public long[] counters() {
         return new long[] {domain.events, domain.pairCollisions, domain.wallCollisions, domain.crossings,
-                domain.staleEvents, domain.undoneEvents};
+                domain.staleEvents, domain.undoneEvents, domain.motion.sleeps(), domain.motion.wakes(),
+                Double.doubleToRawLongBits(domain.motion.energyPutToRest())};
+    }
+
+    /** Discs fall asleep somewhere in the run: this slab's crossings re-predict in full from now on. */
+    public void sleepersMayBeNear() {
+        domain.pred.sleepersMayBeNear();
     }
 
     /** This slab's pair virial, by blocks of the run ({@link VirialAccumulator#sums}). */
