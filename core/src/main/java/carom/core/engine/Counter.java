@@ -51,6 +51,7 @@ public enum Counter {
 
     // slabs.
     DOMAINS("domains", "slabs (domains) the box was cut into"),
+    DOMAIN_ROWS("domainRows", "rows the domains are laid out in: 1 for vertical slabs, more for blocks"),
     WINDOWS("windows", "optimistic windows run"),
     COMMITS("commits", "windows verified and kept"),
     ROLLBACKS("rollbacks", "windows undone back to the first cross-slab contact"),

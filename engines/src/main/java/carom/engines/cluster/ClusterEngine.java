@@ -34,9 +34,12 @@ import java.util.List;
  * sleep, every slab is told to re-predict in full after crossings, between windows, as {@code slabs}
  * does.
  *
- * <p>Not yet: two-dimensional blocks.
+ * <p>Domains are blocks where their cuts are shorter than slabs' ({@code domainRows}, by default the
+ * layout with the shortest cuts: {@link carom.engines.slabs.DomainGrid}).
  */
 public final class ClusterEngine implements Engine {
+    /** Blocks by default: across many nodes their shorter cuts mean fewer cross events and messages. */
+    static final Tunable.Whole DOMAIN_ROWS = carom.engines.slabs.DomainGrid.rowsTunable(0);
     /** Seed nodes of running workers ("host:port"); empty: each run starts its own workers. */
     private final List<String> seeds;
 
@@ -96,8 +99,8 @@ public final class ClusterEngine implements Engine {
 
     @Override
     public List<Tunable<?>> tunables() {
-        return List.of(ClusterRun.NODES, KernelTunables.CELL_FACTOR, ClusterRun.JOIN_SECONDS, ClusterRun.REPLY_SECONDS,
-                ClusterRun.CHECKPOINT_WINDOWS);
+        return List.of(ClusterRun.NODES, KernelTunables.CELL_FACTOR, DOMAIN_ROWS, ClusterRun.JOIN_SECONDS,
+                ClusterRun.REPLY_SECONDS, ClusterRun.CHECKPOINT_WINDOWS);
     }
 
     /** One slab per JVM: the JVMs of a {@code --nodes} run share this machine's cores already. */

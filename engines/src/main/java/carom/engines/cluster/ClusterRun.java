@@ -166,7 +166,8 @@ final class ClusterRun {
         Discs initial = scene.newDiscs();
         double energyStart = Observables.kineticEnergy(initial);
         double[] momentumStart = Observables.momentum(initial);
-        mirror = new SlabMirror(scene, KernelTunables.CELL_FACTOR.of(options), count * slabsPerJvm, until);
+        mirror = new SlabMirror(scene, KernelTunables.CELL_FACTOR.of(options), count * slabsPerJvm,
+                ClusterEngine.DOMAIN_ROWS.intOf(options), until);
         domains = mirror.domains();
         // The first checkpoint is the scene itself, which every node holds: no message.
         checkpoint = Checkpoint.atStart(counterBase.length, virialBase.length);
@@ -314,7 +315,8 @@ final class ClusterRun {
         recoveries++;
         nodes = life.dropDeadWorkers();
         Checkpoint cp = checkpoint;
-        mirror = new SlabMirror(scene, KernelTunables.CELL_FACTOR.of(options), nodes.size(), until);
+        mirror = new SlabMirror(scene, KernelTunables.CELL_FACTOR.of(options), nodes.size(),
+                ClusterEngine.DOMAIN_ROWS.intOf(options), until);
         mirror.startAt(cp.epoch());
         domains = mirror.domains();
         for (StateBatch b : cp.states()) {
@@ -327,7 +329,7 @@ final class ClusterRun {
         counterBase = cp.slabCounters().clone();
         virialBase = cp.slabVirial().clone();
         for (int d = 0; d < domains; d++) {
-            tell(d, "recover", new Protocol.Recover(d, domains, cp.epoch()));
+            tell(d, "recover", new Protocol.Recover(d, domains, mirror.domainRows(), cp.epoch()));
             for (StateBatch b : cp.states()) {
                 tell(d, "recover", new Protocol.RecoverChunk(b));
             }
@@ -345,7 +347,7 @@ final class ClusterRun {
             species.add(new SpeciesSpec(s.name(), s.radius(), s.mass(), s.fixed()));
         }
         var e = scene.effects();
-        tell(d, "scene", new SceneStart(d, domains, KernelTunables.CELL_FACTOR.of(options), until, scene.name(),
+        tell(d, "scene", new SceneStart(d, domains, mirror.domainRows(), KernelTunables.CELL_FACTOR.of(options), until, scene.name(),
                 scene.box().width(), scene.box().height(), scene.box().boundary().name(), species,
                 new double[] {e.gravityX(), e.gravityY(), e.restitution(), e.wallRestitution(), e.tc()}, initial.n));
         for (int from = 0; from < initial.n; from += CHUNK) {

@@ -63,9 +63,10 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
     static final int STATE_PART = 1 << 21;
 
     private SceneStart header;
-    /** The slab this node runs now (a recovery may give it another), of how many. */
+    /** The domain this node runs now (a recovery may give it another), of how many, in how many rows. */
     private int domain = -1;
     private int domains;
+    private int domainRows;
     private SceneBuilder builder;
     /** The scene, kept after the first start for a recovery. */
     private Scene scene;
@@ -184,6 +185,7 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
         header = m;
         domain = m.domain();
         domains = m.domains();
+        domainRows = m.domainRows();
         scene = null;
         slab = null;
         received = 0;
@@ -199,12 +201,13 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
     private Behavior<NodeCommand> recover(Recover m) {
         domain = m.domain();
         domains = m.domains();
+        domainRows = m.domainRows();
         if (scene == null) {
             // A node that idled (more nodes than slabs) builds the scene it was sent now.
             scene = builder.build();
             builder = null;
         }
-        slab = new SlabNode(scene, header.cellFactor(), domains, domain, header.until());
+        slab = new SlabNode(scene, header.cellFactor(), domains, domainRows, domain, header.until());
         slab.startAt(m.epoch());
         return this;
     }
@@ -232,7 +235,7 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
             }
             scene = builder.build();
             builder = null;
-            slab = new SlabNode(scene, header.cellFactor(), domains, domain, header.until());
+            slab = new SlabNode(scene, header.cellFactor(), domains, domainRows, domain, header.until());
         }
     }
 

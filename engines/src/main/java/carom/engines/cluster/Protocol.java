@@ -40,7 +40,7 @@ public final class Protocol {
      * A run begins: this node runs slab {@code domain} of {@code domains}; the scene's discs follow
      * in {@link SceneChunk}s ({@code discs} in all), then {@link Start}.
      */
-    public record SceneStart(int domain, int domains, double cellFactor, double until, String name, double width,
+    public record SceneStart(int domain, int domains, int domainRows, double cellFactor, double until, String name, double width,
                              double height, String boundary, List<SpeciesSpec> species, double[] effects, int discs)
             implements NodeCommand {
     }
@@ -55,7 +55,7 @@ public final class Protocol {
      * at {@code epoch} (every disc's clock there); the states follow in {@link RecoverChunk}s, then
      * {@link Start}.
      */
-    public record Recover(int domain, int domains, double epoch) implements NodeCommand {
+    public record Recover(int domain, int domains, int domainRows, double epoch) implements NodeCommand {
     }
 
     /** Disc states of a checkpoint, every disc's (owned here or not). */

@@ -48,6 +48,7 @@ final class SlabCounts {
         Map<String, Long> c = new LinkedHashMap<>();
         c.put(Counter.NODES.key, (long) nodes);
         c.put(Counter.DOMAINS.key, (long) run.domains);
+        c.put(Counter.DOMAIN_ROWS.key, (long) run.mirror.domainRows());
         c.put(Counter.WINDOWS.key, run.windows);
         c.put(Counter.COMMITS.key, run.commits);
         c.put(Counter.ROLLBACKS.key, run.rollbacks);

@@ -38,10 +38,10 @@ import carom.core.state.Discs;
  * shares its {@link DiscMotion}'s two-slot window, so each thread needs its own; no allocation per
  * event.
  *
- * <p>Owner filter ({@code slabs}): with {@code colOwner} set, only discs of columns owned by
- * {@code owner} are predicted against, and an interior cell in an {@code edgeCol} column is scanned
- * as a border cell (so the filter applies). With {@code colOwner} null ({@code fast}) every column
- * is seen; the filter then costs one null test per prediction.
+ * <p>Owner filter ({@code slabs}): with {@code cellOwner} set, only discs of cells owned by
+ * {@code owner} are predicted against, and an interior {@code edgeCell} is scanned as a border cell
+ * (so the filter applies). With {@code cellOwner} null ({@code fast}) every cell is seen; the filter
+ * then costs one null test per prediction.
  */
 public final class CellPredictor {
     private static final double[] NO_SHIFT = new double[9];
@@ -80,11 +80,11 @@ public final class CellPredictor {
     /** The growth effect: predictions go through {@link GrowthLaw} (see {@link DiscTable#growing}). */
     private final boolean growing;
     private final DiscTable table;
-    /** Owning domain of each column, or null if every column is seen; this predictor's domain. */
-    private final int[] colOwner;
+    /** Owning domain of each cell (row-major), or null if every cell is seen; this predictor's domain. */
+    private final int[] cellOwner;
     private final int owner;
-    /** Columns whose interior cells still need the owner filter, or null. */
-    private final boolean[] edgeCol;
+    /** Cells that, interior or not, need the owner filter (a foreign cell is among their neighbours), or null. */
+    private final boolean[] edgeCell;
 
     /** Cells a border cell's {@link #scan} visits (row-major index) and the image shift of their discs. */
     private final int[] visitCell = new int[9];
@@ -105,8 +105,8 @@ public final class CellPredictor {
         this(motion, null, 0, null);
     }
 
-    /** A predictor that sees only columns with {@code colOwner[col] == owner} ({@code slabs}). */
-    public CellPredictor(DiscMotion motion, int[] colOwner, int owner, boolean[] edgeCol) {
+    /** A predictor that sees only cells with {@code cellOwner[row * cols + col] == owner} ({@code slabs}). */
+    public CellPredictor(DiscMotion motion, int[] cellOwner, int owner, boolean[] edgeCell) {
         DiscTable table = motion.table;
         this.motion = motion;
         this.pair = motion.pair;
@@ -133,9 +133,9 @@ public final class CellPredictor {
         this.ahead = table.ahead;
         this.growing = table.growing;
         this.table = table;
-        this.colOwner = colOwner;
+        this.cellOwner = cellOwner;
         this.owner = owner;
-        this.edgeCol = edgeCol;
+        this.edgeCell = edgeCell;
     }
 
     /**
@@ -250,7 +250,7 @@ public final class CellPredictor {
 
     /** Whether cell (col, row) is interior (all 8 neighbours in the box) and needs no owner filter. */
     private boolean interior(int col, int row) {
-        return col > 0 && col < cols - 1 && row > 0 && row < rows - 1 && (edgeCol == null || !edgeCol[col]);
+        return col > 0 && col < cols - 1 && row > 0 && row < rows - 1 && (edgeCell == null || !edgeCell[row * cols + col]);
     }
 
     /**
@@ -376,7 +376,7 @@ public final class CellPredictor {
 
     /**
      * Appends cell (c, r), given unwrapped, to the cells a border cell's {@link #scan} visits, and
-     * returns the new count: outside a walled box, or in a column of another owner, there is nothing;
+     * returns the new count: outside a walled box, or in a cell of another owner, there is nothing;
      * in a periodic box the cell wraps and its discs are seen shifted by one box length (their nearest
      * image whenever the axis has at least 4 cells, since positions stay within rounding of their
      * logical cells).
@@ -391,15 +391,15 @@ public final class CellPredictor {
             shiftX = c < 0 ? -width : width;
             c = c < 0 ? c + cols : c - cols;
         }
-        if (colOwner != null && colOwner[c] != owner) {
-            return m;
-        }
         if (r < 0 || r >= rows) {
             if (!periodic) {
                 return m;
             }
             shiftY = r < 0 ? -height : height;
             r = r < 0 ? r + rows : r - rows;
+        }
+        if (cellOwner != null && cellOwner[r * cols + c] != owner) {
+            return m;
         }
         visitCell[m] = r * cols + c;
         visitShiftX[m] = shiftX;

@@ -22,7 +22,7 @@ final class CrossPredictions {
     private static final double INF = Double.POSITIVE_INFINITY;
 
     private final DiscTable table;
-    private final SlabColumns columns;
+    private final DomainGrid grid;
     private final Domain[] domains;
     /** Reads records into {@link #xpair} (it uses no scratch of its own). */
     private final DiscMotion reader;
@@ -32,14 +32,15 @@ final class CrossPredictions {
     /** The growth effect: contacts of growing discs ({@link DiscTable#growingContactTime}). */
     private final boolean growing;
     private final CrossHeap heap;
-    /** Scratch for serial contact tests. */
+    /** Scratch for serial contact tests, and the foreign cells next to a disc's. */
     private final Discs xpair = new Discs(2);
+    private final int[] near = new int[8];
     /** Cross predictions made (counter {@code crossPredictions}). */
     long predictions;
 
-    CrossPredictions(DiscTable table, SlabColumns columns, Domain[] domains) {
+    CrossPredictions(DiscTable table, DomainGrid grid, Domain[] domains) {
         this.table = table;
-        this.columns = columns;
+        this.grid = grid;
         this.domains = domains;
         this.reader = domains[0].motion;
         this.flight = table.flight;
@@ -86,7 +87,7 @@ final class CrossPredictions {
     boolean valid(int i) {
         int p = heap.partner(i);
         return p >= 0 ? table.changeCount(p) == heap.partnerCount(i)
-                : p != MIGRATE || (table.eventTime(i) == heap.time(i) && columns.migratesAtEvent(i, columns.ownerOfDisc(i)));
+                : p != MIGRATE || (table.eventTime(i) == heap.time(i) && grid.migratesAtEvent(i, grid.ownerOfDisc(i)));
     }
 
     /**
@@ -96,7 +97,7 @@ final class CrossPredictions {
     void predictAll(double now) {
         heap.clear();
         for (int i = 0; i < table.n; i++) {
-            if (table.mobile(i) && columns.inEdgeColumn(i)) {
+            if (table.mobile(i) && grid.inEdgeCell(i)) {
                 predict(i, now);
             }
         }
@@ -122,18 +123,17 @@ final class CrossPredictions {
         if (!table.mobile(i)) {
             return;
         }
-        int col = table.colOfDisc(i);
-        if (!columns.edge[col]) {
+        int cell = table.cellOfDisc(i);
+        if (!grid.edge[cell]) {
             heap.remove(i);
             return;
         }
         predictions++;
-        int row = table.rowOfDisc(i);
-        int own = columns.owner[col];
+        int own = grid.owner[cell];
         Domain dom = domains[own];
         double best = INF;
         int bestP = NONE;
-        if (columns.migratesAtEvent(i, own)) {
+        if (grid.migratesAtEvent(i, own)) {
             best = table.eventTime(i);
             bestP = MIGRATE;
         }
@@ -143,24 +143,15 @@ final class CrossPredictions {
             horizon = now + dom.pred.timeToLeaveCell(i, now);
         }
         reader.load(xpair, i, 0);
-        for (int dc = -1; dc <= 1; dc += 2) {
-            int c = columns.foreignColumn(col, dc, own);
-            if (c < 0) {
-                continue;
-            }
-            for (int dr = -1; dr <= 1; dr++) {
-                int r = columns.wrappedRow(row + dr);
-                if (r < 0) {
-                    continue;
-                }
-                for (int j = table.firstInCell(c, r); j != DiscTable.NIL; j = table.nextInCell(j)) {
-                    reader.load(xpair, j, 1);
-                    double t = now + (growing ? table.growingContactTime(xpair, 0, 1, now)
-                            : flight.timeToContact(xpair, 0, 1, now, horizon, boundary));
-                    if (t < best) {
-                        best = t;
-                        bestP = j;
-                    }
+        int m = grid.foreignNeighbours(table.colOfDisc(i), table.rowOfDisc(i), own, near);
+        for (int k = 0; k < m; k++) {
+            for (int j = table.firstInCell(near[k]); j != DiscTable.NIL; j = table.nextInCell(j)) {
+                reader.load(xpair, j, 1);
+                double t = now + (growing ? table.growingContactTime(xpair, 0, 1, now)
+                        : flight.timeToContact(xpair, 0, 1, now, horizon, boundary));
+                if (t < best) {
+                    best = t;
+                    bestP = j;
                 }
             }
         }

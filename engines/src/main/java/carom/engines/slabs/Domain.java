@@ -14,7 +14,7 @@ import carom.engines.kernel.DiscMotion;
 import carom.engines.kernel.DiscTable;
 
 /**
- * One slab: {@code fast}'s event loop, on the kernel, over the discs of its columns, with an
+ * One slab: {@code fast}'s event loop, on the kernel, over the discs of its grid, with an
  * {@link UndoLog} while windows can be rolled back. Its methods run on its own thread during a
  * window and the other per-domain tasks, and on the coordinator's in serial phases (the owner then
  * waits at the barrier). Domain 0 is the coordinator's own. The run's merged phases use one more
@@ -25,11 +25,11 @@ final class Domain {
 
     final int id;
     private final DiscTable table;
-    private final SlabColumns columns;
+    private final DomainGrid grid;
     private final RunClock clock;
     private final DomainTask task;
     final CalendarQueue queue;
-    /** This domain's changes to the records, and its predictions (its own scratch, only its own columns). */
+    /** This domain's changes to the records, and its predictions (its own scratch, only its own grid). */
     final DiscMotion motion;
     final CellPredictor pred;
     /** Only with several domains (then windows can be rolled back); else null. */
@@ -75,19 +75,19 @@ final class Domain {
      */
     carom.core.engine.Checkpoints stopPoll;
 
-    Domain(int id, DiscTable table, SlabColumns columns, DiscMarks marks, RunClock clock, DomainTask task,
+    Domain(int id, DiscTable table, DomainGrid grid, DiscMarks marks, RunClock clock, DomainTask task,
            EnergyAudit audit, ProgressListener progress, Scene scene) {
         this.id = id;
         this.table = table;
-        this.columns = columns;
+        this.grid = grid;
         this.clock = clock;
         this.task = task;
         this.n = table.n;
-        this.queue = table.newCalendar(n / columns.domains);
-        this.logging = columns.domains > 1;
+        this.queue = table.newCalendar(n / grid.domains);
+        this.logging = grid.domains > 1;
         this.motion = new DiscMotion(table);
-        this.pred = logging ? new CellPredictor(motion, columns.owner, id, columns.edge) : new CellPredictor(motion);
-        this.log = logging ? new UndoLog(motion, columns, marks) : null;
+        this.pred = logging ? new CellPredictor(motion, grid.owner, id, grid.edge) : new CellPredictor(motion);
+        this.log = logging ? new UndoLog(motion, grid, marks) : null;
         this.stallGuard = new StallGuard(scene, table::sceneId);
         this.virial = VirialAccumulator.forRun(clock.until);
         this.audit = audit;
@@ -142,8 +142,8 @@ final class Domain {
             switch (kind) {
                 case DomainTask.PREDICT -> predictOwn();
                 case DomainTask.REPLAN -> replanOwn(task.shift);
-                case DomainTask.FINAL -> motion.finalRange(task.finalOut, (int) ((long) n * id / columns.domains),
-                        (int) ((long) n * (id + 1) / columns.domains), clock.untilLocal, clock.until);
+                case DomainTask.FINAL -> motion.finalRange(task.finalOut, (int) ((long) n * id / grid.domains),
+                        (int) ((long) n * (id + 1) / grid.domains), clock.untilLocal, clock.until);
                 default -> throw new IllegalStateException("unknown task " + kind);
             }
         } catch (Throwable e) {
@@ -164,12 +164,12 @@ final class Domain {
     }
 
     /**
-     * Schedules every mobile disc of this domain's columns, awake or asleep (before the first window;
+     * Schedules every mobile disc of this domain's grid, awake or asleep (before the first window;
      * a cluster node also after a recovery, from a checkpoint in which discs may sleep).
      */
     private void predictOwn() {
         for (int i = 0; i < n; i++) {
-            if (columns.ownerOfDisc(i) == id && table.mobile(i)) {
+            if (grid.ownerOfDisc(i) == id && table.mobile(i)) {
                 table.setEventTime(i, predictFull(i, 0));
             }
         }
@@ -201,7 +201,7 @@ final class Domain {
     private int collectMembers() {
         int count = 0;
         for (int i = 0; i < n; i++) {
-            if (columns.ownerOfDisc(i) == id) {
+            if (grid.ownerOfDisc(i) == id) {
                 count++;
             }
         }
@@ -210,7 +210,7 @@ final class Domain {
         }
         int m = 0;
         for (int i = 0; i < n; i++) {
-            if (columns.ownerOfDisc(i) == id) {
+            if (grid.ownerOfDisc(i) == id) {
                 members[m++] = i;
             }
         }
@@ -242,7 +242,7 @@ final class Domain {
             if (now > end || (now == end && !inclusive)) {
                 return;
             }
-            if (logging && columns.migratesAtEvent(i, id)) {
+            if (logging && grid.migratesAtEvent(i, id)) {
                 stopTime = now;
                 stopDisc = i;
                 return;
@@ -266,9 +266,9 @@ final class Domain {
                 queue.insert(i, predictFull(i, now));
             } else if (k != HIT) {
                 crossings++;
-                int slabBefore = slabOf != null ? slabOf[table.colOfDisc(i)] : 0;
+                int slabBefore = slabOf != null ? slabOf[table.cellOfDisc(i)] : 0;
                 queue.insert(i, pred.crossAndPredict(i, now, k));
-                if (slabOf != null && slabOf[table.colOfDisc(i)] != slabBefore) {
+                if (slabOf != null && slabOf[table.cellOfDisc(i)] != slabBefore) {
                     crossSlabEvents++;
                 }
             } else {
@@ -354,7 +354,7 @@ final class Domain {
         if (logging) {
             log.save(b);
         }
-        if (slabOf != null && slabOf[table.colOfDisc(a)] != slabOf[table.colOfDisc(b)]) {
+        if (slabOf != null && slabOf[table.cellOfDisc(a)] != slabOf[table.cellOfDisc(b)]) {
             crossSlabEvents++;
         }
         double w = motion.collidePair(a, b, now, abs, stallGuard);

@@ -28,7 +28,7 @@ public final class SlabMirror {
     private static final double INF = Double.POSITIVE_INFINITY;
 
     private final DiscTable table;
-    private final SlabColumns columns;
+    private final DomainGrid grid;
     private final DiscMarks marks;
     private final RunClock clock;
     private final DiscMotion motion;
@@ -48,22 +48,28 @@ public final class SlabMirror {
     private final int[][] segmentsFrom;
     /** The earliest violation found by {@link #verify}: time, discs, nodes, the nodes' log entry codes. */
     private final EarliestViolation<Integer> violation = new EarliestViolation<>();
+    /** Scratch: the foreign cells next to a segment's cell, and their distinct owners. */
+    private final int[] near = new int[8];
+    private final int[] nearOwners = new int[8];
     public long crossPairCollisions;
 
-    /** A mirror of {@code requestedDomains} slabs (fewer if the box is too narrow: {@link #domains}). */
-    public SlabMirror(Scene scene, double cellFactor, int requestedDomains, double until) {
+    /**
+     * A mirror of {@code requestedDomains} domains (fewer if the box is too small: {@link #domains}) in
+     * {@code domainRows} rows ({@link DomainGrid#rowsTunable}; 0: auto, then {@link #domainRows} says).
+     */
+    public SlabMirror(Scene scene, double cellFactor, int requestedDomains, int domainRows, double until) {
         this.table = new DiscTable(scene, scene.newDiscs(), cellFactor);
-        this.columns = new SlabColumns(table, requestedDomains);
+        this.grid = new DomainGrid(table, requestedDomains, domainRows);
         this.marks = new DiscMarks(table.n);
         this.clock = new RunClock(until);
-        int k = columns.domains;
+        int k = grid.domains;
         Domain[] views = new Domain[k];
         DomainTask task = new DomainTask();
         for (int d = 0; d < k; d++) {
-            views[d] = new Domain(d, table, columns, marks, clock, task, null, ProgressListener.NONE, scene);
+            views[d] = new Domain(d, table, grid, marks, clock, task, null, ProgressListener.NONE, scene);
         }
         this.motion = views[0].motion;
-        this.cross = k > 1 ? new CrossPredictions(table, columns, views) : null;
+        this.cross = k > 1 ? new CrossPredictions(table, grid, views) : null;
         this.scratch = new SavedStates(motion, 4);
         this.doublesPer = scratch.doublesPerState();
         this.flight = table.flight;
@@ -84,7 +90,12 @@ public final class SlabMirror {
 
     /** Slabs the box is cut into (every node builds the same cut). */
     public int domains() {
-        return columns.domains;
+        return grid.domains;
+    }
+
+    /** Rows of domains: 1 for vertical slabs, more for blocks. */
+    public int domainRows() {
+        return grid.domainRows;
     }
 
     /** The local time of the run's end, and the epoch local times count from. */
@@ -102,9 +113,9 @@ public final class SlabMirror {
         clock.untilLocal = clock.until - epoch;
     }
 
-    /** The slab that owns disc i (by its record here: right for discs in edge columns). */
+    /** The slab that owns disc i (by its record here: right for discs in edge grid). */
     public int ownerOf(int i) {
-        return columns.ownerOfDisc(i);
+        return grid.ownerOfDisc(i);
     }
 
     /** Writes owners' records into the mirror (cells relinked where they changed). */
@@ -184,28 +195,23 @@ public final class SlabMirror {
             return;
         }
         to = Math.min(to, limit);
-        if (!columns.edge[col]) {
+        if (!grid.edge[row * table.cols + col]) {
             return;
         }
         int entryX = load(0, a, x, s);
-        for (int dc = -1; dc <= 1; dc += 2) {
-            int c = columns.foreignColumn(col, dc, a);
-            if (c < 0) {
-                continue;
-            }
-            int b = columns.owner[c];
-            for (int dr = -1; dr <= 1; dr++) {
-                int r = columns.wrappedRow(row + dr);
-                if (r < 0) {
-                    continue;
-                }
-                for (int y = table.firstInCell(c, r); y != DiscTable.NIL; y = table.nextInCell(y)) {
-                    if (!marks.changedThisWindow(y)) {
-                        motion.load(seg, y, 1);
-                        contact(a, x, entryX, b, y, WindowVerifier.UNTOUCHED, from, to);
-                    }
+        int m = grid.foreignNeighbours(col, row, a, near);
+        for (int k = 0; k < m; k++) {
+            int b = grid.owner[near[k]];
+            for (int y = table.firstInCell(near[k]); y != DiscTable.NIL; y = table.nextInCell(y)) {
+                if (!marks.changedThisWindow(y)) {
+                    motion.load(seg, y, 1);
+                    contact(a, x, entryX, b, y, WindowVerifier.UNTOUCHED, from, to);
                 }
             }
+        }
+        int owners = grid.ownersOf(near, m, nearOwners);
+        for (int o = 0; o < owners; o++) {
+            int b = nearOwners[o];
             StateBatch changedB = records[b];
             for (int q = 0; q < changedB.size(); q++) {
                 int y = changedB.ids()[q];
@@ -336,7 +342,7 @@ public final class SlabMirror {
      * and slab count continues with the very same bits.
      */
     public void save(carom.core.engine.StateBytes.Out out) {
-        out.putInt(columns.domains).putDouble(clock.until).putDouble(clock.epoch).putLong(crossPairCollisions)
+        out.putInt(grid.domains).putDouble(clock.until).putDouble(clock.epoch).putLong(crossPairCollisions)
                 .putDoubles(virial.blockSums()).putDouble(virial.total());
         motion.saveRestCounts(out);
         TableState.save(table, out);
@@ -349,8 +355,8 @@ public final class SlabMirror {
     /** Takes up what {@link #save} wrote; a state that does not fit is an {@link IllegalArgumentException}. */
     public void restore(carom.core.engine.StateBytes.In in) {
         int domains = in.getInt();
-        if (domains != columns.domains) {
-            throw new IllegalArgumentException("engine state: " + domains + " slabs, the run has " + columns.domains);
+        if (domains != grid.domains) {
+            throw new IllegalArgumentException("engine state: " + domains + " slabs, the run has " + grid.domains);
         }
         double savedUntil = in.getDouble();
         startAt(in.getDouble());

@@ -16,14 +16,14 @@ import carom.engines.kernel.TableState;
  *
  * <p>Invariant: in this node's table a disc lies in one of this slab's columns if and only if this
  * node owns it. Foreign discs are never read here (the domain's predictions are filtered to its own
- * columns); their records go stale, and a disc coming in ({@link #install}) is written whole, a
+ * grid); their records go stale, and a disc coming in ({@link #install}) is written whole, a
  * disc going out ({@link #emigrate}) is moved into the foreign column it enters.
  */
 public final class SlabNode {
     private static final String TAG = "cluster-node/1";
 
     private final DiscTable table;
-    private final SlabColumns columns;
+    private final DomainGrid grid;
     private final DiscMarks marks;
     private final RunClock clock;
     private final Domain domain;
@@ -34,15 +34,16 @@ public final class SlabNode {
     /** Where {@link #finalStates} and {@link #statesAt} compute states, by scene id (made at the first call). */
     private Discs scratchDiscs;
 
-    public SlabNode(Scene scene, double cellFactor, int domains, int id, double until) {
+    public SlabNode(Scene scene, double cellFactor, int domains, int domainRows, int id, double until) {
         this.table = new DiscTable(scene, scene.newDiscs(), cellFactor);
-        this.columns = new SlabColumns(table, domains);
-        if (columns.domains != domains) {
-            throw new IllegalStateException("node " + id + " cut " + columns.domains + " slabs, the coordinator " + domains);
+        this.grid = new DomainGrid(table, domains, domainRows);
+        if (grid.domains != domains || grid.domainRows != domainRows) {
+            throw new IllegalStateException("node " + id + " cut " + grid.domains + " domains in " + grid.domainRows
+                    + " rows, the coordinator " + domains + " in " + domainRows);
         }
         this.marks = new DiscMarks(table.n);
         this.clock = new RunClock(until);
-        this.domain = new Domain(id, table, columns, marks, clock, task, null, ProgressListener.NONE, scene);
+        this.domain = new Domain(id, table, grid, marks, clock, task, null, ProgressListener.NONE, scene);
         this.scratch = new SavedStates(domain.motion, 4);
         this.doublesPer = scratch.doublesPerState();
     }
@@ -83,7 +84,7 @@ public final class SlabNode {
     public StateBatch ownStates(int from, int to) {
         StateBatch.Builder b = builder(to - from);
         for (int i = from; i < to; i++) {
-            if (columns.ownerOfDisc(i) == domain.id) {
+            if (grid.ownerOfDisc(i) == domain.id) {
                 addRecord(b, i);
             }
         }
@@ -99,7 +100,7 @@ public final class SlabNode {
     public StateBatch edgeStates() {
         StateBatch.Builder b = builder(64);
         for (int i = 0; i < table.n; i++) {
-            if (table.mobile(i) && columns.ownerOfDisc(i) == domain.id && columns.inEdgeColumn(i)) {
+            if (table.mobile(i) && grid.ownerOfDisc(i) == domain.id && grid.inEdgeCell(i)) {
                 addRecord(b, i);
             }
         }
@@ -174,12 +175,12 @@ public final class SlabNode {
      */
     public StateBatch install(StateBatch batch, int q, double now) {
         int i = batch.ids()[q];
-        if (columns.ownerOfDisc(i) == domain.id) {
+        if (grid.ownerOfDisc(i) == domain.id) {
             domain.queue.remove(i);
         }
         scratch.copyIn(0, batch.doubles(), q * doublesPer, batch.ints(), q * SavedStates.intsPerState());
         scratch.restore(0, i);
-        if (columns.ownerOfDisc(i) != domain.id) {
+        if (grid.ownerOfDisc(i) != domain.id) {
             throw new IllegalStateException("disc " + table.sceneId(i) + " installed in slab " + domain.id
                     + " but lies in column " + table.colOfDisc(i));
         }
@@ -239,9 +240,9 @@ public final class SlabNode {
         if (scratchDiscs == null) {
             scratchDiscs = new Discs(table.n);
         }
-        StateBatch.Builder b = new StateBatch.Builder(4, 0, (to - from) / columns.domains + 1);
+        StateBatch.Builder b = new StateBatch.Builder(4, 0, (to - from) / grid.domains + 1);
         for (int k = from; k < to; k++) {
-            if (columns.ownerOfDisc(k) == domain.id) {
+            if (grid.ownerOfDisc(k) == domain.id) {
                 state.write(scratchDiscs, k);
                 int o = table.sceneId(k);
                 int q = b.add(o, 0, 0);
@@ -265,7 +266,7 @@ public final class SlabNode {
      * continues with the very same bits.
      */
     public byte[] save() {
-        StateBytes.Out out = new StateBytes.Out(TAG).putInt(domain.id).putInt(columns.domains)
+        StateBytes.Out out = new StateBytes.Out(TAG).putInt(domain.id).putInt(grid.domains)
                 .putDouble(clock.until).putDouble(clock.epoch);
         TableState.save(table, out);
         domain.save(out);
@@ -278,9 +279,9 @@ public final class SlabNode {
         StateBytes.In in = new StateBytes.In(saved, TAG);
         int id = in.getInt();
         int domains = in.getInt();
-        if (id != domain.id || domains != columns.domains) {
+        if (id != domain.id || domains != grid.domains) {
             throw new IllegalArgumentException("engine state: slab " + id + " of " + domains + " given to slab "
-                    + domain.id + " of " + columns.domains);
+                    + domain.id + " of " + grid.domains);
         }
         double savedUntil = in.getDouble();
         startAt(in.getDouble());

@@ -107,7 +107,7 @@ final class SlabsCounters {
     }
 
     /** Every counter the run reports, by its key. */
-    Map<String, Long> toMap(Domain[] domains, int slabs, long crossPredictions, int spins, boolean gravity) {
+    Map<String, Long> toMap(Domain[] domains, int slabs, int domainRows, long crossPredictions, int spins, boolean gravity) {
         long crossings = migrations;
         long stale = 0;
         long predictions = 0;
@@ -120,6 +120,7 @@ final class SlabsCounters {
         }
         Map<String, Long> counters = new HashMap<>();
         counters.put(Counter.DOMAINS.key, (long) slabs);
+        counters.put(Counter.DOMAIN_ROWS.key, (long) domainRows);
         counters.put(Counter.EVENTS.key, events(domains));
         counters.put(Counter.CELL_CROSSINGS.key, crossings);
         counters.put(Counter.STALE_EVENTS.key, stale);

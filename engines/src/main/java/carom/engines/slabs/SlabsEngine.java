@@ -10,8 +10,8 @@ import carom.core.scene.Scene;
 import java.util.List;
 
 /**
- * An exact parallel engine: the box is cut into {@code --threads} vertical slabs of cell columns, one
- * domain per thread, each a {@code fast}-style event loop (one event per disc, cell crossings as
+ * An exact parallel engine: the box is cut into {@code --threads} vertical slabs of cell columns (or
+ * blocks, {@code domainRows}: {@link DomainGrid}), one domain per thread, each a {@code fast}-style event loop (one event per disc, cell crossings as
  * events, calendar queue) over the discs it owns. Domains run optimistic windows up to the earliest
  * predicted cross-domain event; after a spinning barrier the window is verified against the logged
  * trajectories of the discs that changed near a slab boundary, undone back to the first real
@@ -21,7 +21,8 @@ import java.util.List;
  * domain, which is the {@code fast} algorithm on one thread ({@link MergePolicy}). Gives the serial
  * reference's final state to rounding; scenes too small for slabs of a few columns run on one domain.
  *
- * <p>Tunables: {@code cellFactor}, {@code auditEnergy} (as {@code fast}; with several domains the
+ * <p>Tunables: {@code cellFactor}, {@code domainRows} (1: slabs, the default; R: blocks in R rows; 0: the
+ * layout with the shortest cuts), {@code auditEnergy} (as {@code fast}; with several domains the
  * energy is audited at every barrier); {@code sequential} (measurement mode: all domains' windows run
  * one after another on the calling thread, for single-core costs); {@code spins} (busy-wait iterations at
  * the barrier before a thread parks); {@code windowEvents}, {@code mergeEvents} and {@code estimateWindows}
@@ -29,6 +30,9 @@ import java.util.List;
  * them: {@link MergePolicy}). Counters: see {@link SlabsCounters}.
  */
 public final class SlabsEngine implements Engine {
+    /** Vertical slabs by default, the layout every measurement of this engine was taken with. */
+    static final Tunable.Whole DOMAIN_ROWS = DomainGrid.rowsTunable(1);
+
     @Override
     public String name() {
         return "slabs";
@@ -46,7 +50,7 @@ public final class SlabsEngine implements Engine {
 
     @Override
     public List<Tunable<?>> tunables() {
-        return List.of(KernelTunables.CELL_FACTOR, Tunables.AUDIT_ENERGY, SlabsRun.SEQUENTIAL, SpinPolicy.SPINS,
+        return List.of(KernelTunables.CELL_FACTOR, DOMAIN_ROWS, Tunables.AUDIT_ENERGY, SlabsRun.SEQUENTIAL, SpinPolicy.SPINS,
                 MergePolicy.WINDOW_EVENTS, MergePolicy.MERGE_EVENTS,
                 MergePolicy.ESTIMATE_WINDOWS);
     }

@@ -18,7 +18,7 @@ import carom.engines.kernel.DiscTable;
 import java.util.Arrays;
 
 /**
- * One run of the slabs engine: the box cut into domains ({@link SlabColumns}), each a thread running
+ * One run of the slabs engine: the box cut into domains ({@link DomainGrid}), each a thread running
  * the kernel's event loop over its own discs ({@link Domain}), and this class, the coordinator, which
  * runs the windows and the serial phases between them, or, while windows do not pay, merged phases.
  *
@@ -77,7 +77,7 @@ final class SlabsRun {
     private final ProgressListener progress;
     double energyStart;
     double[] momentumStart;
-    private final SlabColumns columns;
+    private final DomainGrid grid;
     final int domainCount;
     /**
      * Measurement mode (tunable {@code sequential}): the coordinator runs every domain's window itself,
@@ -148,8 +148,8 @@ final class SlabsRun {
         this.momentumStart = Observables.momentum(src);
         this.clock = new RunClock(until);
 
-        this.columns = new SlabColumns(table, options.threads());
-        int k = columns.domains;
+        this.grid = new DomainGrid(table, options.threads(), SlabsEngine.DOMAIN_ROWS.intOf(options));
+        int k = grid.domains;
         this.domainCount = k;
         this.sequential = SEQUENTIAL.of(options);
         this.spins = SpinPolicy.spinsOf(options, n, Runtime.getRuntime().availableProcessors(), SpinPolicy.loadAverage());
@@ -158,12 +158,12 @@ final class SlabsRun {
         this.marks = many ? new DiscMarks(n) : null;
         this.domains = new Domain[k];
         for (int d = 0; d < k; d++) {
-            domains[d] = new Domain(d, table, columns, marks, clock, task, audit, progress, scene);
+            domains[d] = new Domain(d, table, grid, marks, clock, task, audit, progress, scene);
         }
-        this.whole = many ? new Domain(0, table, new SlabColumns(table, 1), null, clock, task, audit, progress, scene)
+        this.whole = many ? new Domain(0, table, new DomainGrid(table, 1, 1), null, clock, task, audit, progress, scene)
                 : domains[0];
         if (many) {
-            whole.slabOf = columns.owner;
+            whole.slabOf = grid.owner;
         }
         this.counted = many ? Arrays.copyOf(domains, k + 1) : domains;
         if (many) {
@@ -172,8 +172,8 @@ final class SlabsRun {
         this.policy = new MergePolicy(options, n);
         this.merged = !many || policy.startsMerged();
         this.workers = new Thread[sequential ? 0 : k - 1];
-        this.cross = many ? new CrossPredictions(table, columns, domains) : null;
-        this.verifier = many ? new WindowVerifier(table, columns, domains, marks) : null;
+        this.cross = many ? new CrossPredictions(table, grid, domains) : null;
+        this.verifier = many ? new WindowVerifier(table, grid, domains, marks) : null;
         this.samples = SampleSchedule.of(scene, options);
         this.checkpoints = options.checkpoints() == null ? null : new SlabsCheckpoint(this, options.checkpoints());
         whole.stopPoll = options.checkpoints();
@@ -206,7 +206,7 @@ final class SlabsRun {
     }
 
     private Domain ownerOf(int i) {
-        return domains[columns.ownerOfDisc(i)];
+        return domains[grid.ownerOfDisc(i)];
     }
 
     RunResult run() {
@@ -283,7 +283,7 @@ final class SlabsRun {
         return new RunResult("slabs", true, out, until, counters.pairCollisions(counted),
                 counters.wallCollisions(counted), counters.events(counted), energyStart, energyEnd, momentumStart,
                 Observables.momentum(out), pressure, 0, seconds,
-                counters.toMap(counted, domainCount, cross == null ? 0 : cross.predictions, spins,
+                counters.toMap(counted, domainCount, grid.domainRows, cross == null ? 0 : cross.predictions, spins,
                         table.flight.maxAcceleration() > 0),
                 SlabsCounters.energyPutToRest(counted));
     }
@@ -433,7 +433,7 @@ final class SlabsRun {
 
     /**
      * Ends the split phase at local {@code now}, between windows, every event before {@code now}
-     * processed: the discs of edge columns, whose slabs predicted them against their own columns only,
+     * processed: the discs of edge cells, whose slabs predicted them against their own columns only,
      * are predicted against their whole neighbourhood; every other disc's event already is its next
      * one. The cross events are dropped and the whole domain's calendar is built over every disc, for a
      * phase of the policy's budget of events.
@@ -441,7 +441,7 @@ final class SlabsRun {
     private void merge(double now) {
         counters.merges++;
         for (int i = 0; i < n; i++) {
-            if (table.mobile(i) && columns.inEdgeColumn(i)) {
+            if (table.mobile(i) && grid.inEdgeCell(i)) {
                 table.setEventTime(i, whole.predictFull(i, now));
             }
         }
@@ -472,9 +472,9 @@ final class SlabsRun {
             if (!table.mobile(i)) {
                 continue;
             }
-            int own = columns.ownerOfDisc(i);
+            int own = grid.ownerOfDisc(i);
             int p = table.partner(i);
-            if (columns.inEdgeColumn(i) || (p >= 0 && columns.ownerOfDisc(p) != own)) {
+            if (grid.inEdgeCell(i) || (p >= 0 && grid.ownerOfDisc(p) != own)) {
                 table.setEventTime(i, domains[own].predictFull(i, now));
             }
         }

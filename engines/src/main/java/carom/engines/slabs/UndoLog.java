@@ -27,7 +27,7 @@ final class UndoLog {
     static final int WAKES = 6;
     private static final int COUNTERS = 7;
 
-    private final SlabColumns columns;
+    private final DomainGrid grid;
     private final DiscMarks marks;
     /** The domain's changes to the records: its resting-contact counts are logged with each event. */
     private final DiscMotion motion;
@@ -51,8 +51,8 @@ final class UndoLog {
     private int[] changed = new int[64];
     private int changedCount;
 
-    UndoLog(DiscMotion motion, SlabColumns columns, DiscMarks marks) {
-        this.columns = columns;
+    UndoLog(DiscMotion motion, DomainGrid grid, DiscMarks marks) {
+        this.grid = grid;
         this.marks = marks;
         this.motion = motion;
         this.saved = new SavedStates(motion, 128);
@@ -104,7 +104,7 @@ final class UndoLog {
         }
         disc[e] = i;
         event[e] = events - 1;
-        if (columns.inEdgeColumn(i)) {
+        if (grid.inEdgeCell(i)) {
             // An edge-column segment: chained for verify.
             markChanged(i);
             previousEdgeEntry[e] = marks.lastEntry(i);
@@ -115,7 +115,7 @@ final class UndoLog {
 
     /** After an event: a disc now in an edge column is changed (it may just have entered it). */
     void markIfEdge(int i) {
-        if (columns.inEdgeColumn(i)) {
+        if (grid.inEdgeCell(i)) {
             markChanged(i);
         }
     }

@@ -23,7 +23,7 @@ final class WindowVerifier {
     private static final double INF = Double.POSITIVE_INFINITY;
 
     private final DiscTable table;
-    private final SlabColumns columns;
+    private final DomainGrid grid;
     private final Domain[] domains;
     private final DiscMarks marks;
     /** Reads current records (it uses no scratch of its own). */
@@ -35,10 +35,13 @@ final class WindowVerifier {
 
     /** The earliest violation found: its time (+Infinity if none), its discs, their domains and log entries. */
     private final EarliestViolation<Domain> violation = new EarliestViolation<>();
+    /** Scratch: the foreign cells next to a segment's cell, and their distinct owners. */
+    private final int[] near = new int[8];
+    private final int[] nearOwners = new int[8];
 
-    WindowVerifier(DiscTable table, SlabColumns columns, Domain[] domains, DiscMarks marks) {
+    WindowVerifier(DiscTable table, DomainGrid grid, Domain[] domains, DiscMarks marks) {
         this.table = table;
-        this.columns = columns;
+        this.grid = grid;
         this.domains = domains;
         this.marks = marks;
         this.reader = domains[0].motion;
@@ -97,30 +100,25 @@ final class WindowVerifier {
             return;
         }
         to = Math.min(to, limit);
-        if (!columns.edge[col]) {
+        if (!grid.edge[row * table.cols + col]) {
             return;
         }
         loadSegment(0, a, x, entry);
-        for (int dc = -1; dc <= 1; dc += 2) {
-            int c = columns.foreignColumn(col, dc, a.id);
-            if (c < 0) {
-                continue;
-            }
-            Domain b = domains[columns.owner[c]];
-            for (int dr = -1; dr <= 1; dr++) {
-                int r = columns.wrappedRow(row + dr);
-                if (r < 0) {
-                    continue;
-                }
-                for (int y = table.firstInCell(c, r); y != DiscTable.NIL; y = table.nextInCell(y)) {
-                    // In an edge column now and not changed: no event in this window.
-                    if (!marks.changedThisWindow(y)) {
-                        loadSegment(1, b, y, RECORD);
-                        contact(a, x, entry, b, y, UNTOUCHED, from, to);
-                    }
+        int m = grid.foreignNeighbours(col, row, a.id, near);
+        for (int k = 0; k < m; k++) {
+            Domain b = domains[grid.owner[near[k]]];
+            for (int y = table.firstInCell(near[k]); y != DiscTable.NIL; y = table.nextInCell(y)) {
+                // In an edge cell now and not changed: no event in this window.
+                if (!marks.changedThisWindow(y)) {
+                    loadSegment(1, b, y, RECORD);
+                    contact(a, x, entry, b, y, UNTOUCHED, from, to);
                 }
             }
-            // Changed discs of b: wherever they were, on every segment.
+        }
+        // Changed discs of each foreign domain next to the cell: wherever they were, on every segment.
+        int owners = grid.ownersOf(near, m, nearOwners);
+        for (int o = 0; o < owners; o++) {
+            Domain b = domains[nearOwners[o]];
             UndoLog logB = b.log;
             for (int q = 0; q < logB.changedCount(); q++) {
                 int y = logB.changed(q);

@@ -161,14 +161,17 @@ class ClusterEngineTest {
     }
 
     @Test
-    void twoSlabsOnEachOfTwoJvmsMatchSerial() {
-        // --threads 2: each JVM hosts two node actors, four slabs in all, two of them in the coordinator's JVM.
+    void fourBlocksOnTwoJvmsMatchSerial() {
+        // --threads 2: each JVM hosts two node actors, four domains in all, two of them in the coordinator's
+        // JVM; in this walled square box they are 2 x 2 blocks (the layout with the shortest cuts), so
+        // contacts and migrations cross vertical and horizontal edges and the corner where all four meet.
         Scene scene = RandomScenes.dense(900, 0.7, false, 4, 0.15);
         RunResult r = new ClusterEngine().run(scene, RunOptions.until(scene.until()).withThreads(2).withTunable("nodes", "2"));
         Invariants.noOverlapsAndInside(scene, r.finalState());
         assertThat(r.counters().get("nodes")).isEqualTo(2);
         assertThat(r.counters().get("domains")).isEqualTo(4);
-        assertThat(r.counters().get("crossDomainEvents")).as("cross-slab contacts").isPositive();
+        assertThat(r.counters().get("domainRows")).isEqualTo(2);
+        assertThat(r.counters().get("crossDomainEvents")).as("cross-domain contacts").isPositive();
         assertThat(r.counters().get("rollbacks")).as("rollbacks").isPositive();
         Invariants.assertSameRun(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())), SAME);
     }
