@@ -3,7 +3,9 @@
 #   N         discs (packing fraction 0.5, periodic: GasBench's gas, see make_scene.py)
 #   PER_DISC  pair collisions per disc of each measured run (after 2 per disc of equilibration)
 #   CONFIG    fast | slabs2 | clusterK (K nodes, default checkpoints) | clusterK-nock (no checkpoint:
-#             checkpointWindows=2^40) | clusterKxT-nock (K nodes of T slabs each, --threads T, no checkpoint)
+#             checkpointWindows=2^40) | clusterKxT-nock (K nodes of T domains each, --threads T, no checkpoint;
+#             the domains in the layout with the shortest cuts, blocks where they cut less than slabs)
+#             | clusterKxT-nock-slabs (the same, kept to vertical slabs: --option domainRows=1)
 # Writes raw/N-CONFIG.json (or into $RAW) (SUMMARY.json), .err (stderr), .proc.json (CPU and peak memory per JVM,
 # procwatch.py) and a line per run in raw/runs.log with `uptime` before and after. Large scenes go to
 # $SCRATCH (default /tmp/carom-cluster-costs), not into the repository.
@@ -36,6 +38,9 @@ for config in "$@"; do
   case $config in
     fast) args=(--engine fast) ;;
     slabs2) args=(--engine slabs --threads 2) ;;
+    cluster*x*-nock-slabs) kt=${config#cluster}; kt=${kt%-nock-slabs}
+        args=(--engine cluster --nodes "${kt%x*}" --threads "${kt#*x}" --option checkpointWindows=1099511627776
+              --option domainRows=1) ;;
     cluster*x*-nock) kt=${config#cluster}; kt=${kt%-nock}
         args=(--engine cluster --nodes "${kt%x*}" --threads "${kt#*x}" --option checkpointWindows=1099511627776) ;;
     cluster*-nock) k=${config#cluster}; k=${k%-nock}; args=(--engine cluster --nodes "$k" --option checkpointWindows=1099511627776) ;;

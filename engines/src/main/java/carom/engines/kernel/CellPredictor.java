@@ -38,10 +38,10 @@ import carom.core.state.Discs;
  * shares its {@link DiscMotion}'s two-slot window, so each thread needs its own; no allocation per
  * event.
  *
- * <p>Owner filter ({@code slabs}): with {@code cellOwner} set, only discs of cells owned by
- * {@code owner} are predicted against, and an interior {@code edgeCell} is scanned as a border cell
- * (so the filter applies). With {@code cellOwner} null ({@code fast}) every cell is seen; the filter
- * then costs one null test per prediction.
+ * <p>Owner filter ({@code slabs}): with an {@link OwnerFilter}, only discs of the domain's own cells
+ * are predicted against, and an interior cell in an edge column or row is scanned as a border cell (so
+ * the filter applies). Without one ({@code fast}) every cell is seen; the filter then costs one null
+ * test per prediction.
  */
 public final class CellPredictor {
     private static final double[] NO_SHIFT = new double[9];
@@ -80,11 +80,14 @@ public final class CellPredictor {
     /** The growth effect: predictions go through {@link GrowthLaw} (see {@link DiscTable#growing}). */
     private final boolean growing;
     private final DiscTable table;
-    /** Owning domain of each cell (row-major), or null if every cell is seen; this predictor's domain. */
-    private final int[] cellOwner;
-    private final int owner;
-    /** Cells that, interior or not, need the owner filter (a foreign cell is among their neighbours), or null. */
-    private final boolean[] edgeCell;
+    /** The block of each cell column and row, or null if every cell is seen; this predictor's block. */
+    private final int[] colBlock;
+    private final int[] rowBlock;
+    private final int ownCol;
+    private final int ownRow;
+    /** Cell columns and rows beside another block's, whose cells need the owner filter even inside the box. */
+    private final boolean[] edgeCol;
+    private final boolean[] edgeRow;
 
     /** Cells a border cell's {@link #scan} visits (row-major index) and the image shift of their discs. */
     private final int[] visitCell = new int[9];
@@ -102,11 +105,11 @@ public final class CellPredictor {
 
     /** A predictor that sees every column ({@code fast}). */
     public CellPredictor(DiscMotion motion) {
-        this(motion, null, 0, null);
+        this(motion, null);
     }
 
-    /** A predictor that sees only cells with {@code cellOwner[row * cols + col] == owner} ({@code slabs}). */
-    public CellPredictor(DiscMotion motion, int[] cellOwner, int owner, boolean[] edgeCell) {
+    /** A predictor that sees only the cells {@code filter} leaves it ({@code slabs}), or every cell if null. */
+    public CellPredictor(DiscMotion motion, OwnerFilter filter) {
         DiscTable table = motion.table;
         this.motion = motion;
         this.pair = motion.pair;
@@ -133,9 +136,12 @@ public final class CellPredictor {
         this.ahead = table.ahead;
         this.growing = table.growing;
         this.table = table;
-        this.cellOwner = cellOwner;
-        this.owner = owner;
-        this.edgeCell = edgeCell;
+        this.colBlock = filter == null ? null : filter.colBlock();
+        this.rowBlock = filter == null ? null : filter.rowBlock();
+        this.ownCol = filter == null ? 0 : filter.ownCol();
+        this.ownRow = filter == null ? 0 : filter.ownRow();
+        this.edgeCol = filter == null ? null : filter.edgeCol();
+        this.edgeRow = filter == null ? null : filter.edgeRow();
     }
 
     /**
@@ -250,7 +256,7 @@ public final class CellPredictor {
 
     /** Whether cell (col, row) is interior (all 8 neighbours in the box) and needs no owner filter. */
     private boolean interior(int col, int row) {
-        return col > 0 && col < cols - 1 && row > 0 && row < rows - 1 && (edgeCell == null || !edgeCell[row * cols + col]);
+        return col > 0 && col < cols - 1 && row > 0 && row < rows - 1 && (edgeCol == null || !(edgeCol[col] || edgeRow[row]));
     }
 
     /**
@@ -398,7 +404,7 @@ public final class CellPredictor {
             shiftY = r < 0 ? -height : height;
             r = r < 0 ? r + rows : r - rows;
         }
-        if (cellOwner != null && cellOwner[r * cols + c] != owner) {
+        if (colBlock != null && (colBlock[c] != ownCol || rowBlock[r] != ownRow)) {
             return m;
         }
         visitCell[m] = r * cols + c;

@@ -123,13 +123,14 @@ final class CrossPredictions {
         if (!table.mobile(i)) {
             return;
         }
-        int cell = table.cellOfDisc(i);
-        if (!grid.edge[cell]) {
+        int col = table.colOfDisc(i);
+        int row = table.rowOfDisc(i);
+        if (!grid.isEdge(col, row)) {
             heap.remove(i);
             return;
         }
         predictions++;
-        int own = grid.owner[cell];
+        int own = grid.owner(col, row);
         Domain dom = domains[own];
         double best = INF;
         int bestP = NONE;
@@ -143,7 +144,7 @@ final class CrossPredictions {
             horizon = now + dom.pred.timeToLeaveCell(i, now);
         }
         reader.load(xpair, i, 0);
-        int m = grid.foreignNeighbours(table.colOfDisc(i), table.rowOfDisc(i), own, near);
+        int m = grid.foreignNeighbours(col, row, own, near);
         for (int k = 0; k < m; k++) {
             for (int j = table.firstInCell(near[k]); j != DiscTable.NIL; j = table.nextInCell(j)) {
                 reader.load(xpair, j, 1);

@@ -64,10 +64,10 @@ final class Domain {
      */
     long eventLimit = Long.MAX_VALUE;
     /**
-     * The merged phases' domain only (else null): the slab of each column, to count the events that
+     * The merged phases' domain only (else null): how the split run cuts the box, to count the events that
      * would have been cross-slab ones (contacts of two slabs' discs, migrations) had the run been split.
      */
-    int[] slabOf;
+    DomainGrid slabOf;
     long crossSlabEvents;
     /**
      * The merged phases' domain only, in a run with checkpoints (else null): a stop request ends its
@@ -86,7 +86,7 @@ final class Domain {
         this.queue = table.newCalendar(n / grid.domains);
         this.logging = grid.domains > 1;
         this.motion = new DiscMotion(table);
-        this.pred = logging ? new CellPredictor(motion, grid.owner, id, grid.edge) : new CellPredictor(motion);
+        this.pred = logging ? new CellPredictor(motion, grid.filterFor(id)) : new CellPredictor(motion);
         this.log = logging ? new UndoLog(motion, grid, marks) : null;
         this.stallGuard = new StallGuard(scene, table::sceneId);
         this.virial = VirialAccumulator.forRun(clock.until);
@@ -266,9 +266,9 @@ final class Domain {
                 queue.insert(i, predictFull(i, now));
             } else if (k != HIT) {
                 crossings++;
-                int slabBefore = slabOf != null ? slabOf[table.cellOfDisc(i)] : 0;
+                int slabBefore = slabOf != null ? slabOf.ownerOfDisc(i) : 0;
                 queue.insert(i, pred.crossAndPredict(i, now, k));
-                if (slabOf != null && slabOf[table.cellOfDisc(i)] != slabBefore) {
+                if (slabOf != null && slabOf.ownerOfDisc(i) != slabBefore) {
                     crossSlabEvents++;
                 }
             } else {
@@ -354,7 +354,7 @@ final class Domain {
         if (logging) {
             log.save(b);
         }
-        if (slabOf != null && slabOf[table.cellOfDisc(a)] != slabOf[table.cellOfDisc(b)]) {
+        if (slabOf != null && slabOf.ownerOfDisc(a) != slabOf.ownerOfDisc(b)) {
             crossSlabEvents++;
         }
         double w = motion.collidePair(a, b, now, abs, stallGuard);

@@ -7,6 +7,7 @@ import static carom.engines.kernel.DiscTable.CROSS_UP;
 
 import carom.core.engine.Tunable;
 import carom.engines.kernel.DiscTable;
+import carom.engines.kernel.OwnerFilter;
 
 /**
  * How {@code slabs} and {@code cluster} cut the box into domains: which domain owns each cell.
@@ -46,9 +47,16 @@ public final class DomainGrid {
     final int domains;
     final int domainCols;
     final int domainRows;
-    /** Owning domain of each cell ({@code row * cols + col}), and whether a cell borders a foreign one. */
-    final int[] owner;
-    final boolean[] edge;
+    /**
+     * The block column of each cell column and the block row of each cell row: cell (col, row) belongs to
+     * domain {@code rowBlock[row] * domainCols + colBlock[col]}. Per axis, so that the hot path's owner
+     * and edge tests read two small arrays rather than one entry per cell.
+     */
+    final int[] colBlock;
+    final int[] rowBlock;
+    /** Cell columns (rows) beside a column (row) of another block column (row): a cell is an edge cell if either is. */
+    final boolean[] edgeCol;
+    final boolean[] edgeRow;
 
     /**
      * {@code threads} domains (fewer where the box is too small for them), in {@code rowsWanted} rows
@@ -63,22 +71,51 @@ public final class DomainGrid {
         this.domainCols = layout[0];
         this.domainRows = layout[1];
         this.domains = domainCols * domainRows;
-        this.owner = new int[cols * rows];
-        this.edge = new boolean[cols * rows];
-        for (int row = 0; row < rows; row++) {
-            int by = (int) ((long) row * domainRows / rows);
-            for (int col = 0; col < cols; col++) {
-                owner[row * cols + col] = by * domainCols + (int) ((long) col * domainCols / cols);
-            }
+        this.colBlock = blocks(cols, domainCols);
+        this.rowBlock = blocks(rows, domainRows);
+        this.edgeCol = edges(colBlock);
+        this.edgeRow = edges(rowBlock);
+    }
+
+    /** The block of each of {@code size} cells along an axis cut into {@code k} blocks. */
+    private static int[] blocks(int size, int k) {
+        int[] b = new int[size];
+        for (int v = 0; v < size; v++) {
+            b[v] = (int) ((long) v * k / size);
         }
-        if (domains > 1) {
-            int[] near = new int[8];
-            for (int row = 0; row < rows; row++) {
-                for (int col = 0; col < cols; col++) {
-                    edge[row * cols + col] = foreignNeighbours(col, row, owner[row * cols + col], near) > 0;
-                }
-            }
+        return b;
+    }
+
+    /** Whether each cell along an axis has a neighbour (wrapped in a periodic box) of another block. */
+    private boolean[] edges(int[] block) {
+        int size = block.length;
+        boolean[] e = new boolean[size];
+        for (int v = 0; v < size; v++) {
+            int before = wrap(v - 1, size);
+            int after = wrap(v + 1, size);
+            e[v] = (before >= 0 && block[before] != block[v]) || (after >= 0 && block[after] != block[v]);
         }
+        return e;
+    }
+
+    /** What domain d's predictor may see: its own block. */
+    OwnerFilter filterFor(int d) {
+        return new OwnerFilter(colBlock, rowBlock, d % domainCols, d / domainCols, edgeCol, edgeRow);
+    }
+
+    /** The domain owning cell (col, row). */
+    int owner(int col, int row) {
+        return rowBlock[row] * domainCols + colBlock[col];
+    }
+
+    /** The domain owning cell {@code row * cols + col}. */
+    int ownerOfCell(int cell) {
+        return owner(cell % cols, cell / cols);
+    }
+
+    /** Whether cell (col, row) has a foreign cell among its 8 neighbours. */
+    boolean isEdge(int col, int row) {
+        return edgeCol[col] || edgeRow[row];
     }
 
     /** Columns and rows of domains for {@code k} domains ({@link #rowsTunable}). */
@@ -113,12 +150,12 @@ public final class DomainGrid {
 
     /** The domain owning disc i (that of its logical cell). */
     int ownerOfDisc(int i) {
-        return owner[table.cellOfDisc(i)];
+        return owner(table.colOfDisc(i), table.rowOfDisc(i));
     }
 
     /** Whether disc i is in an edge cell. */
     boolean inEdgeCell(int i) {
-        return edge[table.cellOfDisc(i)];
+        return isEdge(table.colOfDisc(i), table.rowOfDisc(i));
     }
 
     /** Whether disc i, owned by {@code domain}, has as its scheduled event a crossing into a foreign cell. */
@@ -136,7 +173,7 @@ public final class DomainGrid {
         } else {
             return false;
         }
-        return owner[row * cols + col] != domain;
+        return owner(col, row) != domain;
     }
 
     /**
@@ -156,9 +193,8 @@ public final class DomainGrid {
                 if (r < 0 || (dc == 0 && dr == 0)) {
                     continue;
                 }
-                int cell = r * cols + c;
-                if (owner[cell] != own) {
-                    out[m++] = cell;
+                if (owner(c, r) != own) {
+                    out[m++] = r * cols + c;
                 }
             }
         }
@@ -172,7 +208,7 @@ public final class DomainGrid {
     int ownersOf(int[] cells, int m, int[] out) {
         int n = 0;
         for (int k = 0; k < m; k++) {
-            int d = owner[cells[k]];
+            int d = ownerOfCell(cells[k]);
             int q = 0;
             while (q < n && out[q] != d) {
                 q++;

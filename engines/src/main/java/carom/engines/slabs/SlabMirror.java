@@ -195,13 +195,13 @@ public final class SlabMirror {
             return;
         }
         to = Math.min(to, limit);
-        if (!grid.edge[row * table.cols + col]) {
+        if (!grid.isEdge(col, row)) {
             return;
         }
         int entryX = load(0, a, x, s);
         int m = grid.foreignNeighbours(col, row, a, near);
         for (int k = 0; k < m; k++) {
-            int b = grid.owner[near[k]];
+            int b = grid.ownerOfCell(near[k]);
             for (int y = table.firstInCell(near[k]); y != DiscTable.NIL; y = table.nextInCell(y)) {
                 if (!marks.changedThisWindow(y)) {
                     motion.load(seg, y, 1);

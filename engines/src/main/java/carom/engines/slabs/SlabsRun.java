@@ -163,7 +163,7 @@ final class SlabsRun {
         this.whole = many ? new Domain(0, table, new DomainGrid(table, 1, 1), null, clock, task, audit, progress, scene)
                 : domains[0];
         if (many) {
-            whole.slabOf = grid.owner;
+            whole.slabOf = grid;
         }
         this.counted = many ? Arrays.copyOf(domains, k + 1) : domains;
         if (many) {

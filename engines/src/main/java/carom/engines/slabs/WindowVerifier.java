@@ -100,13 +100,13 @@ final class WindowVerifier {
             return;
         }
         to = Math.min(to, limit);
-        if (!grid.edge[row * table.cols + col]) {
+        if (!grid.isEdge(col, row)) {
             return;
         }
         loadSegment(0, a, x, entry);
         int m = grid.foreignNeighbours(col, row, a.id, near);
         for (int k = 0; k < m; k++) {
-            Domain b = domains[grid.owner[near[k]]];
+            Domain b = domains[grid.ownerOfCell(near[k])];
             for (int y = table.firstInCell(near[k]); y != DiscTable.NIL; y = table.nextInCell(y)) {
                 // In an edge cell now and not changed: no event in this window.
                 if (!marks.changedThisWindow(y)) {

@@ -102,6 +102,18 @@ class ClusterEngineTest {
     }
 
     @Test
+    void theSixDiscChainAcrossTheCornerOfFourBlocksMatchesSerial() {
+        // Two JVMs of two domains each: 2 x 2 blocks, the chain crossing diagonally where all four meet.
+        Scene scene = ChainScenes.acrossACorner();
+        RunResult r = new ClusterEngine().run(scene, RunOptions.until(scene.until()).withThreads(2).withTunable("nodes", "2"));
+        Invariants.noOverlapsAndInside(scene, r.finalState());
+        assertThat(r.counters().get("domains")).isEqualTo(4);
+        assertThat(r.counters().get("domainRows")).isEqualTo(2);
+        assertThat(r.counters().get("crossDomainEvents")).isPositive();
+        Invariants.assertSameRun(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())), SAME);
+    }
+
+    @Test
     void gasesWithGravityAndWithRestitutionAndTcMatchSerialOnThreeNodes() {
         // Gravity with elastic collisions, and restitution with the TC model without gravity; inelastic
         // collisions under gravity (resting contact): ClusterRestingContactTest.

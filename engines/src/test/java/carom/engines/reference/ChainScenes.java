@@ -74,4 +74,27 @@ public final class ChainScenes {
         }
         return b.disc(0, ox + 0.95 + 0.51 * 9, oy + 0.9, 0, -1).until(0.5).build();
     }
+    /**
+     * The six-disc chain of {@link #alongX()} turned 45 degrees and laid through the point (3, 2), where
+     * four 2 x 2 blocks of the 12 x 8 cells of {@code fast}'s kernel meet: momentum crosses the corner
+     * diagonally, from one block to the opposite one, within a single window.
+     */
+    public static Scene acrossACorner() {
+        double c = Math.sqrt(0.5);
+        double[] along = {0.20, 0.95, 1.46, 1.97, 2.48, 2.48};
+        double[] side = {0, 0, 0, 0, 0, 0.9};
+        double ox = 3 - 1.5 * c;
+        double oy = 2 - 1.5 * c;
+        SceneBuilder b = SceneBuilder.create("six-disc chain across a corner")
+                .box(6, 4, BoundaryKind.WALLS)
+                .species(Species.mobile("disc", 0.25, 1));
+        for (int k = 0; k < 6; k++) {
+            // Rotated: along the chain (c, c), beside it (-c, c).
+            double vAlong = k == 0 ? 1 : 0;
+            double vSide = k == 5 ? -1 : 0;
+            b.disc(0, ox + c * (along[k] - side[k]), oy + c * (along[k] + side[k]), c * (vAlong - vSide),
+                    c * (vAlong + vSide));
+        }
+        return b.until(0.45).build();
+    }
 }

@@ -53,7 +53,11 @@ class DomainGridTest {
         assertThat(g.domains).isEqualTo(cols * rows);
         for (int d = 0; d < g.domains; d++) {
             final int domain = d;
-            assertThat(java.util.Arrays.stream(g.owner).filter(o -> o == domain).count()).as("cells of %d", d).isPositive();
+            long cells = 0;
+            for (int cell = 0; cell < g.colBlock.length * g.rowBlock.length; cell++) {
+                cells += g.ownerOfCell(cell) == domain ? 1 : 0;
+            }
+            assertThat(cells).as("cells of %d", d).isPositive();
         }
     }
 
@@ -61,21 +65,20 @@ class DomainGridTest {
     void fourBlocksMeetAtACorner() {
         DiscTable t = table(20, 20, true);
         DomainGrid g = new DomainGrid(t, 4, 2);
-        int cols = t.cols;
         // The top right cell of block 0: its neighbours to the right, above and diagonally belong to
         // blocks 1, 2 and 3.
         int col = 0;
-        while (g.owner[col + 1] == 0) {
+        while (g.owner(col + 1, 0) == 0) {
             col++;
         }
         int row = 0;
-        while (g.owner[(row + 1) * cols] == 0) {
+        while (g.owner(0, row + 1) == 0) {
             row++;
         }
-        assertThat(g.owner[col + 1]).isEqualTo(1);
-        assertThat(g.owner[(row + 1) * cols]).isEqualTo(2);
-        assertThat(g.owner[row * cols + col]).isZero();
-        assertThat(g.edge[row * cols + col]).isTrue();
+        assertThat(g.owner(col + 1, 0)).isEqualTo(1);
+        assertThat(g.owner(0, row + 1)).isEqualTo(2);
+        assertThat(g.owner(col, row)).isZero();
+        assertThat(g.isEdge(col, row)).isTrue();
         int[] near = new int[8];
         int m = g.foreignNeighbours(col, row, 0, near);
         assertThat(m).isEqualTo(5);
@@ -83,7 +86,7 @@ class DomainGridTest {
         assertThat(g.ownersOf(near, m, owners)).isEqualTo(3);
         assertThat(java.util.Arrays.copyOf(owners, 3)).containsExactlyInAnyOrder(1, 2, 3);
         // A cell inside block 0 borders nothing foreign; periodic: cell (0, 0) borders blocks 1, 2, 3 across the box.
-        assertThat(g.edge[(row - 2) * cols + col - 2]).isFalse();
+        assertThat(g.isEdge(col - 2, row - 2)).isFalse();
         assertThat(g.foreignNeighbours(col - 2, row - 2, 0, near)).isZero();
         assertThat(g.ownersOf(near, g.foreignNeighbours(0, 0, 0, near), owners)).isEqualTo(3);
     }
@@ -94,7 +97,7 @@ class DomainGridTest {
         DomainGrid g = new DomainGrid(t, 4, 2);
         int[] near = new int[8];
         assertThat(g.foreignNeighbours(0, 0, 0, near)).isZero();
-        assertThat(g.edge[0]).isFalse();
+        assertThat(g.isEdge(0, 0)).isFalse();
     }
 
     @Test
@@ -103,7 +106,7 @@ class DomainGridTest {
         DomainGrid g = new DomainGrid(t, 3, 1);
         for (int row = 0; row < t.rows; row++) {
             for (int col = 0; col < t.cols; col++) {
-                assertThat(g.owner[row * t.cols + col]).isEqualTo((int) ((long) col * 3 / t.cols));
+                assertThat(g.owner(col, row)).isEqualTo((int) ((long) col * 3 / t.cols));
             }
         }
     }

@@ -123,6 +123,18 @@ class SlabsAgainstSerialTest {
         assertThat(along.counters().get("crossDomainEvents")).as("chain contacts across the boundary").isPositive();
     }
 
+    @Test
+    void theSixDiscChainAcrossTheCornerOfFourBlocksMatchesSerial() {
+        Scene scene = ChainScenes.acrossACorner();
+        RunResult r = Invariants.check(scene, new FixedDomains(4, "windowEvents", "0", "domainRows", "2")
+                .run(scene, RunOptions.until(scene.until())));
+        assertThat(r.counters().get("domains")).isEqualTo(4);
+        assertThat(r.counters().get("domainRows")).isEqualTo(2);
+        assertThat(r.counters().get("crossDomainEvents")).as("chain contacts across block edges").isPositive();
+        assertThat(r.pairCollisions()).isEqualTo(new SerialEngine().run(scene, RunOptions.until(scene.until())).pairCollisions());
+        assertSame(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())));
+    }
+
     @ParameterizedTest(name = "{0} domains")
     @CsvSource({"2", "3", "4"})
     void theLongChainThroughSeveralSlabsMatchesSerial(int domains) {
