@@ -4,7 +4,10 @@ import akka.actor.typed.ActorRef;
 import akka.actor.typed.ActorSystem;
 import akka.actor.typed.javadsl.AskPattern;
 import akka.actor.typed.receptionist.Receptionist;
+import akka.actor.Address;
+import akka.cluster.Member;
 import akka.cluster.typed.Cluster;
+import akka.cluster.typed.Down;
 import carom.core.BadInputException;
 import carom.engines.cluster.Protocol.NodeCommand;
 import com.typesafe.config.Config;
@@ -83,6 +86,9 @@ final class ClusterLife implements AutoCloseable {
                   }
                   cluster {
                     seed-nodes = [%s]
+                    # A node is lost (and the run recovers without it) once unreachable: allow pauses
+                    # of a loaded machine (GC, a busy core) well beyond Akka's 3 s before that.
+                    failure-detector.acceptable-heartbeat-pause = 10s
                     jmx.enabled = off
                     log-info = off
                   }
@@ -162,8 +168,12 @@ final class ClusterLife implements AutoCloseable {
         }
     }
 
-    /** A worker this JVM started that is no longer running, described; null while all run. */
-    String deadWorker() {
+    /**
+     * A node of the run that is lost, described; null while all serve. Lost: a worker this JVM started
+     * that is no longer running, or any node the cluster's failure detector holds unreachable (a
+     * worker of {@code --seed-nodes} killed or cut off; {@link #config}'s heartbeat pause).
+     */
+    String lostNode() {
         for (int w = 0; w < workers.size(); w++) {
             Process p = workers.get(w);
             int port = w < workerPorts.size() ? workerPorts.get(w) : -1;
@@ -171,7 +181,22 @@ final class ClusterLife implements AutoCloseable {
                 return "worker " + (w + 1) + " (pid " + p.pid() + ") exited with status " + p.exitValue();
             }
         }
+        Set<Address> unreachable = unreachable();
+        for (ActorRef<NodeCommand> node : nodes) {
+            if (unreachable.contains(node.path().address())) {
+                return "node at " + node.path().address().hostPort() + " became unreachable";
+            }
+        }
         return null;
+    }
+
+    /** The addresses of the members the failure detector holds unreachable now. */
+    private Set<Address> unreachable() {
+        Set<Address> out = new java.util.HashSet<>();
+        for (Member m : Cluster.get(system).state().getUnreachable()) {
+            out.add(m.address());
+        }
+        return out;
     }
 
     /**
@@ -218,10 +243,12 @@ final class ClusterLife implements AutoCloseable {
     }
 
     /**
-     * Forgets the nodes of workers that are no longer running (their processes reaped); returns the
-     * slab nodes ({@link #hostSlabs}) that remain, this JVM's first.
+     * Forgets the lost nodes ({@link #lostNode}): workers that are no longer running, and unreachable
+     * ones, which are downed (the cluster moves on without them; a worker this JVM started is destroyed
+     * too, so that it cannot come back into a run that no longer counts it). Returns the slab nodes
+     * ({@link #hostSlabs}) that remain, this JVM's first.
      */
-    List<ActorRef<NodeCommand>> dropDeadWorkers() {
+    List<ActorRef<NodeCommand>> dropLostNodes() {
         List<ActorRef<NodeCommand>> alive = new ArrayList<>(nodes);
         List<ActorRef<NodeCommand>> aliveSlabNodes = new ArrayList<>(slabNodes);
         for (int w = 0; w < workers.size(); w++) {
@@ -231,6 +258,20 @@ final class ClusterLife implements AutoCloseable {
                 aliveSlabNodes.removeIf(r -> onPort(r, port));
             }
         }
+        Set<Address> unreachable = unreachable();
+        for (Address a : unreachable) {
+            if (alive.removeIf(r -> r.path().address().equals(a))) {
+                aliveSlabNodes.removeIf(r -> r.path().address().equals(a));
+                Cluster.get(system).manager().tell(Down.apply(a));
+                for (int w = 0; w < workers.size(); w++) {
+                    int port = workerPorts.get(w);
+                    if (a.getPort().map(p -> p == port).orElse(false)) {
+                        workers.get(w).descendants().forEach(ProcessHandle::destroyForcibly);
+                        workers.get(w).destroyForcibly();
+                    }
+                }
+            }
+        }
         nodes = List.copyOf(alive);
         slabNodes = List.copyOf(aliveSlabNodes);
         return slabNodes;
@@ -238,18 +279,6 @@ final class ClusterLife implements AutoCloseable {
 
     private static boolean onPort(ActorRef<?> node, int port) {
         return node.path().address().getPort().map(p -> p == port).orElse(false);
-    }
-
-    /** Whether any worker this JVM started has died and is still counted among the nodes. */
-    boolean lostWorker() {
-        for (int w = 0; w < workers.size(); w++) {
-            int port = workerPorts.get(w);
-            if (!workers.get(w).isAlive()
-                    && nodes.stream().anyMatch(r -> onPort(r, port))) {
-                return true;
-            }
-        }
-        return false;
     }
 
     ActorSystem<NodeCommand> system() {

@@ -222,9 +222,6 @@ final class ClusterRun {
                     finals = finish();
                     break;
                 } catch (WorkerLost e) {
-                    if (!seeds.isEmpty()) {
-                        throw new EngineFailure("cluster: " + e.getMessage() + " (runs over --seed-nodes do not recover yet)");
-                    }
                     lost = true;
                 }
             }
@@ -313,7 +310,7 @@ final class ClusterRun {
      */
     private void recover() {
         recoveries++;
-        nodes = life.dropDeadWorkers();
+        nodes = life.dropLostNodes();
         Checkpoint cp = checkpoint;
         mirror = new SlabMirror(scene, KernelTunables.CELL_FACTOR.of(options), nodes.size(),
                 ClusterEngine.DOMAIN_ROWS.intOf(options), until);
@@ -562,7 +559,7 @@ final class ClusterRun {
                 throw new EngineFailure("cluster: interrupted waiting for node " + d + " (" + type + ")");
             } catch (TimeoutException e) {
                 // A worker JVM that died will never answer: say so now rather than at the timeout.
-                String dead = life.deadWorker();
+                String dead = life.lostNode();
                 if (dead != null) {
                     throw new WorkerLost(dead + " in the middle of the run");
                 }
@@ -571,7 +568,7 @@ final class ClusterRun {
                             + " did not answer '" + type + "' within " + replyTimeout.toSeconds() + " s", e);
                 }
             } catch (ExecutionException e) {
-                String dead = life.deadWorker();
+                String dead = life.lostNode();
                 if (dead != null) {
                     throw new WorkerLost(dead + " in the middle of the run");
                 }

@@ -283,4 +283,39 @@ class ClusterEngineTest {
             worker.destroyForcibly().waitFor(30, TimeUnit.SECONDS);
         }
     }
+    @Test
+    void aSeedNodeWorkerKilledMidRunIsRecoveredOnTheNodesLeft() throws Exception {
+        // Two workers as './carom node' runs them on two machines: the first seeds the cluster, the second
+        // joins it. The second is killed mid-run: the failure detector holds it unreachable, the
+        // coordinator downs it and recovers from the last checkpoint on itself and the first.
+        int seedPort = ClusterLife.freePort();
+        String java = ProcessHandle.current().info().command().orElseThrow();
+        String seed = "127.0.0.1:" + seedPort;
+        Process first = new ProcessBuilder(java, "-cp", System.getProperty("java.class.path"),
+                ClusterWorker.class.getName(), "--join", seed, "--port", Integer.toString(seedPort))
+                .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+        Process second = new ProcessBuilder(java, "-cp", System.getProperty("java.class.path"),
+                ClusterWorker.class.getName(), "--join", seed, "--port", Integer.toString(ClusterLife.freePort()))
+                .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+        try {
+            Scene scene = RandomScenes.dense(900, 0.5, true, 5, 0.5);
+            CountDownLatch running = new CountDownLatch(1);
+            RunOptions o = new RunOptions(scene.until(), 1, t -> running.countDown(),
+                    Map.of("nodes", "3", "checkpointWindows", "40"));
+            CompletableFuture<RunResult> run = CompletableFuture.supplyAsync(
+                    () -> ClusterEngine.joining(List.of(seed)).run(scene, o));
+            assertThat(running.await(300, TimeUnit.SECONDS)).as("the run got going").isTrue();
+            second.destroyForcibly();
+            RunResult r = run.get(300, TimeUnit.SECONDS);
+            assertThat(r.counters().get("recoveries")).as("recoveries").isEqualTo(1);
+            assertThat(r.counters().get("domains")).as("domains after the recovery").isEqualTo(2);
+            Invariants.noOverlapsAndInside(scene, r.finalState());
+            Invariants.assertSameRun(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())), SAME);
+            assertThat(first.isAlive()).as("the worker left serves on").isTrue();
+        } finally {
+            for (Process p : new Process[] {first, second}) {
+                p.destroyForcibly().waitFor(30, TimeUnit.SECONDS);
+            }
+        }
+    }
 }
