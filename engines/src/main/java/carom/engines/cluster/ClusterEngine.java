@@ -94,7 +94,7 @@ public final class ClusterEngine implements Engine {
 
     @Override
     public String description() {
-        return "the slabs' exact protocol over an Akka Cluster: --threads slabs per JVM, default 1 (--nodes K starts K-1 workers on 127.0.0.1), windows driven and verified by the coordinator through messages";
+        return "the slabs' exact protocol over an Akka Cluster: --threads domains per JVM (slabs or blocks, whichever cuts less), default 1 (--nodes K starts K-1 workers on 127.0.0.1), windows driven and verified by the coordinator through messages";
     }
 
     @Override

@@ -34,9 +34,9 @@ public final class DomainGrid {
     /** The tunable rows of domains, with the engine's default ({@code slabs}: 1, {@code cluster}: auto). */
     public static Tunable.Whole rowsTunable(long fallback) {
         return new Tunable.Whole("domainRows", fallback, 0, 4096, "rows",
-                "rows of domains: 1 cuts vertical slabs, R > 1 blocks in R rows of (domains / R) columns; 0 (auto) "
-                        + "the factorisation of the domains whose cuts are shortest",
-                fallback == 0 ? "the factorisation of the domains whose cuts are shortest" : null);
+                "rows of domains: 1 cuts vertical slabs, R > 1 blocks in R rows of (domains / R) columns, 0 the layout "
+                        + "whose cuts are shortest",
+                fallback == 0 ? "0: slabs or blocks, whichever cuts less" : null);
     }
 
     private final DiscTable table;
