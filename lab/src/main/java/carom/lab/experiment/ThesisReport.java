@@ -305,7 +305,9 @@ final class ThesisReport {
             List<Charts.Line> lines = new ArrayList<>(List.of(ours));
             double largest = ours.x().stream().mapToDouble(Double::doubleValue).max().orElse(Double.MAX_VALUE);
             EngineRole.of(e).ifPresent(role -> lines.add(thesisLine(role, largest)));
-            figures.put("time-" + e, new Charts.Figure(e + " and the thesis: wall time against N", "discs N",
+            String title = EngineRole.beyondThesis(e) ? e + " (beyond the thesis, which has no counterpart): wall time against N"
+                    : e + " and the thesis: wall time against N";
+            figures.put("time-" + e, new Charts.Figure(title, "discs N",
                     "wall time per run (ms)", lines, true, true));
         }
         figures.put("time-all-engines", new Charts.Figure("All engines: wall time against N", "discs N", "wall time per run (ms)",

@@ -60,8 +60,11 @@ class ThesisPlotsTest {
             Charts.Figure f = figures().get("time-" + engine);
             if (EngineRole.beyondThesis(engine)) {
                 assertThat(f.lines()).as(engine + ": no thesis counterpart, no thesis line").hasSize(1);
+                assertThat(f.title()).as(engine + ": its title says so").contains("beyond the thesis")
+                        .doesNotContain("and the thesis");
                 continue;
             }
+            assertThat(f.title()).contains("and the thesis");
             assertThat(f.lines()).as(engine).hasSize(2);
             assertThat(f.lines().get(1).reference()).isTrue();
             assertThat(f.lines()).allSatisfy(l -> assertThat(l.x()).as(l.name()).allSatisfy(x -> assertThat(x).isPositive()));

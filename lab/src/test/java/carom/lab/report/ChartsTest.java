@@ -36,6 +36,19 @@ class ChartsTest {
     }
 
     @Test
+    void aLineThatCoincidesWithAnEarlierOneShowsInsideIt() {
+        // akka's and vthreads' messages per collision are the same: the first is drawn wider.
+        List<Double> same = List.of(12.0, 4.3, 4.8);
+        Charts.Figure f = new Charts.Figure("t", "N", "messages", List.of(Charts.Line.of("akka", N, same),
+                Charts.Line.of("vthreads", N, same)), true, true);
+        XYChart chart = Charts.chart(f);
+        float akka = ((java.awt.BasicStroke) chart.getSeriesMap().get("akka").getLineStyle()).getLineWidth();
+        float vthreads = ((java.awt.BasicStroke) chart.getSeriesMap().get("vthreads").getLineStyle()).getLineWidth();
+        assertThat(akka).isGreaterThan(vthreads + 1);
+        assertThat(vthreads).isEqualTo(2f);
+    }
+
+    @Test
     void valuesWithinADecadeGetALinearAxis() {
         Charts.Figure f = new Charts.Figure("t", "actors per core", "ms", List.of(
                 Charts.Line.of("vthreads", List.of(1.0, 3.0, 8.0), List.of(30.0, 45.0, 60.0))), true, true);
