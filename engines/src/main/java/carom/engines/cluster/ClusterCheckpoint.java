@@ -28,7 +28,7 @@ import java.util.Map;
  * ({@code --threads}); it starts them itself on 127.0.0.1.
  */
 final class ClusterCheckpoint {
-    private static final String TAG = "cluster/2";
+    private static final String TAG = "cluster/3";
 
     private final ClusterRun run;
     /** When to save: the schedule every engine that saves at pass starts shares. */

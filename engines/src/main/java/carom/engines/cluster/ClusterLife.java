@@ -170,8 +170,10 @@ final class ClusterLife implements AutoCloseable {
 
     /**
      * A node of the run that is lost, described; null while all serve. Lost: a worker this JVM started
-     * that is no longer running, or any node the cluster's failure detector holds unreachable (a
-     * worker of {@code --seed-nodes} killed or cut off; {@link #config}'s heartbeat pause).
+     * that is no longer running (a live one is never given up: on this machine, an unreachable one is
+     * only starved of a core), or a node of {@code --seed-nodes} workers held unreachable by the
+     * cluster's failure detector ({@link #config}'s heartbeat pause) for {@link #LOST_AFTER} without a
+     * break: killed, or cut off.
      */
     String lostNode() {
         for (int w = 0; w < workers.size(); w++) {
@@ -181,22 +183,37 @@ final class ClusterLife implements AutoCloseable {
                 return "worker " + (w + 1) + " (pid " + p.pid() + ") exited with status " + p.exitValue();
             }
         }
-        Set<Address> unreachable = unreachable();
+        Address a = unreachableTooLong();
+        return a == null ? null : "node at " + a.hostPort() + " unreachable for " + LOST_AFTER.toSeconds() + " s";
+    }
+
+    /** How long a node of running workers must stay unreachable to count as lost. */
+    static final Duration LOST_AFTER = Duration.ofSeconds(20);
+    /** Since when each node's address has been unreachable without a break (nanoTime). */
+    private final java.util.Map<Address, Long> unreachableSince = new java.util.HashMap<>();
+
+    /** A node not started by this JVM that has stayed unreachable for {@link #LOST_AFTER}; else null. */
+    private Address unreachableTooLong() {
+        Set<Address> now = new java.util.HashSet<>();
+        for (Member m : Cluster.get(system).state().getUnreachable()) {
+            now.add(m.address());
+        }
+        unreachableSince.keySet().retainAll(now);
+        long t = System.nanoTime();
         for (ActorRef<NodeCommand> node : nodes) {
-            if (unreachable.contains(node.path().address())) {
-                return "node at " + node.path().address().hostPort() + " became unreachable";
+            Address a = node.path().address();
+            if (now.contains(a) && !startedHere(a)) {
+                long since = unreachableSince.computeIfAbsent(a, x -> t);
+                if (t - since >= LOST_AFTER.toNanos()) {
+                    return a;
+                }
             }
         }
         return null;
     }
 
-    /** The addresses of the members the failure detector holds unreachable now. */
-    private Set<Address> unreachable() {
-        Set<Address> out = new java.util.HashSet<>();
-        for (Member m : Cluster.get(system).state().getUnreachable()) {
-            out.add(m.address());
-        }
-        return out;
+    private boolean startedHere(Address a) {
+        return a.getPort().map(workerPorts::contains).orElse(false);
     }
 
     /**
@@ -243,34 +260,30 @@ final class ClusterLife implements AutoCloseable {
     }
 
     /**
-     * Forgets the lost nodes ({@link #lostNode}): workers that are no longer running, and unreachable
-     * ones, which are downed (the cluster moves on without them; a worker this JVM started is destroyed
-     * too, so that it cannot come back into a run that no longer counts it). Returns the slab nodes
+     * Forgets the lost nodes ({@link #lostNode}) and downs them, so that the cluster moves on without
+     * them (a downed {@code carom node} that hears of it shuts down). Returns the slab nodes
      * ({@link #hostSlabs}) that remain, this JVM's first.
      */
     List<ActorRef<NodeCommand>> dropLostNodes() {
-        List<ActorRef<NodeCommand>> alive = new ArrayList<>(nodes);
-        List<ActorRef<NodeCommand>> aliveSlabNodes = new ArrayList<>(slabNodes);
+        Set<Address> lost = new java.util.HashSet<>();
         for (int w = 0; w < workers.size(); w++) {
             if (!workers.get(w).isAlive()) {
                 int port = workerPorts.get(w);
-                alive.removeIf(r -> onPort(r, port));
-                aliveSlabNodes.removeIf(r -> onPort(r, port));
+                nodes.stream().filter(r -> onPort(r, port)).forEach(r -> lost.add(r.path().address()));
             }
         }
-        Set<Address> unreachable = unreachable();
-        for (Address a : unreachable) {
-            if (alive.removeIf(r -> r.path().address().equals(a))) {
-                aliveSlabNodes.removeIf(r -> r.path().address().equals(a));
-                Cluster.get(system).manager().tell(Down.apply(a));
-                for (int w = 0; w < workers.size(); w++) {
-                    int port = workerPorts.get(w);
-                    if (a.getPort().map(p -> p == port).orElse(false)) {
-                        workers.get(w).descendants().forEach(ProcessHandle::destroyForcibly);
-                        workers.get(w).destroyForcibly();
-                    }
-                }
-            }
+        for (Address a = unreachableTooLong(); a != null; a = unreachableTooLong()) {
+            Address gone = a;
+            lost.add(gone);
+            unreachableSince.remove(gone);
+            nodes = nodes.stream().filter(r -> !r.path().address().equals(gone)).toList();
+        }
+        List<ActorRef<NodeCommand>> alive = new ArrayList<>(nodes);
+        List<ActorRef<NodeCommand>> aliveSlabNodes = new ArrayList<>(slabNodes);
+        for (Address a : lost) {
+            alive.removeIf(r -> r.path().address().equals(a));
+            aliveSlabNodes.removeIf(r -> r.path().address().equals(a));
+            Cluster.get(system).manager().tell(Down.apply(a));
         }
         nodes = List.copyOf(alive);
         slabNodes = List.copyOf(aliveSlabNodes);

@@ -166,7 +166,7 @@ final class ClusterRun {
         Discs initial = scene.newDiscs();
         double energyStart = Observables.kineticEnergy(initial);
         double[] momentumStart = Observables.momentum(initial);
-        mirror = new SlabMirror(scene, KernelTunables.CELL_FACTOR.of(options), count * slabsPerJvm,
+        mirror = new SlabMirror(scene, KernelTunables.cellFactor(options, scene), count * slabsPerJvm,
                 ClusterEngine.DOMAIN_ROWS.intOf(options), until);
         domains = mirror.domains();
         // The first checkpoint is the scene itself, which every node holds: no message.
@@ -312,7 +312,7 @@ final class ClusterRun {
         recoveries++;
         nodes = life.dropLostNodes();
         Checkpoint cp = checkpoint;
-        mirror = new SlabMirror(scene, KernelTunables.CELL_FACTOR.of(options), nodes.size(),
+        mirror = new SlabMirror(scene, KernelTunables.cellFactor(options, scene), nodes.size(),
                 ClusterEngine.DOMAIN_ROWS.intOf(options), until);
         mirror.startAt(cp.epoch());
         domains = mirror.domains();
@@ -344,7 +344,7 @@ final class ClusterRun {
             species.add(new SpeciesSpec(s.name(), s.radius(), s.mass(), s.fixed()));
         }
         var e = scene.effects();
-        tell(d, "scene", new SceneStart(d, domains, mirror.domainRows(), KernelTunables.CELL_FACTOR.of(options), until, scene.name(),
+        tell(d, "scene", new SceneStart(d, domains, mirror.domainRows(), KernelTunables.cellFactor(options, scene), until, scene.name(),
                 scene.box().width(), scene.box().height(), scene.box().boundary().name(), species,
                 new double[] {e.gravityX(), e.gravityY(), e.restitution(), e.wallRestitution(), e.tc()}, initial.n));
         for (int from = 0; from < initial.n; from += CHUNK) {

@@ -93,7 +93,7 @@ final class FastRun {
         this.until = options.until();
         // The initial discs are needed only here: the run holds its records, not a second copy.
         Discs src = scene.newDiscs();
-        this.table = new DiscTable(scene, src, KernelTunables.CELL_FACTOR.of(options));
+        this.table = new DiscTable(scene, src, KernelTunables.cellFactor(options, scene));
         this.n = table.n;
         this.motion = new DiscMotion(table);
         this.p = new CellPredictor(motion);

@@ -122,7 +122,7 @@ public final class GrowthRun {
         this.stopPressure = stopPressure;
         this.state = scene.newDiscs();
         this.n = state.n;
-        this.plan = new GrowthStages(scene, state.maxRadius(), KernelTunables.CELL_FACTOR.of(options));
+        this.plan = new GrowthStages(scene, state.maxRadius(), KernelTunables.growthCellFactor(options));
         this.energyStart = Observables.kineticEnergy(state);
         this.momentumStart = Observables.momentum(state);
         this.energyCap = energyStart > 0 ? energyCap : Double.POSITIVE_INFINITY;

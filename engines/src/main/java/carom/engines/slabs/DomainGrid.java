@@ -124,7 +124,7 @@ public final class DomainGrid {
         int maxRows = Math.max(1, rows / MIN_SIDE);
         if (rowsWanted > 0) {
             int ky = Math.min(Math.min(rowsWanted, k), maxRows);
-            return new int[] {Math.max(1, Math.min(k / rowsWanted, maxCols)), ky};
+            return new int[] {Math.max(1, Math.min(k / ky, maxCols)), ky};
         }
         int[] best = null;
         long bestCut = Long.MAX_VALUE;

@@ -175,7 +175,9 @@ public final class SlabMirror {
             StateBatch changed = records[a];
             for (int q = 0; q < changed.size(); q++) {
                 int x = changed.ids()[q];
-                if (table.invMass(x) == 0) {
+                // Mobile in the scene, awake or asleep (a disc that fell asleep in the window has a zero
+                // inverse mass now, and awake foreign discs can still hit its segments or its rest).
+                if (!table.mobile(x)) {
                     continue;
                 }
                 checkSegment(a, x, -1, table.colOfDisc(x), table.rowOfDisc(x), Math.max(start, table.clock(x)), limit,

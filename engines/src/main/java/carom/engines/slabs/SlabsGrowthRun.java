@@ -35,7 +35,7 @@ final class SlabsGrowthRun {
 
     RunResult run() {
         Discs state = scene.newDiscs();
-        GrowthStages plan = new GrowthStages(scene, state.maxRadius(), KernelTunables.CELL_FACTOR.of(options));
+        GrowthStages plan = new GrowthStages(scene, state.maxRadius(), KernelTunables.growthCellFactor(options));
         SampleSchedule samples = SampleSchedule.of(scene, options);
         double energyStart = Observables.kineticEnergy(state);
         double[] momentumStart = Observables.momentum(state);

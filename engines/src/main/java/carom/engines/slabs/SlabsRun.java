@@ -138,7 +138,7 @@ final class SlabsRun {
         this.until = options.until();
         // The initial discs are needed only here: the run holds its records, not a second copy.
         Discs src = scene.newDiscs();
-        this.table = prebuilt != null ? prebuilt : new DiscTable(scene, src, KernelTunables.CELL_FACTOR.of(options));
+        this.table = prebuilt != null ? prebuilt : new DiscTable(scene, src, KernelTunables.cellFactor(options, scene));
         this.n = table.n;
         this.audit = Tunables.AUDIT_ENERGY.of(options) ? EnergyAudit.forScene(scene) : null;
         this.progress = options.progress();

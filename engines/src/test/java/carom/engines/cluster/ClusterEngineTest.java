@@ -95,7 +95,10 @@ class ClusterEngineTest {
     @Test
     void theSixDiscChainAcrossASlabEdgeMatchesSerial() {
         Scene scene = ChainScenes.alongX();
-        RunResult r = cluster(scene, 2);
+        // On the grid the chain was laid out on (cells a hair wider than a diameter), not the dilute default.
+        RunResult r = new ClusterEngine().run(scene, RunOptions.until(scene.until()).withTunable("nodes", "2")
+                .withTunable("cellFactor", "1"));
+        Invariants.noOverlapsAndInside(scene, r.finalState());
         assertThat(r.counters().get("domains")).isEqualTo(2);
         assertThat(r.counters().get("crossDomainEvents")).isPositive();
         Invariants.assertSameRun(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())), SAME);
@@ -105,7 +108,9 @@ class ClusterEngineTest {
     void theSixDiscChainAcrossTheCornerOfFourBlocksMatchesSerial() {
         // Two JVMs of two domains each: 2 x 2 blocks, the chain crossing diagonally where all four meet.
         Scene scene = ChainScenes.acrossACorner();
-        RunResult r = new ClusterEngine().run(scene, RunOptions.until(scene.until()).withThreads(2).withTunable("nodes", "2"));
+        // The grid the chain was laid out on (cells a hair wider than a diameter), not the dilute default.
+        RunResult r = new ClusterEngine().run(scene, RunOptions.until(scene.until()).withThreads(2).withTunable("nodes", "2")
+                .withTunable("cellFactor", "1"));
         Invariants.noOverlapsAndInside(scene, r.finalState());
         assertThat(r.counters().get("domains")).isEqualTo(4);
         assertThat(r.counters().get("domainRows")).isEqualTo(2);
@@ -274,7 +279,8 @@ class ClusterEngineTest {
         try {
             ClusterEngine engine = ClusterEngine.joining(List.of("127.0.0.1:" + port));
             for (Scene scene : new Scene[] {RandomScenes.dense(900, 0.6, true, 3, 0.1), ChainScenes.alongX()}) {
-                RunResult r = engine.run(scene, RunOptions.until(scene.until()).withTunable("nodes", "2"));
+                RunResult r = engine.run(scene, RunOptions.until(scene.until()).withTunable("nodes", "2")
+                        .withTunable("cellFactor", "1"));
                 assertThat(r.counters().get("domains")).isEqualTo(2);
                 Invariants.assertSameRun(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())), SAME);
                 assertThat(worker.isAlive()).as("the worker serves the next run").isTrue();

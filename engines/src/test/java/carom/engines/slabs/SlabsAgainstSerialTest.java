@@ -35,7 +35,9 @@ class SlabsAgainstSerialTest {
 
     /** Without {@link Invariants#check}, whose energy check assumes elastic flight without gravity. */
     private static RunResult slabsWithEffects(Scene scene, int domains) {
-        RunResult r = FixedDomains.windowsOnly(domains).run(scene, RunOptions.until(scene.until()));
+        // The grid these scenes were laid out on (cells a hair wider than a diameter), whatever the
+        // default for their packing fraction: the chains cross slab edges between given cells.
+        RunResult r = FixedDomains.windowsOnly(domains).run(scene, RunOptions.until(scene.until()).withTunable("cellFactor", "1"));
         Invariants.noOverlapsAndInside(scene, r.finalState());
         return r;
     }
@@ -127,7 +129,7 @@ class SlabsAgainstSerialTest {
     void theSixDiscChainAcrossTheCornerOfFourBlocksMatchesSerial() {
         Scene scene = ChainScenes.acrossACorner();
         RunResult r = Invariants.check(scene, new FixedDomains(4, "windowEvents", "0", "domainRows", "2")
-                .run(scene, RunOptions.until(scene.until())));
+                .run(scene, RunOptions.until(scene.until()).withTunable("cellFactor", "1")));
         assertThat(r.counters().get("domains")).isEqualTo(4);
         assertThat(r.counters().get("domainRows")).isEqualTo(2);
         assertThat(r.counters().get("crossDomainEvents")).as("chain contacts across block edges").isPositive();

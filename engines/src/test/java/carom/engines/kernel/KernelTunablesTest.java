@@ -1,0 +1,31 @@
+package carom.engines.kernel;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
+
+import carom.core.engine.RunOptions;
+import carom.core.scene.BoundaryKind;
+import carom.core.scene.Scene;
+import carom.core.scene.SceneBuilder;
+import carom.core.scene.Species;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+import org.junit.jupiter.api.Test;
+
+/** The kernel's cell factor: 1 from packing fraction 0.15 up, wider in dilute gases, as given when given. */
+class KernelTunablesTest {
+    @ParameterizedTest(name = "phi {0}: {1}")
+    @CsvSource({"0.7, 1", "0.3, 1", "0.15, 1", "0.1, 2", "0.126, 1.380952", "0.075, 3", "0.01, 3"})
+    void theDefaultWidensTheCellsOfDiluteGases(double phi, double expected) {
+        assertThat(KernelTunables.forPackingFraction(phi)).isCloseTo(expected, within(1e-6));
+    }
+
+    @Test
+    void aGivenCellFactorWinsAndGrowthRunsKeepOne() {
+        Scene dilute = SceneBuilder.create("dilute").box(100, 100, BoundaryKind.PERIODIC)
+                .species(Species.mobile("d", 0.5, 1)).disc(0, 10, 10, 1, 0).disc(0, 50, 50, 0, 1).until(1).build();
+        assertThat(KernelTunables.cellFactor(RunOptions.until(1), dilute)).isEqualTo(3);
+        assertThat(KernelTunables.cellFactor(RunOptions.until(1).withTunable("cellFactor", "1.2"), dilute)).isEqualTo(1.2);
+        assertThat(KernelTunables.growthCellFactor(RunOptions.until(1))).isEqualTo(1);
+    }
+}
