@@ -24,9 +24,9 @@ import java.util.List;
  * the samples of {@code slabs} to rounding. Checkpoint files ({@code --checkpoint}, a signal, then
  * {@link #resume}): every node's whole state at the start of a window ({@link ClusterCheckpoint}), so
  * that a resumed run ends in the bits of one that never stopped; a resumed run starts its own workers
- * on 127.0.0.1, as many as the saved run had. Faults: a worker JVM this run started that dies mid-run
- * is recovered from, on the nodes that remain, from the coordinator's last in-memory checkpoint (exact
- * to rounding; runs over {@code --seed-nodes} stop with an error instead); the coordinator's own death
+ * on 127.0.0.1, as many as the saved run had. Faults: a lost node (a worker JVM this run started that
+ * dies, or a {@code --seed-nodes} worker unreachable for 20 s) is recovered from, on the nodes that
+ * remain, from the coordinator's last in-memory checkpoint (exact to rounding); the coordinator's own death
  * ends its workers ({@link ClusterWorker}), and the user resumes from the last checkpoint file.
  *
  * <p>Resting contact (inelastic collisions under gravity): a disc that comes to rest sleeps in its
@@ -103,7 +103,7 @@ public final class ClusterEngine implements Engine {
                 ClusterRun.REPLY_SECONDS, ClusterRun.CHECKPOINT_WINDOWS);
     }
 
-    /** One slab per JVM: the JVMs of a {@code --nodes} run share this machine's cores already. */
+    /** One domain per JVM: the JVMs of a {@code --nodes} run share this machine's cores already. */
     @Override
     public int defaultThreads(int processors) {
         return 1;

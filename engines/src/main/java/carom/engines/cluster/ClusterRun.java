@@ -58,7 +58,7 @@ import java.util.function.ObjIntConsumer;
 /**
  * One run of the cluster engine, on the coordinator: the slabs' protocol ({@code SlabsRun}'s windows,
  * verification, rollback and serial cross-domain events) with every slab in a node of its own and
- * the coordinator's view of the edge columns in a {@link SlabMirror}. Per window: a {@link Window}
+ * the coordinator's view of the edge cells in a {@link SlabMirror}. Per window: a {@link Window}
  * to every node and its {@link WindowDone} (the changed edge discs' records and segments); on a
  * violation an {@link Undo} and {@link Undone} round; then the cross event, a collision computed on
  * the mirror and {@link Install}ed at both owners, or a migration ({@link Emigrate}, then
@@ -68,7 +68,7 @@ import java.util.function.ObjIntConsumer;
  * them the coordinator gathers every slab's discs at that time ({@link SampleAt}).
  *
  * <p>Faults: every {@link #CHECKPOINT_WINDOWS} windows the coordinator takes a {@link Checkpoint}
- * (the first is the scene); when a worker JVM it started dies, the run carries on from the last one on
+ * (the first is the scene); when a node is lost (ClusterLife#lostNode), the run carries on from the last one on
  * the nodes that remain ({@link #recover}), exact to rounding. A checkpoint file ({@code --checkpoint},
  * {@link ClusterCheckpoint}) is another thing: every node's whole state at the start of a window, so
  * that {@code resume} continues with the very same bits.

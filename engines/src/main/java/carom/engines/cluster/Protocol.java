@@ -72,7 +72,7 @@ public final class Protocol {
     public record Snapshot(int part, int parts, ActorRef<Reply> replyTo) implements NodeCommand {
     }
 
-    /** First predictions; the reply carries the calendar's span and the slab's edge-column records. */
+    /** First predictions; the reply carries the calendar's span and the slab's edge-cell records. */
     public record Start(ActorRef<Reply> replyTo) implements NodeCommand {
     }
 

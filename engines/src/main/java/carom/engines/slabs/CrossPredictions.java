@@ -9,14 +9,14 @@ import carom.engines.kernel.DiscTable;
 /**
  * Cross-domain events, predicted serially (at barriers) because they read discs of two domains.
  *
- * <p>A contact between discs of two domains, and a disc crossing into a foreign column (a migration),
- * are cross events. They are predicted for every mobile disc in an edge column ({@link #predict}),
+ * <p>A contact between discs of two domains, and a disc crossing into a foreign cell (a migration),
+ * are cross events. They are predicted for every mobile disc in an edge cell ({@link #predict}),
  * into a {@link CrossHeap} keyed by time; a prediction against disc j is valid while j's collision
  * counter is unchanged, exactly as in the kernel. The heap's earliest valid event bounds the next
  * window ({@link SlabsRun}).
  */
 final class CrossPredictions {
-    /** Partner code: the disc's next event is its migration into a foreign column. */
+    /** Partner code: the disc's next event is its migration into a foreign cell. */
     static final int MIGRATE = Integer.MIN_VALUE + 1;
     private static final int NONE = Integer.MIN_VALUE;
     private static final double INF = Double.POSITIVE_INFINITY;
@@ -91,7 +91,7 @@ final class CrossPredictions {
     }
 
     /**
-     * Predicts anew, from local {@code now}, every mobile disc in an edge column, after a merged phase
+     * Predicts anew, from local {@code now}, every mobile disc in an edge cell, after a merged phase
      * in which no cross event was kept (every other disc has none).
      */
     void predictAll(double now) {
@@ -115,8 +115,8 @@ final class CrossPredictions {
 
     /**
      * Predicts mobile disc i's earliest cross event from local {@code now}: a contact with a disc in a
-     * foreign column next to its cell, or its migration if its scheduled event is one. Discs outside
-     * edge columns leave the heap.
+     * foreign cell next to its cell, or its migration if its scheduled event is one. Discs outside
+     * edge cells leave the heap.
      */
     void predict(int i, double now) {
         // A sleeping disc predicts its contacts with foreign discs that are awake, as in its slab.

@@ -2,7 +2,7 @@ package carom.engines.slabs;
 
 /**
  * Per-disc marks that the domains share with the coordinator (only with several domains). They are
- * touched only for discs in edge columns: a per-disc array read on every event would cost a cache
+ * touched only for discs in edge cells: a per-disc array read on every event would cost a cache
  * miss per event. During a window each domain writes the marks of its own discs only; the
  * coordinator reads them between windows (the barrier orders the two).
  */
@@ -10,7 +10,7 @@ final class DiscMarks {
     /** The window in which each disc last changed, and the number of the window under way. */
     private final int[] changedIn;
     private int window;
-    /** Each disc's last log entry with an edge-column state in the window it changed in (-1 if none). */
+    /** Each disc's last log entry with an edge-cell state in the window it changed in (-1 if none). */
     private final int[] lastEntry;
     /** The undo in which each disc was last re-queued, and the number of the undo under way. */
     private final int[] requeuedIn;
@@ -55,7 +55,7 @@ final class DiscMarks {
         return true;
     }
 
-    /** Disc i's last log entry with an edge-column state in this window, or -1. */
+    /** Disc i's last log entry with an edge-cell state in this window, or -1. */
     int lastEntry(int i) {
         return lastEntry[i];
     }

@@ -14,7 +14,7 @@ import carom.engines.kernel.DiscMotion;
 import carom.engines.kernel.DiscTable;
 
 /**
- * One slab: {@code fast}'s event loop, on the kernel, over the discs of its grid, with an
+ * One slab: {@code fast}'s event loop, on the kernel, over the discs of its cells, with an
  * {@link UndoLog} while windows can be rolled back. Its methods run on its own thread during a
  * window and the other per-domain tasks, and on the coordinator's in serial phases (the owner then
  * waits at the barrier). Domain 0 is the coordinator's own. The run's merged phases use one more
@@ -29,7 +29,7 @@ final class Domain {
     private final RunClock clock;
     private final DomainTask task;
     final CalendarQueue queue;
-    /** This domain's changes to the records, and its predictions (its own scratch, only its own grid). */
+    /** This domain's changes to the records, and its predictions (its own scratch, only its own cells). */
     final DiscMotion motion;
     final CellPredictor pred;
     /** Only with several domains (then windows can be rolled back); else null. */

@@ -14,12 +14,12 @@ import carom.engines.kernel.TableState;
 
 /**
  * The coordinator's side of the {@code cluster} engine's slabs: what {@link SlabsRun} does between
- * windows, on a table of the coordinator's own that mirrors only the edge columns. The slabs run
+ * windows, on a table of the coordinator's own that mirrors only the edge cells. The slabs run
  * in other JVMs ({@link SlabNode}) and send, after each window, the current records and logged
- * edge-column segments of the discs that changed in an edge column; nothing else.
+ * edge-cell segments of the discs that changed in an edge cell; nothing else.
  *
- * <p>Invariant: the mirror's records of every disc in an edge column are the owners' current ones
- * (every disc that enters, leaves or changes in an edge column is reported); the records of other
+ * <p>Invariant: the mirror's records of every disc in an edge cell are the owners' current ones
+ * (every disc that enters, leaves or changes in an edge cell is reported); the records of other
  * discs are stale and never read. On it this class predicts the cross events ({@link CrossPredictions},
  * as slabs does), verifies a window against the reported segments (as {@link WindowVerifier} does
  * against the logs), and carries out cross-domain collisions, whose outcome goes back to the owners.
@@ -113,7 +113,7 @@ public final class SlabMirror {
         clock.untilLocal = clock.until - epoch;
     }
 
-    /** The slab that owns disc i (by its record here: right for discs in edge grid). */
+    /** The slab that owns disc i (by its record here: right for discs in edge cells). */
     public int ownerOf(int i) {
         return grid.ownerOfDisc(i);
     }

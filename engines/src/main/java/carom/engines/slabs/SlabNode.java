@@ -14,10 +14,10 @@ import carom.engines.kernel.TableState;
  * own, built from the scene like every other node's (so internal ids agree everywhere). The
  * coordinator ({@link SlabMirror}) drives it with messages; this class is what a node does with them.
  *
- * <p>Invariant: in this node's table a disc lies in one of this slab's columns if and only if this
+ * <p>Invariant: in this node's table a disc lies in one of this slab's cells if and only if this
  * node owns it. Foreign discs are never read here (the domain's predictions are filtered to its own
- * grid); their records go stale, and a disc coming in ({@link #install}) is written whole, a
- * disc going out ({@link #emigrate}) is moved into the foreign column it enters.
+ * cells); their records go stale, and a disc coming in ({@link #install}) is written whole, a
+ * disc going out ({@link #emigrate}) is moved into the foreign cell it enters.
  */
 public final class SlabNode {
     private static final String TAG = "cluster-node/1";
@@ -96,7 +96,7 @@ public final class SlabNode {
         return table.n;
     }
 
-    /** Current records of this slab's mobile discs in edge columns (the coordinator's first view of them). */
+    /** Current records of this slab's mobile discs in edge cells (the coordinator's first view of them). */
     public StateBatch edgeStates() {
         StateBatch.Builder b = builder(64);
         for (int i = 0; i < table.n; i++) {
@@ -123,7 +123,7 @@ public final class SlabNode {
         return domain.stopDisc;
     }
 
-    /** Current records of the discs changed in an edge column in this window (after an undo: restored). */
+    /** Current records of the discs changed in an edge cell in this window (after an undo: restored). */
     public StateBatch changedRecords() {
         UndoLog log = domain.log;
         if (log == null) { // one node: no edge, nothing to verify
@@ -137,7 +137,7 @@ public final class SlabNode {
     }
 
     /**
-     * The edge-column segments the changed discs followed in this window (log entries, newest first
+     * The edge-cell segments the changed discs followed in this window (log entries, newest first
      * per disc, grouped by disc in the order of {@link #changedRecords}).
      */
     public StateBatch changedSegments() {
@@ -182,7 +182,7 @@ public final class SlabNode {
         scratch.restore(0, i);
         if (grid.ownerOfDisc(i) != domain.id) {
             throw new IllegalStateException("disc " + table.sceneId(i) + " installed in slab " + domain.id
-                    + " but lies in column " + table.colOfDisc(i));
+                    + " but lies in cell (" + table.colOfDisc(i) + ", " + table.rowOfDisc(i) + ")");
         }
         // Mobile in the scene, awake or asleep: a sleeping disc keeps an event (its contacts with discs awake).
         if (table.mobile(i)) {
@@ -192,7 +192,7 @@ public final class SlabNode {
     }
 
     /**
-     * Disc i, whose next event is its crossing into a foreign column at local {@code now}, leaves
+     * Disc i, whose next event is its crossing into a foreign cell at local {@code now}, leaves
      * this slab: moved into that column here and no longer scheduled; returns its state for its new
      * owner.
      */

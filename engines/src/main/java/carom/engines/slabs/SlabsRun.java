@@ -35,8 +35,8 @@ import java.util.Arrays;
  * the windows by their kept and undone events: when they do not pay, the run merges for a budget of
  * events that doubles with each failed try. The judgement is on counts, so a run is the same
  * whatever the threads and the load. Changing phase is exact: merged, a disc's event must be its next against every
- * neighbour, so the edge-column discs (which their slab predicted against its own columns only) are
- * predicted anew; split, no window may touch a foreign disc, so the edge-column discs and any disc
+ * neighbour, so the edge-cell discs (which their slab predicted against its own cells only) are
+ * predicted anew; split, no window may touch a foreign disc, so the edge-cell discs and any disc
  * whose candidate partner is now foreign are predicted by their slab, and the cross events anew
  * ({@link #merge}, {@link #split}). The calendar links live in the records, so each change of phase
  * rebuilds the calendars it uses; one pass over the discs, paid for by the budget of several events
@@ -433,7 +433,7 @@ final class SlabsRun {
 
     /**
      * Ends the split phase at local {@code now}, between windows, every event before {@code now}
-     * processed: the discs of edge cells, whose slabs predicted them against their own columns only,
+     * processed: the discs of edge cells, whose slabs predicted them against their own cells only,
      * are predicted against their whole neighbourhood; every other disc's event already is its next
      * one. The cross events are dropped and the whole domain's calendar is built over every disc, for a
      * phase of the policy's budget of events.
@@ -460,8 +460,8 @@ final class SlabsRun {
 
     /**
      * Ends a merged phase at local {@code now}, every event before {@code now} processed: each disc of
-     * an edge column, and each disc whose candidate partner is now in another slab (it moved there
-     * during the phase), is predicted by its own slab (own columns only, so that no window touches a
+     * an edge cell, and each disc whose candidate partner is now in another slab (it moved there
+     * during the phase), is predicted by its own slab (own cells only, so that no window touches a
      * foreign disc); every slab's calendar is built over its discs and the cross events are predicted
      * anew.
      */
@@ -563,7 +563,7 @@ final class SlabsRun {
         }
     }
 
-    /** Disc i crosses into a foreign column at local {@code now}: it changes domain. */
+    /** Disc i crosses into a foreign cell at local {@code now}: it changes domain. */
     private void migrate(int i, double now) {
         counters.migrations++;
         Domain from = ownerOf(i);

@@ -10,9 +10,9 @@ import java.util.Arrays;
  * event the state of every disc it changes, so that the window can be undone back to any event
  * ({@link Domain#undo}). The saved states are also the discs' trajectory segments: disc i followed
  * the segment saved in entry e from that state's clock up to the entry's event, and its current
- * record after its last event. Entries of discs in edge columns are chained per disc for
+ * record after its last event. Entries of discs in edge cells are chained per disc for
  * {@link WindowVerifier} (from {@link DiscMarks#lastEntry}, newest first), and the discs changed in
- * an edge column are listed. Written by the domain's thread during a window, read and truncated by
+ * an edge cell are listed. Written by the domain's thread during a window, read and truncated by
  * the coordinator between windows.
  */
 final class UndoLog {
@@ -40,14 +40,14 @@ final class UndoLog {
     private double[] energyPutToRest = new double[64];
     private int[] firstEntry = new int[64];
 
-    // Entries: the disc, its event, its previous edge-column entry, and its saved state.
+    // Entries: the disc, its event, its previous edge-cell entry, and its saved state.
     private int entries;
     private int[] disc = new int[128];
     private int[] event = new int[128];
     private int[] previousEdgeEntry = new int[128];
     private final SavedStates saved;
 
-    /** Discs changed in an edge column in this window. */
+    /** Discs changed in an edge cell in this window. */
     private int[] changed = new int[64];
     private int changedCount;
 
@@ -105,7 +105,7 @@ final class UndoLog {
         disc[e] = i;
         event[e] = events - 1;
         if (grid.inEdgeCell(i)) {
-            // An edge-column segment: chained for verify.
+            // An edge-cell segment: chained for verify.
             markChanged(i);
             previousEdgeEntry[e] = marks.lastEntry(i);
             marks.setLastEntry(i, e);
@@ -113,7 +113,7 @@ final class UndoLog {
         saved.save(e, i);
     }
 
-    /** After an event: a disc now in an edge column is changed (it may just have entered it). */
+    /** After an event: a disc now in an edge cell is changed (it may just have entered it). */
     void markIfEdge(int i) {
         if (grid.inEdgeCell(i)) {
             markChanged(i);
@@ -129,7 +129,7 @@ final class UndoLog {
         }
     }
 
-    /** Discs changed in an edge column in this window: how many, and the q-th. */
+    /** Discs changed in an edge cell in this window: how many, and the q-th. */
     int changedCount() {
         return changedCount;
     }
@@ -138,7 +138,7 @@ final class UndoLog {
         return changed[q];
     }
 
-    /** The edge-column entry of the same disc before entry e, or -1. */
+    /** The edge-cell entry of the same disc before entry e, or -1. */
     int previousEdgeEntry(int e) {
         return previousEdgeEntry[e];
     }

@@ -76,8 +76,8 @@ final class WindowVerifier {
                 if (!table.mobile(x)) {
                     continue;
                 }
-                // Segments of x in edge columns: the current record from its clock (every event advances
-                // the disc to its time) on, then each logged edge-column state up to its event.
+                // Segments of x in edge cells: the current record from its clock (every event advances
+                // the disc to its time) on, then each logged edge-cell state up to its event.
                 checkSegment(a, x, RECORD, table.colOfDisc(x), table.rowOfDisc(x), Math.max(start, table.clock(x)),
                         limit, start, limit);
                 for (int e = marks.lastEntry(x); e >= 0; e = log.previousEdgeEntry(e)) {
