@@ -14,12 +14,18 @@ public final class KernelTunables {
      */
     public static final Tunable.Real CELL_FACTOR = Tunable.Real.atLeast("cellFactor", 1, 1, "diameters",
             "cell side over the largest diameter; wider cells mean fewer crossings but more neighbours per scan")
-            .computedByDefault("1 from packing fraction 0.15 up, 0.3/phi - 1 below it, at most 3");
+            .computedByDefault("1 from packing fraction 0.15 up, 0.3/phi - 1 below it, at most 3; 1 under gravity");
 
-    /** The cell factor of a run: the given one, or the default for the scene's packing fraction. */
+    /**
+     * The cell factor of a run: the given one, or the default for the scene's packing fraction; 1 under
+     * gravity, where discs gather in piles however dilute the box is on average.
+     */
     public static double cellFactor(RunOptions options, Scene scene) {
         double given = CELL_FACTOR.of(options);
-        return Double.isNaN(given) ? forPackingFraction(scene.packingFraction()) : given;
+        if (!Double.isNaN(given)) {
+            return given;
+        }
+        return scene.effects().hasGravity() ? 1 : forPackingFraction(scene.packingFraction());
     }
 
     /** The default cell factor at packing fraction {@code phi}: 1 from 0.15 up, rising to 3 at 0.075. */

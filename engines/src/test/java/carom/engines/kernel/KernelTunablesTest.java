@@ -27,5 +27,8 @@ class KernelTunablesTest {
         assertThat(KernelTunables.cellFactor(RunOptions.until(1), dilute)).isEqualTo(3);
         assertThat(KernelTunables.cellFactor(RunOptions.until(1).withTunable("cellFactor", "1.2"), dilute)).isEqualTo(1.2);
         assertThat(KernelTunables.growthCellFactor(RunOptions.until(1))).isEqualTo(1);
+        // Under gravity the discs pile up, however dilute the box is on average.
+        Scene falling = dilute.withEffects(carom.core.scene.Effects.NONE.withGravity(0, -1));
+        assertThat(KernelTunables.cellFactor(RunOptions.until(1), falling)).isEqualTo(1);
     }
 }
