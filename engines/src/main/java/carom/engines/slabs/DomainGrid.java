@@ -12,13 +12,13 @@ import carom.engines.kernel.OwnerFilter;
 /**
  * How {@code slabs} and {@code cluster} cut the box into domains: which domain owns each cell.
  *
- * <p>The grid is the kernel's {@link DiscTable} (cells a hair wider than the largest diameter, discs
+ * <p>The grid is the kernel's {@link DiscTable} (cells of {@code cellFactor} largest diameters, discs
  * Morton-ordered, one record of doubles and one of ints per disc); each domain predicts through its
  * own {@link carom.engines.kernel.CellPredictor}, filtered to its cells. The cells are cut into
  * {@link #domainCols} columns times {@link #domainRows} rows of domains, each at least
  * {@link #MIN_SIDE} cells wide and high: vertical slabs when there is one row of domains, blocks when
- * there are several (their boundary per domain shrinks as domains grow: a square of K blocks has a
- * boundary of about 4√K cell sides per domain's worth of cells, K slabs one of 2 box heights each). A
+ * there are several. Blocks cut less as the domains grow: in a periodic square box of side L, K slabs
+ * cut K L in all, K square blocks 2 √K L; cross events, and so windows, follow the cut's length. A
  * disc belongs to the domain owning its logical cell. Each {@link Domain} keeps its own calendar
  * queue over its discs and predicts only against discs of its own cells, so during a window a thread
  * reads and writes only its own discs and cells. An <em>edge</em> cell has a foreign cell among its 8
