@@ -14,7 +14,7 @@ public final class KernelTunables {
      */
     public static final Tunable.Real CELL_FACTOR = Tunable.Real.atLeast("cellFactor", 1, 1, "diameters",
             "cell side over the largest diameter; wider cells mean fewer crossings but more neighbours per scan")
-            .computedByDefault("1 from packing fraction 0.15 up, 0.3/phi - 1 below it, at most 3; 1 under gravity");
+            .computedByDefault("1 from packing fraction 1/6 up, 0.5/phi - 2 below it, at most 3; 1 under gravity");
 
     /**
      * The cell factor of a run: the given one, or the default for the scene's packing fraction; 1 under
@@ -28,9 +28,9 @@ public final class KernelTunables {
         return scene.effects().hasGravity() ? 1 : forPackingFraction(scene.packingFraction());
     }
 
-    /** The default cell factor at packing fraction {@code phi}: 1 from 0.15 up, rising to 3 at 0.075. */
+    /** The default cell factor at packing fraction {@code phi}: 1 from 1/6 up, 2 near 0.125, 3 from 0.1 down. */
     static double forPackingFraction(double phi) {
-        return Math.max(1, Math.min(3, 0.3 / phi - 1));
+        return Math.max(1, Math.min(3, 0.5 / phi - 2));
     }
 
     /** The cell factor of a growth run: the given one, else 1 (the discs grow towards jamming). */

@@ -12,10 +12,10 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.api.Test;
 
-/** The kernel's cell factor: 1 from packing fraction 0.15 up, wider in dilute gases, as given when given. */
+/** The kernel's cell factor: 1 from packing fraction 1/6 up, wider in dilute gases, as given when given. */
 class KernelTunablesTest {
     @ParameterizedTest(name = "phi {0}: {1}")
-    @CsvSource({"0.7, 1", "0.3, 1", "0.15, 1", "0.1, 2", "0.126, 1.380952", "0.075, 3", "0.01, 3"})
+    @CsvSource({"0.7, 1", "0.3, 1", "0.1666667, 1", "0.15, 1.333333", "0.125, 2", "0.1, 3", "0.01, 3"})
     void theDefaultWidensTheCellsOfDiluteGases(double phi, double expected) {
         assertThat(KernelTunables.forPackingFraction(phi)).isCloseTo(expected, within(1e-6));
     }
