@@ -239,8 +239,9 @@ final class ClusterRun {
             double seconds = (System.nanoTime() - started) * 1e-9;
             double energyEnd = Observables.kineticEnergy(out);
             Pressure pressure = VirialAccumulator.pressureOf(virial, scene, out, energyStart, energyEnd);
-            long events = sums[0] + crossDomainEvents + migrations;
-            return new RunResult("cluster", true, out, until, sums[1] + mirror.crossPairCollisions, sums[2], events,
+            long events = sums[SlabCounts.EVENTS] + crossDomainEvents + migrations;
+            return new RunResult("cluster", true, out, until, sums[SlabCounts.PAIR_COLLISIONS] + mirror.crossPairCollisions,
+                    sums[SlabCounts.WALL_COLLISIONS], events,
                     energyStart, energyEnd, momentumStart, Observables.momentum(out), pressure, 0, seconds,
                     SlabCounts.counters(this, count, sums, scene.effects().hasGravity()), SlabCounts.energyPutToRest(sums));
         }

@@ -334,11 +334,6 @@ public final class DiscTable {
         return (ir[i * IS + CELL] >>> AXIS_BITS) & AXIS_MASK;
     }
 
-    /** The index of disc i's logical cell, {@code row * cols + col}. */
-    public int cellOfDisc(int i) {
-        return rowOfDisc(i) * cols + colOfDisc(i);
-    }
-
     /** The first disc in the list of cell {@code row * cols + col}, or {@link #NIL}. */
     public int firstInCell(int cell) {
         return cellHead[cell];

@@ -8,7 +8,7 @@ import carom.core.scene.Scene;
 public final class KernelTunables {
     /**
      * Cells a hair wider than one diameter are the best measured for one event per disc from packing
-     * fraction 0.2 up (fewer neighbours to scan per prediction); in dilute gases a disc crosses several
+     * fraction 1/6 up (fewer neighbours to scan per prediction); in dilute gases a disc crosses several
      * cells per collision, and wider cells pay (lab/notes/cell-factor). The step-grid engines' default
      * of 2 does not apply here.
      */

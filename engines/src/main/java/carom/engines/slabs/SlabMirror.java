@@ -377,7 +377,7 @@ public final class SlabMirror {
      * kinetic energy put to rest (raw long bits), laid out as the end of {@link SlabNode#counters}.
      */
     public long[] restCounts() {
-        return new long[] {motion.sleeps(), motion.wakes(), Double.doubleToRawLongBits(motion.energyPutToRest())};
+        return SlabNode.restCounts(motion);
     }
 
     /** The scene id of internal disc i, for messages. */

@@ -5,6 +5,7 @@ import carom.core.engine.StateBytes;
 import carom.core.observe.VirialAccumulator;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
+import carom.engines.kernel.DiscMotion;
 import carom.engines.kernel.DiscTable;
 import carom.engines.kernel.SavedStates;
 import carom.engines.kernel.TableState;
@@ -296,9 +297,17 @@ public final class SlabNode {
      * discs put to sleep and woken, and the kinetic energy put to rest (its raw long bits).
      */
     public long[] counters() {
+        long[] rest = restCounts(domain.motion);
         return new long[] {domain.events, domain.pairCollisions, domain.wallCollisions, domain.crossings,
-                domain.staleEvents, domain.undoneEvents, domain.motion.sleeps(), domain.motion.wakes(),
-                Double.doubleToRawLongBits(domain.motion.energyPutToRest())};
+                domain.staleEvents, domain.undoneEvents, rest[0], rest[1], rest[2]};
+    }
+
+    /**
+     * Resting contact in {@code motion}'s collisions: discs put to sleep, woken, and the kinetic energy
+     * put to rest (raw long bits), the end of {@link #counters} (and the coordinator's, {@link SlabMirror#restCounts}).
+     */
+    static long[] restCounts(DiscMotion motion) {
+        return new long[] {motion.sleeps(), motion.wakes(), Double.doubleToRawLongBits(motion.energyPutToRest())};
     }
 
     /** Discs fall asleep somewhere in the run: this slab's crossings re-predict in full from now on. */
