@@ -25,7 +25,7 @@ import java.util.List;
  * {@link #resume}): every node's whole state at the start of a window ({@link ClusterCheckpoint}), so
  * that a resumed run ends in the bits of one that never stopped; a resumed run starts its own workers
  * on 127.0.0.1, as many as the saved run had. Faults: a lost node (a worker JVM this run started that
- * dies, or a {@code --seed-nodes} worker unreachable for 20 s) is recovered from, on the nodes that
+ * dies, or a {@code --seed-nodes} worker unreachable for {@code lostSeconds}, 20 s) is recovered from, on the nodes that
  * remain, from the coordinator's last in-memory checkpoint (exact to rounding); the coordinator's own death
  * ends its workers ({@link ClusterWorker}), and the user resumes from the last checkpoint file.
  *
@@ -100,7 +100,7 @@ public final class ClusterEngine implements Engine {
     @Override
     public List<Tunable<?>> tunables() {
         return List.of(ClusterRun.NODES, KernelTunables.CELL_FACTOR, DOMAIN_ROWS, ClusterRun.JOIN_SECONDS,
-                ClusterRun.REPLY_SECONDS, ClusterRun.CHECKPOINT_WINDOWS);
+                ClusterRun.LOST_SECONDS, ClusterRun.REPLY_SECONDS, ClusterRun.CHECKPOINT_WINDOWS);
     }
 
     /** One domain per JVM: the JVMs of a {@code --nodes} run share this machine's cores already. */

@@ -44,8 +44,12 @@ final class ClusterLife implements AutoCloseable {
     /** The nodes a run's slabs go to: {@link #hostSlabs} of them on every JVM, JVM by JVM. */
     private List<ActorRef<NodeCommand>> slabNodes = List.of();
 
-    private ClusterLife(ActorSystem<NodeCommand> system, List<Process> workers, List<Path> workerLogs) {
+    /** How long a node of running workers must stay unreachable to count as lost ({@link #lostNode}). */
+    private final Duration lostAfter;
+
+    private ClusterLife(ActorSystem<NodeCommand> system, List<Process> workers, List<Path> workerLogs, Duration lostAfter) {
         this.system = system;
+        this.lostAfter = lostAfter;
         this.workers = workers;
         this.workerLogs = workerLogs;
         this.reaper = new Thread(this::destroyWorkers, "carom-cluster-reaper");
@@ -91,6 +95,16 @@ final class ClusterLife implements AutoCloseable {
                     failure-detector.acceptable-heartbeat-pause = 10s
                     jmx.enabled = off
                     log-info = off
+                    # A run waits for every node to join and to register (the receptionist spreads by
+                    # distributed data): Akka's intervals (1 s gossip, 2 s data gossip) made that about
+                    # 5 s of every run; a few nodes can afford gossip ten times as often.
+                    periodic-tasks-initial-delay = 100ms
+                    gossip-interval = 200ms
+                    leader-actions-interval = 200ms
+                    distributed-data.gossip-interval = 200ms
+                    distributed-data.notify-subscribers-interval = 100ms
+                    typed.receptionist.distributed-data.gossip-interval = 200ms
+                    typed.receptionist.distributed-data.notify-subscribers-interval = 100ms
                   }
                 }
                 """.formatted(MAX_SLABS_PER_NODE, MAX_SLABS_PER_NODE, host, port, s)).withFallback(ConfigFactory.defaultReference()).resolve();
@@ -115,7 +129,8 @@ final class ClusterLife implements AutoCloseable {
                 config("127.0.0.1", port, List.of("127.0.0.1:" + port)));
         List<Process> workers = new ArrayList<>();
         List<Path> logs = new ArrayList<>();
-        ClusterLife life = new ClusterLife(system, workers, logs);
+        // Workers started here are lost only when their process ends, never for being unreachable.
+        ClusterLife life = new ClusterLife(system, workers, logs, Duration.ZERO);
         try {
             String javaBin = ProcessHandle.current().info().command().orElse(Path.of(System.getProperty("java.home"), "bin", "java").toString());
             for (int w = 1; w < count; w++) {
@@ -153,12 +168,14 @@ final class ClusterLife implements AutoCloseable {
 
     /**
      * A cluster of this JVM and {@code count - 1} running workers ({@code carom node}) reached through
-     * {@code seeds}; this JVM listens on {@code host}:{@code port} (0: a free one).
+     * {@code seeds}; this JVM listens on {@code host}:{@code port} (0: a free one). A worker unreachable
+     * for {@code lostAfter} without a break is lost ({@link #lostNode}).
      */
-    static ClusterLife joining(List<String> seeds, String host, int port, int count, Duration joinTimeout) {
+    static ClusterLife joining(List<String> seeds, String host, int port, int count, Duration joinTimeout,
+                               Duration lostAfter) {
         ActorSystem<NodeCommand> system = ActorSystem.create(NodeActor.create(), "carom",
                 config(host, port == 0 ? freePort() : port, seeds));
-        ClusterLife life = new ClusterLife(system, new ArrayList<>(), new ArrayList<>());
+        ClusterLife life = new ClusterLife(system, new ArrayList<>(), new ArrayList<>(), lostAfter);
         try {
             life.awaitNodes(count, joinTimeout);
             return life;
@@ -172,7 +189,7 @@ final class ClusterLife implements AutoCloseable {
      * A node of the run that is lost, described; null while all serve. Lost: a worker this JVM started
      * that is no longer running (a live one is never given up: on this machine, an unreachable one is
      * only starved of a core), or a node of {@code --seed-nodes} workers held unreachable by the
-     * cluster's failure detector ({@link #config}'s heartbeat pause) for {@link #LOST_AFTER} without a
+     * cluster's failure detector ({@link #config}'s heartbeat pause) for {@link #lostAfter} without a
      * break: killed, or cut off.
      */
     String lostNode() {
@@ -184,15 +201,12 @@ final class ClusterLife implements AutoCloseable {
             }
         }
         Address a = unreachableTooLong();
-        return a == null ? null : "node at " + a.hostPort() + " unreachable for " + LOST_AFTER.toSeconds() + " s";
+        return a == null ? null : "node at " + a.hostPort() + " unreachable for " + lostAfter.toMillis() / 1000.0 + " s";
     }
-
-    /** How long a node of running workers must stay unreachable to count as lost. */
-    static final Duration LOST_AFTER = Duration.ofSeconds(20);
     /** Since when each node's address has been unreachable without a break (nanoTime). */
     private final java.util.Map<Address, Long> unreachableSince = new java.util.HashMap<>();
 
-    /** A node not started by this JVM that has stayed unreachable for {@link #LOST_AFTER}; else null. */
+    /** A node not started by this JVM that has stayed unreachable for {@link #lostAfter}; else null. */
     private Address unreachableTooLong() {
         Set<Address> now = new java.util.HashSet<>();
         for (Member m : Cluster.get(system).state().getUnreachable()) {
@@ -204,7 +218,7 @@ final class ClusterLife implements AutoCloseable {
             Address a = node.path().address();
             if (now.contains(a) && !startedHere(a)) {
                 long since = unreachableSince.computeIfAbsent(a, x -> t);
-                if (t - since >= LOST_AFTER.toNanos()) {
+                if (t - since >= lostAfter.toNanos()) {
                     return a;
                 }
             }

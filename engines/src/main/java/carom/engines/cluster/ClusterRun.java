@@ -78,6 +78,8 @@ final class ClusterRun {
             "JVMs of the cluster: this one and nodes-1 workers it starts on 127.0.0.1 (--nodes K sets it)");
     static final Tunable.Real JOIN_SECONDS = Tunable.Real.above("joinSeconds", 120, 0, "seconds",
             "how long the coordinator waits for every node to join before it stops with error: naming the missing ones");
+    static final Tunable.Real LOST_SECONDS = Tunable.Real.above("lostSeconds", 20, 0, "seconds",
+            "how long a worker of --seed-nodes must stay unreachable (beyond the failure detector's 10 s pause) before the run goes on without it");
     static final Tunable.Real REPLY_SECONDS = Tunable.Real.above("replySeconds", 600, 0, "seconds",
             "how long the coordinator waits for a node's answer to one command");
     static final Tunable.Whole CHECKPOINT_WINDOWS = new Tunable.Whole("checkpointWindows", 1024, 1, 1L << 40, "windows",
@@ -174,7 +176,8 @@ final class ClusterRun {
         // A saved state is read whole, and refused if it does not fit, before any JVM starts.
         ClusterCheckpoint.Resumed resumed = saved == null ? null : ClusterCheckpoint.read(this, saved);
         try (ClusterLife life = seeds.isEmpty() ? ClusterLife.local(count, join)
-                : ClusterLife.joining(seeds, ClusterLife.ownHost(seeds), 0, count, join)) {
+                : ClusterLife.joining(seeds, ClusterLife.ownHost(seeds), 0, count, join,
+                        Duration.ofMillis((long) (LOST_SECONDS.of(options) * 1000)))) {
             this.life = life;
             system = life.system();
             serialization = SerializationExtension.get(system.classicSystem());

@@ -307,7 +307,8 @@ class ClusterEngineTest {
             Scene scene = RandomScenes.dense(900, 0.5, true, 5, 0.5);
             CountDownLatch running = new CountDownLatch(1);
             RunOptions o = new RunOptions(scene.until(), 1, t -> running.countDown(),
-                    Map.of("nodes", "3", "checkpointWindows", "40"));
+                    // 2 s unreachable rather than 20 (past the failure detector's 10 s pause): the test's wait.
+                    Map.of("nodes", "3", "checkpointWindows", "40", "lostSeconds", "2"));
             CompletableFuture<RunResult> run = CompletableFuture.supplyAsync(
                     () -> ClusterEngine.joining(List.of(seed)).run(scene, o));
             assertThat(running.await(300, TimeUnit.SECONDS)).as("the run got going").isTrue();
