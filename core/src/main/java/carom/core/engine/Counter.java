@@ -9,10 +9,11 @@ package carom.core.engine;
  */
 public enum Counter {
     // Every engine that schedules events.
-    EVENTS("events", "events processed: collisions, cell crossings and stale events"),
+    EVENTS("events", "events processed: collisions, cell crossings (or list rebuilds) and stale events"),
     PREDICTIONS("predictions", "collision predictions computed"),
     STALE_EVENTS("staleEvents", "events found stale when their time came (a partner had collided since)"),
     CELL_CROSSINGS("cellCrossings", "discs crossing into another grid cell, as events"),
+    LIST_REBUILDS("listRebuilds", "neighbour lists made again, as events: a disc had moved half the skin (--option skin)"),
     RESYNCS("resyncs", "clock re-anchorings (every disc advanced to one time so clocks stay small)"),
     BYTES("bytes", "heap held by the run's disc and queue arrays"),
     BYTES_PER_DISC("bytesPerDisc", "the same over the number of discs, rounded"),

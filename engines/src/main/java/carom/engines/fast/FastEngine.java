@@ -38,12 +38,12 @@ public final class FastEngine implements Engine {
 
     @Override
     public String description() {
-        return "one event per disc, cell crossings as events, Paul's O(1) calendar queue, Morton-ordered discs";
+        return "one event per disc, cell crossings as events (from packing fraction 0.65, neighbour lists that expire instead), Paul's O(1) calendar queue, Morton-ordered discs";
     }
 
     @Override
     public List<Tunable<?>> tunables() {
-        return List.of(KernelTunables.CELL_FACTOR, Tunables.AUDIT_ENERGY);
+        return List.of(KernelTunables.CELL_FACTOR, KernelTunables.SKIN, Tunables.AUDIT_ENERGY);
     }
 
     @Override
@@ -76,6 +76,9 @@ public final class FastEngine implements Engine {
     public RunResult run(Scene scene, RunOptions options) {
         checkSupports(scene);
         if (scene.effects().grows()) {
+            if (KernelTunables.SKIN.of(options) > 0) { // given: the default is 0 with growth
+                throw new carom.core.BadInputException("--option skin: neighbour lists do not follow growing discs; leave skin at 0 with growth");
+            }
             carom.engines.kernel.GrowthStages.refuseCheckpoints(options);
             return new GrowthRun(scene, options, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY).run();
         }

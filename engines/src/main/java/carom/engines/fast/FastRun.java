@@ -3,6 +3,7 @@ package carom.engines.fast;
 import carom.core.engine.Tunables;
 import carom.core.engine.Counter;
 import carom.engines.kernel.KernelTunables;
+import static carom.engines.kernel.DiscTable.EXPIRE;
 import static carom.engines.kernel.DiscTable.HIT;
 import static carom.engines.kernel.DiscTable.RECHECK;
 import static carom.engines.kernel.DiscTable.RESYNC_SPANS;
@@ -27,6 +28,7 @@ import carom.engines.kernel.CalendarQueue;
 import carom.engines.kernel.CellPredictor;
 import carom.engines.kernel.DiscMotion;
 import carom.engines.kernel.DiscTable;
+import carom.engines.kernel.ListPredictor;
 import carom.engines.kernel.TableState;
 import java.util.HashMap;
 import java.util.Map;
@@ -57,6 +59,8 @@ final class FastRun {
     /** This thread's changes to the records, and its predictions. */
     private final DiscMotion motion;
     private final CellPredictor p;
+    /** Neighbour lists ({@code --option skin}), predicting in place of {@link #p}; null: cell scans. */
+    private final ListPredictor lists;
     private final Flight flight;
     private final EnergyAudit audit;
     private final VirialAccumulator virial;
@@ -85,6 +89,8 @@ final class FastRun {
     private long checkpointIndex;
     private double checkpointLocal;
     private static final String STATE_TAG = "fast/1";
+    /** A run with neighbour lists saves them too. */
+    private static final String LISTS_STATE_TAG = "fast/lists/1";
     /** A stop request is read every 4096 events: a volatile read, a few microseconds apart. */
     private static final long STOP_POLL_MASK = (1 << 12) - 1;
 
@@ -93,10 +99,15 @@ final class FastRun {
         this.until = options.until();
         // The initial discs are needed only here: the run holds its records, not a second copy.
         Discs src = scene.newDiscs();
-        this.table = new DiscTable(scene, src, KernelTunables.cellFactor(options, scene));
+        double skin = KernelTunables.skin(options, scene);
+        this.table = new DiscTable(scene, src,
+                skin > 0 ? KernelTunables.listCellFactor(options, skin) : KernelTunables.cellFactor(options, scene));
         this.n = table.n;
         this.motion = new DiscMotion(table);
         this.p = new CellPredictor(motion);
+        // By default, lists only where the box allows them (4 cells along each periodic axis); asked for, or nothing.
+        boolean lists = skin > 0 && (table.listsAllowed() || KernelTunables.skinGiven(options));
+        this.lists = lists ? new ListPredictor(motion, skin * 2 * src.maxRadius(), 2 * src.maxRadius()) : null;
         this.flight = table.flight;
         this.audit = Tunables.AUDIT_ENERGY.of(options) ? EnergyAudit.forScene(scene) : null;
         this.virial = VirialAccumulator.forRun(until);
@@ -124,7 +135,7 @@ final class FastRun {
     /** Continues the run {@code saved} was taken from ({@link #save}) to this run's until. */
     RunResult resume(byte[] saved) {
         long started = System.nanoTime();
-        StateBytes.In in = new StateBytes.In(saved, STATE_TAG);
+        StateBytes.In in = new StateBytes.In(saved, lists == null ? STATE_TAG : LISTS_STATE_TAG);
         double savedUntil = in.getDouble();
         double time = in.getDouble();
         if (!(until >= time)) {
@@ -139,11 +150,16 @@ final class FastRun {
         crossings = in.getLong();
         staleEvents = in.getLong();
         resyncs = in.getLong();
-        p.resumeCount(in.getLong());
+        long predictionsMade = in.getLong();
+        p.resumeCount(predictionsMade);
         energyStart = in.getDouble();
         momentumStart = new double[] {in.getDouble(), in.getDouble()};
         virial.restore(in.getDoubles(), savedUntil, in.getDouble());
         TableState.restore(table, in);
+        if (lists != null) {
+            lists.resumeCounts(predictionsMade, in.getLong());
+            lists.restore(in);
+        }
         queue.restore(in);
         motion.restoreRestCounts(in);
         in.end();
@@ -156,12 +172,16 @@ final class FastRun {
 
     /** The state between two events, continuing from absolute {@code time}: see the class comment. */
     private void save(double time) {
-        StateBytes.Out out = new StateBytes.Out(STATE_TAG).putDouble(until).putDouble(time).putDouble(epoch)
+        StateBytes.Out out = new StateBytes.Out(lists == null ? STATE_TAG : LISTS_STATE_TAG).putDouble(until).putDouble(time).putDouble(epoch)
                 .putDouble(resyncAt).putLong(samples.index()).putLong(pairCollisions).putLong(wallCollisions)
-                .putLong(events).putLong(crossings).putLong(staleEvents).putLong(resyncs).putLong(p.predictions())
+                .putLong(events).putLong(crossings).putLong(staleEvents).putLong(resyncs).putLong(predictions())
                 .putDouble(energyStart).putDouble(momentumStart[0]).putDouble(momentumStart[1])
                 .putDoubles(virial.blockSums()).putDouble(virial.total());
         TableState.save(table, out);
+        if (lists != null) {
+            out.putLong(lists.rebuilds());
+            lists.save(out);
+        }
         queue.save(out);
         motion.saveRestCounts(out);
         checkpoints.save(time, out.bytes());
@@ -191,7 +211,10 @@ final class FastRun {
         counters.put(Counter.EVENTS.key, events);
         counters.put(Counter.CELL_CROSSINGS.key, crossings);
         counters.put(Counter.STALE_EVENTS.key, staleEvents);
-        counters.put(Counter.PREDICTIONS.key, p.predictions());
+        counters.put(Counter.PREDICTIONS.key, predictions());
+        if (lists != null) {
+            counters.put(Counter.LIST_REBUILDS.key, lists.rebuilds());
+        }
         counters.put(Counter.RESYNCS.key, resyncs);
         counters.put(Counter.BYTES.key, bytes());
         counters.put(Counter.BYTES_PER_DISC.key, n == 0 ? 0 : Math.round((double) bytes() / n));
@@ -206,7 +229,11 @@ final class FastRun {
 
     /** Heap held by this run's per-disc and per-cell arrays, in bytes. */
     private long bytes() {
-        return table.bytes() + queue.bytes();
+        return table.bytes() + queue.bytes() + (lists == null ? 0 : lists.bytes());
+    }
+
+    private long predictions() {
+        return lists == null ? p.predictions() : lists.predictions();
     }
 
     private double invMass(int i) {
@@ -218,7 +245,7 @@ final class FastRun {
     }
 
     private double predictFull(int i, double now) {
-        return p.predictFull(i, now);
+        return lists == null ? p.predictFull(i, now) : lists.predictFull(i, now);
     }
 
     private void loop() {
@@ -255,6 +282,8 @@ final class FastRun {
             if (k == RECHECK) {
                 advance(i, now);
                 queue.insert(i, predictFull(i, now));
+            } else if (k == EXPIRE) {
+                queue.insert(i, lists.expireAndPredict(i, now));
             } else if (k != HIT) {
                 crossCell(i, now, k);
             } else {

@@ -26,6 +26,8 @@ public final class DiscTable {
     public static final byte CROSS_UP = 4;
     /** Re-predict in full (small periodic axes, where the nearest image can switch within a cell). */
     public static final byte RECHECK = 5;
+    /** Make the disc's neighbour list again: it has moved half the skin from the list's centre ({@link ListPredictor}). */
+    public static final byte EXPIRE = 6;
     /** No disc: the end of a cell list ({@link #nextInCell}). */
     public static final int NIL = -1;
     /** Engines re-anchor clocks every RESYNC_SPANS calendar spans ({@link #planCalendar}). */
@@ -293,12 +295,12 @@ public final class DiscTable {
         return k >= 1 ? (long) Math.min(k, 1 << 30) : 1;
     }
 
-    private int colOf(double x) {
+    int colOf(double x) {
         int col = (int) (x / cellW);
         return col < 0 ? 0 : (col >= cols ? cols - 1 : col);
     }
 
-    private int rowOf(double y) {
+    int rowOf(double y) {
         int row = (int) (y / cellH);
         return row < 0 ? 0 : (row >= rows ? rows - 1 : row);
     }
@@ -367,7 +369,12 @@ public final class DiscTable {
         rec[i * stride + EV] = t;
     }
 
-    /** The kind of disc i's scheduled event: {@link #HIT}, a crossing, or {@link #RECHECK}. */
+    /** Whether neighbour lists can predict on this table ({@link ListPredictor}): straight flight seen through each cell's image, no growth. */
+    public boolean listsAllowed() {
+        return straightImages && !growing;
+    }
+
+    /** The kind of disc i's scheduled event: {@link #HIT}, a crossing, {@link #RECHECK} or {@link #EXPIRE}. */
     public byte kind(int i) {
         return (byte) (ir[i * IS + CELL] >>> KIND_SHIFT);
     }

@@ -17,6 +17,42 @@ public final class KernelTunables {
             .computedByDefault("1 from packing fraction 1/6 up, 0.5/phi - 2 below it, at most 3; 1 under gravity");
 
     /**
+     * Neighbour lists instead of cell scans ({@link ListPredictor}): at high density a disc rattles in
+     * its cage, a list outlives many collisions and holds fewer discs than 3x3 cells (lab note
+     * smallenburg-2d): 1.2x at packing fraction 0.65, 1.1-1.3x at 0.70-0.74. In a gas lists expire every
+     * few collisions (0.7-0.9x at 0.5), so they are the default only from {@link #LIST_PACKING_FRACTION} up.
+     */
+    public static final Tunable.Real SKIN = Tunable.Real.atLeast("skin", 0, 0, "diameters",
+            "0: predict against the 3x3 cells around a disc; s > 0: against a list per disc of the discs within contact"
+                    + " distance plus s diameters, made again when the disc has moved s/2 (straight flight only)")
+            .computedByDefault("0.5 from packing fraction 0.65 up without gravity or growth, else 0");
+    /** Packing fraction from which {@code fast} predicts from neighbour lists by default. */
+    public static final double LIST_PACKING_FRACTION = 0.65;
+    /** The default skin there, in diameters (Smallenburg's shell of 1.5 diameters). */
+    static final double DEFAULT_SKIN = 0.5;
+
+    /** The skin of a run of {@code fast}: the given one, else {@link #DEFAULT_SKIN} in dense scenes that allow lists. */
+    public static double skin(RunOptions options, Scene scene) {
+        double given = SKIN.of(options);
+        if (!Double.isNaN(given)) {
+            return given;
+        }
+        boolean allowed = !scene.effects().hasGravity() && !scene.effects().grows();
+        return allowed && scene.packingFraction() >= LIST_PACKING_FRACTION ? DEFAULT_SKIN : 0;
+    }
+
+    /** Whether the skin was given ({@code --option skin}) rather than chosen by default. */
+    public static boolean skinGiven(RunOptions options) {
+        return !Double.isNaN(SKIN.of(options));
+    }
+
+    /** The cell factor of a run with neighbour lists: cells of a diameter plus the skin (wider if asked). */
+    public static double listCellFactor(RunOptions options, double skin) {
+        double given = CELL_FACTOR.of(options);
+        return Double.isNaN(given) ? 1 + skin : Math.max(given, 1 + skin);
+    }
+
+    /**
      * The cell factor of a run: the given one, or the default for the scene's packing fraction; 1 under
      * gravity, where discs gather in piles however dilute the box is on average.
      */

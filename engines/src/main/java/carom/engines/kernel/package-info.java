@@ -14,6 +14,9 @@
  *   <li>{@link carom.engines.kernel.CellPredictor}: one thread's predictions (cell exit, contact
  *       and wall times, the 3x3 scan, scheduling), optionally filtered to the columns a domain
  *       owns.</li>
+ *   <li>{@link carom.engines.kernel.ListPredictor}: predictions from neighbour lists with a skin, in
+ *       place of the cell scan ({@code fast} in dense scenes): a list expiry event replaces the cell
+ *       crossing, and the cells (a diameter plus the skin wide) only serve to make lists.</li>
  *   <li>{@link carom.engines.kernel.CalendarQueue}: Paul's O(1) queue of one event per disc, keyed
  *       and linked through the records; one per thread.</li>
  *   <li>{@link carom.engines.kernel.SavedStates}: disc states saved for an undo log

@@ -1,0 +1,93 @@
+package carom.engines.kernel;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+import static org.assertj.core.api.Assertions.within;
+
+import carom.core.BadInputException;
+import carom.core.physics.Boundary;
+import carom.core.scene.Scene;
+import carom.core.state.Discs;
+import carom.engines.reference.RandomScenes;
+import java.util.SplittableRandom;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+import org.junit.jupiter.params.provider.ValueSource;
+
+/**
+ * The invariant neighbour lists rest on: every pair of discs whose list centres are within contact
+ * distance plus the skin is in both lists, every list entry is mutual and none is doubled, and a disc
+ * sits in the cell of its centre; at the start and after many lists made again at random, with the
+ * discs moved along their paths (also out through periodic sides). Seeded scenes.
+ */
+class ListPredictorTest {
+
+    @ParameterizedTest(name = "N {0}, phi {1}, periodic {2}, seed {3}")
+    @CsvSource({"400, 0.72, true, 1", "400, 0.72, false, 2", "300, 0.5, true, 3", "225, 0.65, false, 4"})
+    void everyPairWithinReachIsInBothListsAfterRebuildsAtRandom(int n, double phi, boolean periodic, long seed) {
+        Scene scene = RandomScenes.dense(n, phi, periodic, seed, 1);
+        double skin = 0.5;
+        DiscTable table = new DiscTable(scene, scene.newDiscs(), 1 + skin);
+        ListPredictor lists = new ListPredictor(new DiscMotion(table), skin, 1.0);
+        assertListsComplete(table, lists, skin);
+        SplittableRandom random = new SplittableRandom(seed);
+        double now = 0;
+        for (int step = 0; step < 2000; step++) {
+            // Discs move up to a few diameters, far beyond any list's life (half the skin), yet within a box
+            // length of the box, as making a list again assumes (it moves a disc back by one box length).
+            now += 5e-4;
+            lists.expireAndPredict(random.nextInt(table.n), now);
+        }
+        assertListsComplete(table, lists, skin);
+        assertThat(lists.rebuilds()).isEqualTo(2000);
+    }
+
+    private static void assertListsComplete(DiscTable table, ListPredictor lists, double skin) {
+        Boundary boundary = table.boundary;
+        for (int i = 0; i < table.n; i++) {
+            int[] mine = lists.neighboursOf(i);
+            for (int k = 1; k < mine.length; k++) {
+                assertThat(mine[k]).as("list of %d has no double", i).isNotEqualTo(mine[k - 1]);
+            }
+            for (int j : mine) {
+                assertThat(lists.neighboursOf(j)).as("%d in the list of its neighbour %d", i, j).contains(i);
+            }
+            assertThat(table.colOfDisc(i)).as("column of %d", i).isEqualTo(table.colOf(lists.centre(i, 0)));
+            assertThat(table.rowOfDisc(i)).as("row of %d", i).isEqualTo(table.rowOf(lists.centre(i, 1)));
+            for (int j = i + 1; j < table.n; j++) {
+                double dx = boundary.separationX(lists.centre(j, 0) - lists.centre(i, 0));
+                double dy = boundary.separationY(lists.centre(j, 1) - lists.centre(i, 1));
+                double reach = table.radius(i) + table.radius(j) + skin;
+                if (dx * dx + dy * dy < reach * reach) {
+                    assertThat(mine).as("%d within reach of %d", j, i).contains(j);
+                }
+            }
+        }
+    }
+
+    @ParameterizedTest(name = "offset {0}")
+    @ValueSource(doubles = {0, 0.1, -0.2, 0.24})
+    void aDiscLeavesItsReachWhenItsDistanceFromTheCentreIsHalfTheSkin(double offset) {
+        double vx = 0.7;
+        double vy = -1.3;
+        double t = ListPredictor.timeToLeave(offset, 0.05, vx, vy, 0.25);
+        double x = offset + vx * t;
+        double y = 0.05 + vy * t;
+        assertThat(t).isPositive();
+        assertThat(Math.hypot(x, y)).isCloseTo(0.25, within(1e-15));
+        assertThat(ListPredictor.timeToLeave(0.3, 0, vx, vy, 0.25)).as("outside already").isZero();
+        assertThat(ListPredictor.timeToLeave(offset, 0, 0, 0, 0.25)).as("at rest").isInfinite();
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @ValueSource(strings = {"gravity", "small periodic box"})
+    void tablesListsCannotServeAreRefused(String which) {
+        Scene dense = RandomScenes.dense(400, 0.5, false, 1, 1);
+        Scene scene = which.equals("gravity") ? dense.withEffects(carom.core.scene.Effects.NONE.withGravity(0, -1))
+                : RandomScenes.dense(9, 0.5, true, 1, 1);
+        Discs discs = scene.newDiscs();
+        DiscTable table = new DiscTable(scene, discs, 1.5);
+        assertThatThrownBy(() -> new ListPredictor(new DiscMotion(table), 0.5, 1.0))
+                .isInstanceOf(BadInputException.class).hasMessageContaining("--option skin");
+    }
+}
