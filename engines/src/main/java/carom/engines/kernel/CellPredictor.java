@@ -3,7 +3,6 @@ package carom.engines.kernel;
 import static carom.engines.kernel.DiscTable.AXIS_BITS;
 import static carom.engines.kernel.DiscTable.AXIS_MASK;
 import static carom.engines.kernel.DiscTable.CELL;
-import static carom.engines.kernel.DiscTable.CELL_MASK;
 import static carom.engines.kernel.DiscTable.CNEXT;
 import static carom.engines.kernel.DiscTable.COUNT;
 import static carom.engines.kernel.DiscTable.CROSS_DOWN;
@@ -12,7 +11,6 @@ import static carom.engines.kernel.DiscTable.CROSS_RIGHT;
 import static carom.engines.kernel.DiscTable.CROSS_UP;
 import static carom.engines.kernel.DiscTable.INF;
 import static carom.engines.kernel.DiscTable.IS;
-import static carom.engines.kernel.DiscTable.KIND_SHIFT;
 import static carom.engines.kernel.DiscTable.NIL;
 import static carom.engines.kernel.DiscTable.NONE;
 import static carom.engines.kernel.DiscTable.PARTNER;
@@ -297,7 +295,7 @@ public final class CellPredictor {
             scan(i, now, now + cross, 0, visitCell, visitShiftX, visitShiftY, m);
         }
         predictions++;
-        return schedule(i, now, found, foundP, cross, ck);
+        return table.schedule(i, now, found, foundP, cross, ck);
     }
 
     /**
@@ -337,7 +335,7 @@ public final class CellPredictor {
             scan(i, now, horizon, 0, visitCell, visitShiftX, visitShiftY, m);
         }
         predictions++;
-        return schedule(i, now, found, foundP, cross, ck);
+        return table.schedule(i, now, found, foundP, cross, ck);
     }
 
     /** {@link Flight#timeToContact} of discs i and j (i in slot 0 unless straightImages). */
@@ -511,16 +509,5 @@ public final class CellPredictor {
         }
         found = best;
         foundP = bestP;
-    }
-
-    private double schedule(int i, double now, double best, int bestP, double cross, byte ck) {
-        ir[i * IS + PARTNER] = bestP;
-        ir[i * IS + PCOUNT] = bestP >= 0 ? ir[bestP * IS + COUNT] : 0;
-        if (cross < best) {
-            ir[i * IS + CELL] = (ir[i * IS + CELL] & CELL_MASK) | ck << KIND_SHIFT;
-            return now + cross;
-        }
-        ir[i * IS + CELL] &= CELL_MASK;
-        return best == INF ? INF : now + best;
     }
 }

@@ -374,6 +374,23 @@ public final class DiscTable {
         return straightImages && !growing;
     }
 
+    /**
+     * Records disc i's prediction at local {@code now}: its best candidate {@code bestP} (contact in
+     * {@code best} from now) and its partner's count, and the kind of the event, the candidate or the
+     * disc's other event ({@code otherKind}: a crossing, a recheck or an expiry) due in {@code other},
+     * whichever comes first. Returns the event's local time (+Infinity if none).
+     */
+    double schedule(int i, double now, double best, int bestP, double other, byte otherKind) {
+        ir[i * IS + PARTNER] = bestP;
+        ir[i * IS + PCOUNT] = bestP >= 0 ? ir[bestP * IS + COUNT] : 0;
+        if (other < best) {
+            ir[i * IS + CELL] = (ir[i * IS + CELL] & CELL_MASK) | otherKind << KIND_SHIFT;
+            return now + other;
+        }
+        ir[i * IS + CELL] &= CELL_MASK;
+        return best == INF ? INF : now + best;
+    }
+
     /** The kind of disc i's scheduled event: {@link #HIT}, a crossing, {@link #RECHECK} or {@link #EXPIRE}. */
     public byte kind(int i) {
         return (byte) (ir[i * IS + CELL] >>> KIND_SHIFT);

@@ -4,16 +4,12 @@ import static carom.engines.kernel.DiscTable.AXIS_BITS;
 import static carom.engines.kernel.DiscTable.AXIS_MASK;
 import static carom.engines.kernel.DiscTable.CELL;
 import static carom.engines.kernel.DiscTable.CELL_MASK;
-import static carom.engines.kernel.DiscTable.COUNT;
 import static carom.engines.kernel.DiscTable.CNEXT;
 import static carom.engines.kernel.DiscTable.EXPIRE;
 import static carom.engines.kernel.DiscTable.INF;
 import static carom.engines.kernel.DiscTable.IS;
-import static carom.engines.kernel.DiscTable.KIND_SHIFT;
 import static carom.engines.kernel.DiscTable.NIL;
 import static carom.engines.kernel.DiscTable.NONE;
-import static carom.engines.kernel.DiscTable.PARTNER;
-import static carom.engines.kernel.DiscTable.PCOUNT;
 import static carom.engines.kernel.DiscTable.R;
 import static carom.engines.kernel.DiscTable.T;
 import static carom.engines.kernel.DiscTable.VX;
@@ -346,14 +342,7 @@ public final class ListPredictor {
             }
         }
         predictions++;
-        ir[i * IS + PARTNER] = bestP;
-        ir[i * IS + PCOUNT] = bestP >= 0 ? ir[bestP * IS + COUNT] : 0;
-        if (expiry < best) {
-            ir[i * IS + CELL] = (ir[i * IS + CELL] & CELL_MASK) | EXPIRE << KIND_SHIFT;
-            return now + expiry;
-        }
-        ir[i * IS + CELL] &= CELL_MASK;
-        return best == INF ? INF : now + best;
+        return table.schedule(i, now, best, bestP, expiry, EXPIRE);
     }
 
     /**
