@@ -100,11 +100,21 @@ public final class StateBytes {
         }
     }
 
+    /** The tag a state starts with, or null if it starts with none. */
+    public static String tagOf(byte[] state) {
+        try {
+            return new In(state, null).tag;
+        } catch (IllegalArgumentException e) {
+            return null;
+        }
+    }
+
     /** Reads values back in the order {@link Out} wrote them. */
     public static final class In {
         private final ByteBuffer buffer;
+        private final String tag;
 
-        /** Fails unless the state starts with {@code tag}. */
+        /** Fails unless the state starts with {@code tag} (null: any tag). */
         public In(byte[] state, String tag) {
             this.buffer = ByteBuffer.wrap(state).order(ByteOrder.LITTLE_ENDIAN);
             String found;
@@ -113,7 +123,8 @@ public final class StateBytes {
             } catch (IllegalArgumentException e) {
                 throw new IllegalArgumentException("engine state: not of " + tag);
             }
-            if (!found.equals(tag)) {
+            this.tag = found;
+            if (tag != null && !found.equals(tag)) {
                 throw new IllegalArgumentException("engine state: of " + carom.core.Quoted.of(found) + ", expected " + tag);
             }
         }

@@ -69,6 +69,10 @@ public final class FastEngine implements Engine {
     @Override
     public RunResult resume(Scene scene, RunOptions options, byte[] saved) {
         checkSupports(scene);
+        if (!KernelTunables.skinGiven(options) && !FastRun.savedWithLists(saved)) {
+            // Saved with cells where lists are now the default (a checkpoint from before lists were): on with cells.
+            options = options.withTunable(KernelTunables.SKIN.name(), "0");
+        }
         return new FastRun(scene, options).resume(saved);
     }
 

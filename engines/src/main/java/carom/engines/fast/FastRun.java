@@ -132,6 +132,11 @@ final class FastRun {
         return finish(started);
     }
 
+    /** Whether {@code saved} is the state of a run with neighbour lists ({@link #save}). */
+    static boolean savedWithLists(byte[] saved) {
+        return LISTS_STATE_TAG.equals(StateBytes.tagOf(saved));
+    }
+
     /** Continues the run {@code saved} was taken from ({@link #save}) to this run's until. */
     RunResult resume(byte[] saved) {
         long started = System.nanoTime();
