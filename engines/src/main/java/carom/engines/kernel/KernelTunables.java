@@ -19,7 +19,7 @@ public final class KernelTunables {
     /**
      * Neighbour lists instead of cell scans ({@link ListPredictor}): at high density a disc rattles in
      * its cage, a list outlives many collisions and holds fewer discs than 3x3 cells (lab note
-     * smallenburg-2d): 1.2x at packing fraction 0.65, 1.1-1.3x at 0.70-0.74. In a gas lists expire every
+     * smallenburg-2d): 1.2x at packing fraction 0.65, a median 1.2-1.4x at 0.70-0.74. In a gas lists expire every
      * few collisions (0.7-0.9x at 0.5), so they are the default only from {@link #LIST_PACKING_FRACTION} up.
      */
     public static final Tunable.Real SKIN = Tunable.Real.atLeast("skin", 0, 0, "diameters",
