@@ -20,14 +20,19 @@ public final class KernelTunables {
      * Neighbour lists instead of cell scans ({@link ListPredictor}): at high density a disc rattles in
      * its cage, a list outlives many collisions and holds fewer discs than 3x3 cells (lab note
      * smallenburg-2d): 1.2x at packing fraction 0.65, a median 1.2-1.4x at 0.70-0.74. In a gas lists expire every
-     * few collisions (0.7-0.9x at 0.5), so they are the default only from {@link #LIST_PACKING_FRACTION} up.
+     * few collisions (0.7-0.9x at 0.5), so they are the default only from {@link #LIST_PACKING_FRACTION} up; and
+     * only up to {@link #LIST_MAX_DISCS} discs: at 0.72 they gained 1.17x at N = 16,384 but lost at 40,000
+     * (0.63x) and did not pay at 90,000 (median 0.96x), where their 50 more bytes a disc take the run out
+     * of the measuring machine's 1 MiB level-2 cache.
      */
     public static final Tunable.Real SKIN = Tunable.Real.atLeast("skin", 0, 0, "diameters",
             "0: predict against the 3x3 cells around a disc; s > 0: against a list per disc of the discs within contact"
                     + " distance plus s diameters, made again when the disc has moved s/2 (straight flight only)")
-            .computedByDefault("0.5 from packing fraction 0.65 up without gravity or growth, else 0");
+            .computedByDefault("0.5 from packing fraction 0.65 up with at most 20,000 discs, without gravity or growth; else 0");
     /** Packing fraction from which {@code fast} predicts from neighbour lists by default. */
     public static final double LIST_PACKING_FRACTION = 0.65;
+    /** The most discs for which {@code fast} predicts from neighbour lists by default. */
+    public static final int LIST_MAX_DISCS = 20_000;
     /** The default skin there, in diameters (Smallenburg's shell of 1.5 diameters). */
     static final double DEFAULT_SKIN = 0.5;
 
@@ -38,7 +43,8 @@ public final class KernelTunables {
             return given;
         }
         boolean allowed = !scene.effects().hasGravity() && !scene.effects().grows();
-        return allowed && scene.packingFraction() >= LIST_PACKING_FRACTION ? DEFAULT_SKIN : 0;
+        boolean pays = scene.packingFraction() >= LIST_PACKING_FRACTION && scene.size() <= LIST_MAX_DISCS;
+        return allowed && pays ? DEFAULT_SKIN : 0;
     }
 
     /** Whether the skin was given ({@code --option skin}) rather than chosen by default. */
