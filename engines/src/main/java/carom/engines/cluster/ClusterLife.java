@@ -95,16 +95,6 @@ final class ClusterLife implements AutoCloseable {
                     failure-detector.acceptable-heartbeat-pause = 10s
                     jmx.enabled = off
                     log-info = off
-                    # A run waits for every node to join and to register (the receptionist spreads by
-                    # distributed data): Akka's intervals (1 s gossip, 2 s data gossip) made that about
-                    # 5 s of every run; a few nodes can afford gossip ten times as often.
-                    periodic-tasks-initial-delay = 100ms
-                    gossip-interval = 200ms
-                    leader-actions-interval = 200ms
-                    distributed-data.gossip-interval = 200ms
-                    distributed-data.notify-subscribers-interval = 100ms
-                    typed.receptionist.distributed-data.gossip-interval = 200ms
-                    typed.receptionist.distributed-data.notify-subscribers-interval = 100ms
                   }
                 }
                 """.formatted(MAX_SLABS_PER_NODE, MAX_SLABS_PER_NODE, host, port, s)).withFallback(ConfigFactory.defaultReference()).resolve();

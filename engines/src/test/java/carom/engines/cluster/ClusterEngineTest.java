@@ -217,7 +217,7 @@ class ClusterEngineTest {
                 .withSamples(every, ClusterCheckpointTest.collect(samples)).withCheckpoints(kept);
         CompletableFuture<RunResult> run = CompletableFuture.supplyAsync(() -> new ClusterEngine().run(scene, o));
         try {
-            assertThat(running.await(300, TimeUnit.SECONDS)).as("the run got going").isTrue();
+            awaitGoing(running, run);
             ProcessHandle worker = ProcessHandle.current().descendants().filter(ProcessHandle::isAlive).findFirst()
                     .orElseThrow();
             worker.destroyForcibly();
@@ -268,6 +268,21 @@ class ClusterEngineTest {
         }
     }
 
+    /**
+     * Waits until the run reports progress; a run that ends first (it failed to start) fails the test at
+     * once with the run's own error, not after the whole wait with none.
+     */
+    private static void awaitGoing(CountDownLatch running, CompletableFuture<RunResult> run) throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(300);
+        while (!running.await(200, TimeUnit.MILLISECONDS)) {
+            if (run.isDone()) {
+                Throwable why = run.handle((r, e) -> e).join();
+                throw new AssertionError("the run ended before it got going: " + why, why);
+            }
+            assertThat(System.nanoTime()).as("the run got going within 300 s").isLessThan(deadline);
+        }
+    }
+
     @Test
     void runsOverARunningWorkerReachedThroughItsSeedNodeOneAfterAnother() throws Exception {
         // A worker as './carom node --join' starts it, seeding its own cluster; two runs join it in turn.
@@ -311,7 +326,7 @@ class ClusterEngineTest {
                     Map.of("nodes", "3", "checkpointWindows", "40", "lostSeconds", "2"));
             CompletableFuture<RunResult> run = CompletableFuture.supplyAsync(
                     () -> ClusterEngine.joining(List.of(seed)).run(scene, o));
-            assertThat(running.await(300, TimeUnit.SECONDS)).as("the run got going").isTrue();
+            awaitGoing(running, run);
             second.destroyForcibly();
             RunResult r = run.get(300, TimeUnit.SECONDS);
             assertThat(r.counters().get("recoveries")).as("recoveries").isEqualTo(1);
