@@ -107,7 +107,8 @@ final class FastRun {
         this.p = new CellPredictor(motion);
         // By default, lists only where the box allows them (4 cells along each periodic axis); asked for, or nothing.
         boolean lists = skin > 0 && (table.listsAllowed() || KernelTunables.skinGiven(options));
-        this.lists = lists ? new ListPredictor(motion, skin * 2 * src.maxRadius(), 2 * src.maxRadius()) : null;
+        double largestDiameter = 2 * src.maxRadius();
+        this.lists = lists ? new ListPredictor(motion, skin * largestDiameter, largestDiameter) : null;
         this.flight = table.flight;
         this.audit = Tunables.AUDIT_ENERGY.of(options) ? EnergyAudit.forScene(scene) : null;
         this.virial = VirialAccumulator.forRun(until);

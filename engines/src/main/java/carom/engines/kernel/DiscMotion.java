@@ -452,10 +452,18 @@ public final class DiscMotion {
                 }
             }
         }
-        unlink(i, old);
+        relink(i, old, col, row);
+        return row << AXIS_BITS | col;
+    }
+
+    /**
+     * Moves disc i from the list of cell {@code oldCell} to that of cell (col, row), which becomes its
+     * logical cell (any scheduled kind cleared).
+     */
+    void relink(int i, int oldCell, int col, int row) {
+        unlink(i, oldCell);
         link(i, row * cols + col);
         ir[i * IS + CELL] = row << AXIS_BITS | col;
-        return row << AXIS_BITS | col;
     }
 
     /** Removes disc i from the list of cell {@code cell} (a cell holds a handful of discs). */

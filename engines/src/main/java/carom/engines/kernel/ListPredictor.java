@@ -1,9 +1,5 @@
 package carom.engines.kernel;
 
-import static carom.engines.kernel.DiscTable.AXIS_BITS;
-import static carom.engines.kernel.DiscTable.AXIS_MASK;
-import static carom.engines.kernel.DiscTable.CELL;
-import static carom.engines.kernel.DiscTable.CELL_MASK;
 import static carom.engines.kernel.DiscTable.CNEXT;
 import static carom.engines.kernel.DiscTable.EXPIRE;
 import static carom.engines.kernel.DiscTable.INF;
@@ -164,10 +160,6 @@ public final class ListPredictor {
         in.getInts(list);
     }
 
-    private double radius(int i) {
-        return stride > R ? rec[i * stride + R] : sharedRadius;
-    }
-
     /**
      * Disc i's expiry event at local {@code now}: advanced, its list made again around where it is
      * now (its cell too), and its next event predicted.
@@ -199,14 +191,10 @@ public final class ListPredictor {
         double y = rec[at + Y];
         centre[2 * i] = x;
         centre[2 * i + 1] = y;
-        int packed = ir[i * IS + CELL] & CELL_MASK;
         int col = table.colOf(x);
         int row = table.rowOf(y);
-        int moved = row << AXIS_BITS | col;
-        if (moved != packed) {
-            motion.unlink(i, ((packed >>> AXIS_BITS) & AXIS_MASK) * cols + (packed & AXIS_MASK));
-            motion.link(i, row * cols + col);
-            ir[i * IS + CELL] = moved;
+        if (col != table.colOfDisc(i) || row != table.rowOfDisc(i)) {
+            motion.relink(i, table.rowOfDisc(i) * cols + table.colOfDisc(i), col, row);
         }
         addNeighbours(i, false);
         return predictFull(i, now);
@@ -218,27 +206,20 @@ public final class ListPredictor {
      * first lists, made pair by pair).
      */
     private void addNeighbours(int i, boolean onlyLater) {
-        int packed = ir[i * IS + CELL];
-        int col = packed & AXIS_MASK;
-        int row = (packed >>> AXIS_BITS) & AXIS_MASK;
+        int col = table.colOfDisc(i);
+        int row = table.rowOfDisc(i);
         double cx = centre[2 * i];
         double cy = centre[2 * i + 1];
-        double ri = radius(i);
+        double ri = table.radius(i);
         for (int dr = -1; dr <= 1; dr++) {
-            int r = row + dr;
-            if (r < 0 || r >= rows) {
-                if (!periodic || rows < 3) {
-                    continue;
-                }
-                r = r < 0 ? r + rows : r - rows;
+            int r = neighbour(row + dr, rows);
+            if (r < 0) {
+                continue;
             }
             for (int dc = -1; dc <= 1; dc++) {
-                int c = col + dc;
-                if (c < 0 || c >= cols) {
-                    if (!periodic || cols < 3) {
-                        continue;
-                    }
-                    c = c < 0 ? c + cols : c - cols;
+                int c = neighbour(col + dc, cols);
+                if (c < 0) {
+                    continue;
                 }
                 for (int j = cellHead[r * cols + c]; j != NIL; j = ir[j * IS + CNEXT]) {
                     if (j == i || (onlyLater && j < i)) {
@@ -247,7 +228,7 @@ public final class ListPredictor {
                     double dx = boundary.separationX(centre[2 * j] - cx);
                     double dy = boundary.separationY(centre[2 * j + 1] - cy);
                     // A hair more than the skin: rounding may put a disc a hair beyond its reach.
-                    double within = ri + radius(j) + skin * (1 + 1e-9);
+                    double within = ri + table.radius(j) + skin * (1 + 1e-9);
                     if (dx * dx + dy * dy < within * within) {
                         add(i, j);
                         add(j, i);
@@ -255,6 +236,17 @@ public final class ListPredictor {
                 }
             }
         }
+    }
+
+    /**
+     * Cell index k (one beyond either end at most) along an axis of {@code count} cells: wrapped on a
+     * periodic axis (which has at least 4 cells here, so no cell comes twice), -1 outside a walled one.
+     */
+    private int neighbour(int k, int count) {
+        if (k >= 0 && k < count) {
+            return k;
+        }
+        return periodic ? (k < 0 ? k + count : k - count) : -1;
     }
 
     private void add(int i, int j) {
@@ -301,7 +293,7 @@ public final class ListPredictor {
         double vyi = r[at + VY];
         double xi = r[at + X] + vxi * (now - r[at + T]);
         double yi = r[at + Y] + vyi * (now - r[at + T]);
-        double ri = radius(i);
+        double ri = table.radius(i);
         double best = INF;
         int bestP = NONE;
         if (walls != null) {
