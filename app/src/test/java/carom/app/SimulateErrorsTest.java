@@ -9,6 +9,8 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
@@ -165,6 +167,15 @@ class SimulateErrorsTest {
         assertRejected(simulate(scene, "--engine", "slabs", "--threads", "2", "--option", "spins=-5"),
                 "error: --option spins: must be in [0, 1073741824], got -5",
                 "head-on.json");
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @ValueSource(strings = {"{ \"gravity\": [0, -1] }", "{ \"growth\": 0.01 }"})
+    void neighbourListsAskedForWhereTheyCannotServeAreBadInput(String effects) {
+        Path scene = Scenes.write(dir, "head-on.json", Scenes.headOn(effects));
+        Cli r = simulate(scene, "--option", "skin=0.5");
+        assertRejected(r, "error: ", "head-on.json");
+        assertThat(r.firstErrorLine()).contains("--option skin");
     }
 
     @Test
