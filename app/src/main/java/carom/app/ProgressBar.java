@@ -131,7 +131,22 @@ public final class ProgressBar implements ProgressListener, AutoCloseable {
         }
     }
 
-    private void draw(String bar) {
+    /**
+     * Prints {@code note: LINE} on a line of its own, whether or not the bar shows (the bar, if it
+     * does, is drawn again below it at its next tick).
+     */
+    @Override
+    public synchronized void notice(String line) {
+        StringBuilder sb = new StringBuilder();
+        if (drawn > 0) {
+            sb.append('\r').append(" ".repeat(drawn)).append('\r');
+            drawn = 0;
+        }
+        err.print(sb.append("note: ").append(line).append(System.lineSeparator()));
+        err.flush();
+    }
+
+    private synchronized void draw(String bar) {
         StringBuilder sb = new StringBuilder("\r").append(bar);
         for (int i = bar.length(); i < drawn; i++) {
             sb.append(' ');
@@ -204,9 +219,11 @@ public final class ProgressBar implements ProgressListener, AutoCloseable {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
-        if (drawn > 0) {
-            err.print("\r" + " ".repeat(drawn) + "\r");
-            err.flush();
+        synchronized (this) {
+            if (drawn > 0) {
+                err.print("\r" + " ".repeat(drawn) + "\r");
+                err.flush();
+            }
         }
     }
 

@@ -53,6 +53,18 @@ class ProgressBarTest {
     }
 
     @Test
+    void aNoticeIsALineOfItsOwnEvenWithoutTheBar() {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        PrintStream err = new PrintStream(bytes, true);
+        try (ProgressBar bar = ProgressBar.forRun(err, 10)) {
+            bar.simulatedTime(5);
+            bar.notice("cluster: worker 1 (pid 42) exited with status 137 in the middle of the run");
+        }
+        assertThat(bytes.toString()).isEqualTo("note: cluster: worker 1 (pid 42) exited with status 137 in the middle"
+                + " of the run" + System.lineSeparator());
+    }
+
+    @Test
     void collisionsPerSecondAreCountedFromTheFirstReport() {
         assertThat(ProgressBar.collisionRate(300_000, 2_000_000_000L)).isEqualTo("  1.5e+05 coll/s");
         assertThat(ProgressBar.collisionRate(0, 2_000_000_000L)).isEmpty();

@@ -1,6 +1,6 @@
 package carom.core.engine;
 
-/** Told now and then how far a run has got in simulated time; must be cheap. */
+/** Told now and then how far a run has got in simulated time (must be cheap), and of what befell it. */
 @FunctionalInterface
 public interface ProgressListener {
     ProgressListener NONE = simulatedTime -> {
@@ -14,5 +14,13 @@ public interface ProgressListener {
      */
     default void progress(double time, long collisions) {
         simulatedTime(time);
+    }
+
+    /**
+     * One line for the person running it about something that befell the run and that it got over,
+     * so that the result alone would not tell (a cluster worker lost, and the run gone on without it);
+     * the default drops it.
+     */
+    default void notice(String line) {
     }
 }

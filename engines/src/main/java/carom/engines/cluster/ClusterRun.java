@@ -186,15 +186,15 @@ final class ClusterRun {
             for (int d = 0; d < nodes.size(); d++) {
                 sendScene(d, initial);
             }
-            boolean lost = false;
+            String lost = null;
             boolean begun = false;
             double now = 0;
             List<Reply> finals;
             while (true) {
                 try {
-                    if (lost) {
-                        recover();
-                        lost = false;
+                    if (lost != null) {
+                        recover(lost);
+                        lost = null;
                         now = 0;
                     } else if (!begun) {
                         begun = true;
@@ -225,7 +225,7 @@ final class ClusterRun {
                     finals = finish();
                     break;
                 } catch (WorkerLost e) {
-                    lost = true;
+                    lost = e.getMessage();
                 }
             }
             Discs out = scene.newDiscs();
@@ -310,12 +310,18 @@ final class ClusterRun {
     /**
      * Carries on from the last checkpoint on the nodes that remain: the slabs cut anew for them, every
      * disc's state written into each node's table and the mirror, every disc predicted anew. Exact:
-     * the checkpoint is a state between windows, every event before it processed and none after.
+     * the checkpoint is a state between windows, every event before it processed and none after. The
+     * user is told, with {@code why} (which node, and how it was lost).
      */
-    private void recover() {
+    private void recover(String why) {
         recoveries++;
         nodes = life.dropLostNodes();
         Checkpoint cp = checkpoint;
+        String from = cp.states().isEmpty() ? "the start"
+                : "the checkpoint at t = " + String.format(java.util.Locale.ROOT, "%.6g", cp.epoch());
+        int jvms = nodes.size() / slabsPerJvm;
+        options.progress().notice("cluster: " + why + "; going on from " + from + " on the " + jvms
+                + (jvms == 1 ? " JVM" : " JVMs") + " left");
         mirror = new SlabMirror(scene, KernelTunables.cellFactor(options, scene), nodes.size(),
                 ClusterEngine.DOMAIN_ROWS.intOf(options), until);
         mirror.startAt(cp.epoch());

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.within;
 
+import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Effects;
@@ -209,10 +210,10 @@ class ClusterEngineTest {
         // checkpoint). The run hands out samples and saves checkpoint files all along.
         Scene scene = RandomScenes.dense(900, 0.5, true, 5, 0.5);
         double every = scene.until() / 8;
-        CountDownLatch running = new CountDownLatch(1);
+        Going running = new Going();
         List<double[]> samples = new ArrayList<>();
         Kept kept = new Kept(scene.until() / 4, Long.MAX_VALUE);
-        RunOptions o = new RunOptions(scene.until(), slabsPerJvm, t -> running.countDown(),
+        RunOptions o = new RunOptions(scene.until(), slabsPerJvm, running,
                 Map.of("nodes", "3", "checkpointWindows", checkpointWindows))
                 .withSamples(every, ClusterCheckpointTest.collect(samples)).withCheckpoints(kept);
         CompletableFuture<RunResult> run = CompletableFuture.supplyAsync(() -> new ClusterEngine().run(scene, o));
@@ -223,6 +224,10 @@ class ClusterEngineTest {
             worker.destroyForcibly();
             RunResult r = run.get(300, TimeUnit.SECONDS);
             assertThat(r.counters().get("recoveries")).as("recoveries").isEqualTo(1);
+            assertThat(running.notices).as("what the user is told").singleElement().asString()
+                    .matches("cluster: worker \\d \\(pid " + worker.pid() + "\\) exited with status \\d+ in the middle of"
+                            + " the run; going on from " + ("40".equals(checkpointWindows) ? "the checkpoint at t = \\S+" : "the start")
+                            + " on the 2 JVMs left");
             assertThat(r.counters().get("domains")).as("slabs after the recovery").isEqualTo(2L * slabsPerJvm);
             Invariants.noOverlapsAndInside(scene, r.finalState());
             Invariants.assertSameRun(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())), SAME);
@@ -272,9 +277,25 @@ class ClusterEngineTest {
      * Waits until the run reports progress; a run that ends first (it failed to start) fails the test at
      * once with the run's own error, not after the whole wait with none.
      */
-    private static void awaitGoing(CountDownLatch running, CompletableFuture<RunResult> run) throws InterruptedException {
+    /** A run's progress listener: counts down once the run reports progress, and keeps its notices. */
+    private static final class Going implements ProgressListener {
+        final CountDownLatch started = new CountDownLatch(1);
+        final List<String> notices = new java.util.concurrent.CopyOnWriteArrayList<>();
+
+        @Override
+        public void simulatedTime(double time) {
+            started.countDown();
+        }
+
+        @Override
+        public void notice(String line) {
+            notices.add(line);
+        }
+    }
+
+    private static void awaitGoing(Going running, CompletableFuture<RunResult> run) throws InterruptedException {
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(300);
-        while (!running.await(200, TimeUnit.MILLISECONDS)) {
+        while (!running.started.await(200, TimeUnit.MILLISECONDS)) {
             if (run.isDone()) {
                 Throwable why = run.handle((r, e) -> e).join();
                 throw new AssertionError("the run ended before it got going: " + why, why);
@@ -320,8 +341,8 @@ class ClusterEngineTest {
                 .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
         try {
             Scene scene = RandomScenes.dense(900, 0.5, true, 5, 0.5);
-            CountDownLatch running = new CountDownLatch(1);
-            RunOptions o = new RunOptions(scene.until(), 1, t -> running.countDown(),
+            Going running = new Going();
+            RunOptions o = new RunOptions(scene.until(), 1, running,
                     // 2 s unreachable rather than 20 (past the failure detector's 10 s pause): the test's wait.
                     Map.of("nodes", "3", "checkpointWindows", "40", "lostSeconds", "2"));
             CompletableFuture<RunResult> run = CompletableFuture.supplyAsync(
@@ -330,6 +351,10 @@ class ClusterEngineTest {
             second.destroyForcibly();
             RunResult r = run.get(300, TimeUnit.SECONDS);
             assertThat(r.counters().get("recoveries")).as("recoveries").isEqualTo(1);
+            // Lost after lostSeconds (2 here): the notice names the setting's value, not the default 20 s.
+            assertThat(running.notices).as("what the user is told").singleElement().asString()
+                    .matches("cluster: node at carom@127\\.0\\.0\\.1:\\d+ unreachable for 2\\.0 s in the middle of the run;"
+                            + " going on from (the start|the checkpoint at t = \\S+) on the 2 JVMs left");
             assertThat(r.counters().get("domains")).as("domains after the recovery").isEqualTo(2);
             Invariants.noOverlapsAndInside(scene, r.finalState());
             Invariants.assertSameRun(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())), SAME);
