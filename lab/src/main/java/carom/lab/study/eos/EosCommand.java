@@ -157,15 +157,22 @@ public final class EosCommand implements Callable<Integer> {
         return 0;
     }
 
-    /** One start's points, in ascending packing fraction, onto {@code points}; a line on {@code log} for each. */
+    /**
+     * One start's points, in ascending packing fraction, onto {@code points}; a line on {@code log} for each,
+     * and, without a bar, what the branch is doing every few minutes ({@link StatusLines}).
+     */
     private static void runBranch(EosRunner runner, EosSettings settings, String from, List<EosPoint> points, int total,
                                   ProgressBar bar, PrintWriter log) {
         List<Double> phis = settings.phis();
+        StatusLines lines = bar.visible() ? null : new StatusLines(log, StatusLines.EVERY_MILLIS, System::currentTimeMillis);
         for (int i = 0; i < phis.size(); i++) {
             double phi = phis.get(i);
             EosPoint p = runner.measure(phi, from, settings.deadline(), phis.size() - i, status -> {
                 synchronized (points) {
                     bar.completed(points.size(), status);
+                }
+                if (lines != null) {
+                    lines.offer(status);
                 }
             });
             synchronized (points) {
