@@ -137,13 +137,18 @@ public final class ProgressBar implements ProgressListener, AutoCloseable {
      */
     @Override
     public synchronized void notice(String line) {
-        StringBuilder sb = new StringBuilder();
+        erase();
+        err.print("note: " + line + System.lineSeparator());
+        err.flush();
+    }
+
+    /** Blanks the bar drawn last, if any, and returns to the start of its line. */
+    private synchronized void erase() {
         if (drawn > 0) {
-            sb.append('\r').append(" ".repeat(drawn)).append('\r');
+            err.print("\r" + " ".repeat(drawn) + "\r");
+            err.flush();
             drawn = 0;
         }
-        err.print(sb.append("note: ").append(line).append(System.lineSeparator()));
-        err.flush();
     }
 
     private synchronized void draw(String bar) {
@@ -219,12 +224,7 @@ public final class ProgressBar implements ProgressListener, AutoCloseable {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
-        synchronized (this) {
-            if (drawn > 0) {
-                err.print("\r" + " ".repeat(drawn) + "\r");
-                err.flush();
-            }
-        }
+        erase();
     }
 
     /** Whether stderr goes to a person. */

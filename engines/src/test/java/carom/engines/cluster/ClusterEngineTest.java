@@ -273,10 +273,6 @@ class ClusterEngineTest {
         }
     }
 
-    /**
-     * Waits until the run reports progress; a run that ends first (it failed to start) fails the test at
-     * once with the run's own error, not after the whole wait with none.
-     */
     /** A run's progress listener: counts down once the run reports progress, and keeps its notices. */
     private static final class Going implements ProgressListener {
         final CountDownLatch started = new CountDownLatch(1);
@@ -293,6 +289,10 @@ class ClusterEngineTest {
         }
     }
 
+    /**
+     * Waits until the run reports progress; a run that ends first (it failed to start) fails the test at
+     * once with the run's own error, not after the whole wait with none.
+     */
     private static void awaitGoing(Going running, CompletableFuture<RunResult> run) throws InterruptedException {
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(300);
         while (!running.started.await(200, TimeUnit.MILLISECONDS)) {
