@@ -95,6 +95,14 @@ final class ClusterLife implements AutoCloseable {
                     failure-detector.acceptable-heartbeat-pause = 10s
                     jmx.enabled = off
                     log-info = off
+                    # A run's coordinator joins and leaves the cluster of running workers ('carom node',
+                    # --seed-nodes) once a run, and waits for their registrations first: gossip at Akka's
+                    # pace for clusters of hundreds of long-lived nodes (rounds of 1 and 2 s) costs each
+                    # run seconds there; a run's few nodes gossip five times as often for a pittance.
+                    periodic-tasks-initial-delay = 200ms
+                    gossip-interval = 200ms
+                    leader-actions-interval = 200ms
+                    typed.receptionist.distributed-data.gossip-interval = 400ms
                   }
                 }
                 """.formatted(MAX_SLABS_PER_NODE, MAX_SLABS_PER_NODE, host, port, s)).withFallback(ConfigFactory.defaultReference()).resolve();

@@ -18,6 +18,7 @@ import carom.engines.slabs.SlabsEngine;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Nested;
@@ -28,9 +29,11 @@ import org.junit.jupiter.api.Test;
  * Samples and checkpoints of the cluster engine on 2 nodes (real worker JVMs), on one dense periodic
  * scene that rolls windows back: the samples are those of {@code slabs} to rounding, and a run with
  * checkpoints, a run resumed from one in its middle, and a run resumed after a stop all end in the bits
- * (and hand out the samples) of the run that never stopped. Few runs, as each starts a JVM; the whole
+ * (and hand out the samples) of the run that never stopped. The run that never stopped and the stopped
+ * one start their own worker ({@code --nodes 2}); the others go over a running one ({@link RunningWorkers}),
+ * as checkpoints name how many JVMs resume them, not which. Few runs, as each costs seconds; the whole
  * checkpoint contract of the exact engines runs behind {@code -Pphysics} ({@link Contract}). No worker
- * may be left after any test.
+ * but the running one may be left after any test.
  */
 class ClusterCheckpointTest {
     private static final Scene SCENE = RandomScenes.dense(400, 0.6, true, 3, 0.5);
@@ -39,10 +42,22 @@ class ClusterCheckpointTest {
     private static RunResult straight;
     private static final List<double[]> STRAIGHT_SAMPLES = new ArrayList<>();
 
+    private static RunningWorkers running;
+
     @BeforeAll
     static void runStraight() {
         straight = new ClusterEngine().run(SCENE, twoNodes(SCENE.until()).withSamples(EVERY, collect(STRAIGHT_SAMPLES)));
         assertThat(ProcessHandle.current().descendants().filter(ProcessHandle::isAlive)).as("workers left").isEmpty();
+        running = RunningWorkers.start(1);
+    }
+
+    @AfterAll
+    static void stopRunningWorker() {
+        try {
+            running.assertAllServing();
+        } finally {
+            running.close();
+        }
     }
 
     private static RunOptions twoNodes(double until) {
@@ -51,8 +66,7 @@ class ClusterCheckpointTest {
 
     @AfterEach
     void noWorkerLeftBehind() {
-        assertThat(ProcessHandle.current().descendants().filter(ProcessHandle::isAlive).toList())
-                .as("processes left behind").isEmpty();
+        assertThat(running.othersAlive()).as("processes left behind").isEmpty();
     }
 
     /** A sampler that copies every sample into {@code into}: time, virial sum, then x, y, vx, vy of each disc. */
@@ -93,14 +107,14 @@ class ClusterCheckpointTest {
 
         Kept kept = new Kept(until / 3, Long.MAX_VALUE);
         List<double[]> checkpointedSamples = new ArrayList<>();
-        RunResult checkpointed = new ClusterEngine().run(SCENE, twoNodes(until)
+        RunResult checkpointed = running.engine().run(SCENE, twoNodes(until)
                 .withSamples(every, collect(checkpointedSamples)).withCheckpoints(kept));
         assertSameBits("with checkpoints", checkpointed, straight);
         assertSameSamples("with checkpoints", checkpointedSamples, straightSamples);
         assertThat(kept.saved).as("two periodic checkpoints and the end's").hasSizeGreaterThanOrEqualTo(3);
 
         List<double[]> resumedSamples = new ArrayList<>();
-        RunResult resumed = new ClusterEngine().resume(SCENE, twoNodes(until).withSamples(every, collect(resumedSamples)),
+        RunResult resumed = running.engine().resume(SCENE, twoNodes(until).withSamples(every, collect(resumedSamples)),
                 kept.saved.get(0).state());
         assertSameBits("resumed from t = " + kept.saved.get(0).time(), resumed, straight);
         assertThat(resumedSamples).as("samples after the checkpoint").isNotEmpty();
@@ -136,10 +150,10 @@ class ClusterCheckpointTest {
         assertThatThrownBy(() -> new ClusterEngine().run(scene, twoNodes(scene.until())
                 .withSamples(EVERY, collect(new ArrayList<>())).withCheckpoints(kept))).isInstanceOf(RunStopped.class);
         assertThat(kept.saved).hasSize(1);
-        assertThat(ProcessHandle.current().descendants().filter(ProcessHandle::isAlive)).as("workers after a stop").isEmpty();
+        assertThat(running.othersAlive()).as("workers after a stop").isEmpty();
         byte[] state = kept.saved.getFirst().state();
         List<double[]> resumedSamples = new ArrayList<>();
-        assertSameBits("resumed after a stop", new ClusterEngine().resume(scene, twoNodes(scene.until())
+        assertSameBits("resumed after a stop", running.engine().resume(scene, twoNodes(scene.until())
                 .withSamples(EVERY, collect(resumedSamples)), state), straight);
         assertSameSamples("resumed after a stop", resumedSamples,
                 STRAIGHT_SAMPLES.subList(STRAIGHT_SAMPLES.size() - resumedSamples.size(), STRAIGHT_SAMPLES.size()));
