@@ -21,21 +21,28 @@ import java.util.stream.Stream;
  * training never ran gets no profile, and an engine whose loop was left out would then warm up later
  * than the others (lab note {@code slabs-short-runs} measures it). So it runs {@code simulate} on the
  * given scene with the default engine and with {@code slabs} on two threads, writing the usual outputs
- * into a scratch folder it deletes.
+ * into a scratch folder it deletes. The cluster engine's commands have a cache of their own
+ * ({@link #trainCluster}): Akka's classes would slow every other command's start.
  *
  * <p>Usage (from the script only): {@code java -XX:AOTCacheOutput=FILE -cp carom.jar
- * carom.app.StartupTraining SCENE.json}. It prints nothing and never fails the caller: a failed
+ * carom.app.StartupTraining [--cluster] SCENE.json}. It prints nothing and never fails the caller: a failed
  * training only means no cache.
  */
 public final class StartupTraining {
     /** Simulated time of each training run: a few hundred thousand events on thesis-100k. */
     private static final String UNTIL = "0.5";
+    /** Simulated time of the cluster engine's training run: its start matters, not its loop. */
+    private static final String CLUSTER_UNTIL = "0.01";
+    /** The first argument that asks for the cluster engine's training ({@link #trainCluster}). */
+    static final String CLUSTER = "--cluster";
 
     private StartupTraining() {
     }
 
     public static void main(String[] args) throws IOException {
-        System.exit(args.length == 1 && train(Path.of(args[0])) ? 0 : 1);
+        boolean ok = args.length == 1 ? train(Path.of(args[0]))
+                : args.length == 2 && args[0].equals(CLUSTER) && trainCluster(Path.of(args[1]));
+        System.exit(ok ? 0 : 1);
     }
 
     /** Runs the training simulations of {@code scene}; true if every one succeeded. */
@@ -54,11 +61,33 @@ public final class StartupTraining {
                 }
                 ok &= Main.run(quiet, quiet, args.toArray(String[]::new)) == 0;
             }
+
         } finally {
-            try (Stream<Path> files = Files.walk(scratch)) {
-                files.sorted(Comparator.reverseOrder()).forEach(p -> p.toFile().delete());
-            }
+            delete(scratch);
         }
         return ok;
+    }
+
+    /**
+     * The training of the cluster engine's cache: a short run of {@code scene} on two JVMs, so that
+     * Akka's actor system, cluster, remoting and message serialization start as in every cluster run;
+     * the workers of a {@code --nodes} run share the cache (the same class path), and so does
+     * {@code carom node}. True if it succeeded.
+     */
+    static boolean trainCluster(Path scene) throws IOException {
+        Path scratch = Files.createTempDirectory("carom-training");
+        PrintStream quiet = new PrintStream(OutputStream.nullOutputStream());
+        try {
+            return Main.run(quiet, quiet, "simulate", scene.toString(), "--engine", "cluster", "--nodes", "2",
+                    "--until", CLUSTER_UNTIL, "--out", scratch.resolve("cluster.csv").toString()) == 0;
+        } finally {
+            delete(scratch);
+        }
+    }
+
+    private static void delete(Path scratch) throws IOException {
+        try (Stream<Path> files = Files.walk(scratch)) {
+            files.sorted(Comparator.reverseOrder()).forEach(p -> p.toFile().delete());
+        }
     }
 }

@@ -24,9 +24,18 @@ class StartupTrainingTest {
     }
 
     @Test
+    void theClusterEnginesTrainingRunsOnTwoJvmsAndLeavesNoWorkerNorScratchFolder() throws IOException {
+        long before = trainingFolders();
+        assertThat(StartupTraining.trainCluster(Path.of("..", "examples", "head-on.json"))).isTrue();
+        assertThat(trainingFolders()).isEqualTo(before);
+        assertThat(ProcessHandle.current().descendants().filter(ProcessHandle::isAlive).toList()).as("workers left").isEmpty();
+    }
+
+    @Test
     void aSceneThatCannotBeReadIsAFailedTraining(@org.junit.jupiter.api.io.TempDir Path dir) throws IOException {
         long before = trainingFolders();
         assertThat(StartupTraining.train(dir.resolve("missing.json"))).isFalse();
+        assertThat(StartupTraining.trainCluster(dir.resolve("missing.json"))).isFalse();
         assertThat(trainingFolders()).isEqualTo(before);
     }
 }

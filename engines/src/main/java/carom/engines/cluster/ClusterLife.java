@@ -136,9 +136,12 @@ final class ClusterLife implements AutoCloseable {
                 Path log = Files.createTempFile("carom-node-", ".log");
                 List<String> cmd = new ArrayList<>(List.of(javaBin));
                 for (String arg : java.lang.management.ManagementFactory.getRuntimeMXBean().getInputArguments()) {
-                    // The heap limit and the JDK's access flags of this JVM (as ./carom sets them), nothing else.
+                    // The heap limit, the JDK's access flags and the start-up cache of this JVM (as ./carom
+                    // sets them: the cache was trained on a cluster run too, and serves the same class path),
+                    // nothing else.
                     if (arg.startsWith("-Xmx") || arg.startsWith("--enable-native-access")
-                            || arg.startsWith("--sun-misc-unsafe-memory-access")) {
+                            || arg.startsWith("--sun-misc-unsafe-memory-access") || arg.startsWith("-XX:AOTCache=")
+                            || arg.equals("-Xlog:aot=off") || arg.equals("-Xlog:cds=off")) {
                         cmd.add(arg);
                     }
                 }
