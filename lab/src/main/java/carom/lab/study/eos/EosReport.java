@@ -150,7 +150,9 @@ final class EosReport {
         md.append("Δ lit: the value minus the literature's, in the value's standard error.\n\n");
         md.append("### Each run\n\n").append(runsTable().markdown()).append('\n');
         md.append("Literature (βPσ²): the fluid from Kolafa and Rottner (2006) and, at 0.68, Bernard and Krauth (2011), converted ")
-                .append("from Z; HistoricDisks (Engel et al. 2013; Li et al. 2022) at N = 870 (0.67, 0.68) and N = 1024² (0.698-0.72). ")
+                .append("from Z; HistoricDisks (Engel et al. 2013; Li et al. 2022) at N = 870 (0.67, 0.68), N = 128² (0.698-0.716, Li ")
+                .append("et al. in the 1 : √3/2 box these runs use at that N) and N = 1024² (0.698-0.72); where two sizes have a point, ")
+                .append("the table gives the one nearer this study's N. ")
                 .append("Finite size: the loop of the pressure through the liquid-hexatic coexistence comes from the interface ")
                 .append("between the phases, whose cost relative to the bulk falls with N, so the loop is deeper at our N than at ")
                 .append("1024² and the values in the coexistence range (0.70-0.72) differ from the 1024² ones by more than our error ")
@@ -233,7 +235,7 @@ final class EosReport {
             } else {
                 row.add(value == null ? "" : accepted(phi) ? "yes" : "**no** (still drifting)");
             }
-            EosLiterature.Point lit = EosLiterature.at(phi);
+            EosLiterature.Point lit = EosLiterature.at(phi, settings.discs());
             row.add(lit == null ? "" : Table.plain(lit.betaPSigma2()) + " (" + lit.source() + ")");
             row.add(lit == null || value == null || !(value[1] > 0) ? ""
                     : String.format(Locale.ROOT, "%+.1f", (value[0] - lit.betaPSigma2()) / value[1]));
@@ -269,7 +271,7 @@ final class EosReport {
                 "branch_difference_sigmas", "equilibration_collisions_per_disc", "measurement_collisions_per_disc", "blocks",
                 "block_time", "pair_collisions", "engine_seconds", "load_average_at_end", "literature_betaP_sigma2", "literature_source");
         for (double phi : settings.phis()) {
-            EosLiterature.Point lit = EosLiterature.at(phi);
+            EosLiterature.Point lit = EosLiterature.at(phi, settings.discs());
             BranchAgreement a = agreement(phi);
             for (String start : settings.starts()) {
                 EosPoint p = point(phi, start);
