@@ -18,12 +18,11 @@ import carom.engines.slabs.SlabsEngine;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 
 /**
  * Samples and checkpoints of the cluster engine on 2 nodes (real worker JVMs), on one dense periodic
@@ -42,31 +41,17 @@ class ClusterCheckpointTest {
     private static RunResult straight;
     private static final List<double[]> STRAIGHT_SAMPLES = new ArrayList<>();
 
-    private static RunningWorkers running;
+    @RegisterExtension
+    static final RunningWorkers running = RunningWorkers.forEachClass(1);
 
     @BeforeAll
     static void runStraight() {
         straight = new ClusterEngine().run(SCENE, twoNodes(SCENE.until()).withSamples(EVERY, collect(STRAIGHT_SAMPLES)));
-        assertThat(ProcessHandle.current().descendants().filter(ProcessHandle::isAlive)).as("workers left").isEmpty();
-        running = RunningWorkers.start(1);
-    }
-
-    @AfterAll
-    static void stopRunningWorker() {
-        try {
-            running.assertAllServing();
-        } finally {
-            running.close();
-        }
+        assertThat(running.othersAlive()).as("workers left").isEmpty();
     }
 
     private static RunOptions twoNodes(double until) {
         return RunOptions.until(until).withTunable("nodes", "2");
-    }
-
-    @AfterEach
-    void noWorkerLeftBehind() {
-        assertThat(running.othersAlive()).as("processes left behind").isEmpty();
     }
 
     /** A sampler that copies every sample into {@code into}: time, virial sum, then x, y, vx, vy of each disc. */

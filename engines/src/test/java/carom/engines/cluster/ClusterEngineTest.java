@@ -23,10 +23,8 @@ import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
@@ -42,21 +40,8 @@ import org.junit.jupiter.params.provider.CsvSource;
  */
 class ClusterEngineTest {
     private static final double SAME = 1e-8;
-    private static RunningWorkers workers;
-
-    @BeforeAll
-    static void startWorkers() {
-        workers = RunningWorkers.start(2);
-    }
-
-    @AfterAll
-    static void stopWorkers() {
-        try {
-            workers.assertAllServing();
-        } finally {
-            workers.close();
-        }
-    }
+    @RegisterExtension
+    static final RunningWorkers workers = RunningWorkers.forEachClass(2);
 
     /** A run of {@code nodes} JVMs over the class's running workers, checked for overlaps and escapes. */
     private static RunResult cluster(Scene scene, int nodes) {
@@ -67,11 +52,6 @@ class ClusterEngineTest {
         RunResult r = workers.engine().run(scene, options);
         Invariants.noOverlapsAndInside(scene, r.finalState());
         return r;
-    }
-
-    @AfterEach
-    void noWorkerLeftBehind() {
-        assertThat(workers.othersAlive()).as("processes left behind").isEmpty();
     }
 
     @Test

@@ -1,12 +1,8 @@
 package carom.engines.cluster;
 
-import static org.assertj.core.api.Assertions.assertThat;
-
 import carom.core.engine.Engine;
 import carom.engines.reference.ExactEngineRestingContactContract;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.extension.RegisterExtension;
 
 /**
  * Resting contact under gravity (sleep and wake) on the cluster engine, 2 JVMs (this one and a running
@@ -15,29 +11,11 @@ import org.junit.jupiter.api.BeforeAll;
  * coordinator, and in windows of either node.
  */
 class ClusterRestingContactTest extends ExactEngineRestingContactContract {
-    private static RunningWorkers workers;
-
-    @BeforeAll
-    static void startWorker() {
-        workers = RunningWorkers.start(1);
-    }
-
-    @AfterAll
-    static void stopWorker() {
-        try {
-            workers.assertAllServing();
-        } finally {
-            workers.close();
-        }
-    }
+    @RegisterExtension
+    static final RunningWorkers workers = RunningWorkers.forEachClass(1);
 
     @Override
     protected Engine engine() {
         return workers.engine();
-    }
-
-    @AfterEach
-    void noWorkerLeftBehind() {
-        assertThat(workers.othersAlive()).as("processes left behind").isEmpty();
     }
 }

@@ -7,34 +7,70 @@ import java.io.UncheckedIOException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.extension.AfterAllCallback;
+import org.junit.jupiter.api.extension.AfterEachCallback;
+import org.junit.jupiter.api.extension.BeforeAllCallback;
+import org.junit.jupiter.api.extension.ExtensionContext;
 
 /**
  * Worker JVMs on 127.0.0.1 as {@code ./carom node} runs them: the first seeds the cluster, the others join
- * it, and they serve runs one after another until closed. A test class starts them once and runs its
- * scenes over them ({@link #engine}), as a user with {@code --seed-nodes} does: a worker JVM costs seconds
- * to start on two cores, a run over running workers does not.
+ * it, and they serve runs one after another. A test class registers them as an extension
+ * ({@code @RegisterExtension static final RunningWorkers workers = RunningWorkers.forEachClass(2)}): they
+ * start before its first test and stop after its last, must still serve then, and after every test no
+ * other process this JVM started may be left. Its scenes run over them ({@link #engine}), as a user with
+ * {@code --seed-nodes} does: a worker JVM costs seconds to start on two cores, a run over running workers
+ * does not.
  */
-final class RunningWorkers implements AutoCloseable {
+final class RunningWorkers implements BeforeAllCallback, AfterAllCallback, AfterEachCallback {
+    private final int count;
     private final List<Process> workers = new ArrayList<>();
     private final List<String> addresses = new ArrayList<>();
+    /** Containers entered: a {@code @Nested} class calls back too, and shares the outer class's workers. */
+    private int depth;
 
-    private RunningWorkers() {
+    private RunningWorkers(int count) {
+        this.count = count;
     }
 
-    /** {@code count} workers, the first the seed of the others. */
-    static RunningWorkers start(int count) {
-        RunningWorkers w = new RunningWorkers();
+    /** {@code count} workers, the first the seed of the others, for the class that registers them. */
+    static RunningWorkers forEachClass(int count) {
+        return new RunningWorkers(count);
+    }
+
+    @Override
+    public void beforeAll(ExtensionContext context) {
+        if (depth++ > 0) {
+            return;
+        }
         try {
             for (int k = 0; k < count; k++) {
                 int port = ClusterLife.freePort();
-                String seed = w.addresses.isEmpty() ? "127.0.0.1:" + port : w.addresses.getFirst();
-                w.workers.add(worker(seed, port));
-                w.addresses.add("127.0.0.1:" + port);
+                String seed = addresses.isEmpty() ? "127.0.0.1:" + port : addresses.getFirst();
+                workers.add(worker(seed, port));
+                addresses.add("127.0.0.1:" + port);
             }
-            return w;
         } catch (RuntimeException | Error e) {
-            w.close();
+            close();
             throw e;
+        }
+    }
+
+    @Override
+    public void afterEach(ExtensionContext context) {
+        assertThat(othersAlive()).as("processes left behind").isEmpty();
+    }
+
+    @Override
+    public void afterAll(ExtensionContext context) {
+        if (--depth > 0) {
+            return;
+        }
+        try {
+            for (Process p : workers) {
+                assertThat(p.isAlive()).as("worker pid %d serves on", p.pid()).isTrue();
+            }
+        } finally {
+            close();
         }
     }
 
@@ -61,15 +97,7 @@ final class RunningWorkers implements AutoCloseable {
         return ProcessHandle.current().descendants().filter(ProcessHandle::isAlive).filter(p -> !ours.contains(p.pid())).toList();
     }
 
-    /** Every worker still serves (none died of a run it served). */
-    void assertAllServing() {
-        for (Process p : workers) {
-            assertThat(p.isAlive()).as("worker pid %d serves on", p.pid()).isTrue();
-        }
-    }
-
-    @Override
-    public void close() {
+    private void close() {
         for (Process p : workers) {
             p.destroyForcibly();
         }
@@ -80,5 +108,7 @@ final class RunningWorkers implements AutoCloseable {
                 Thread.currentThread().interrupt();
             }
         }
+        workers.clear();
+        addresses.clear();
     }
 }
