@@ -103,6 +103,10 @@ public final class EosCommand implements Callable<Integer> {
     @Option(names = "--quick", description = "A try of the command in under a minute: N = 256, three packing fractions, short runs.")
     boolean quick;
 
+    @Option(names = "--status-every", paramLabel = "MINUTES", defaultValue = "5",
+            description = "Without a progress bar (stderr not a terminal): how often each start says what it does (default ${DEFAULT-VALUE}).")
+    double statusEveryMinutes;
+
     private final PrintStream err;
 
     /** @param err the raw stderr, for the progress bar (which must know whether it is a terminal) */
@@ -113,6 +117,7 @@ public final class EosCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         EosSettings settings = settings();
+        long statusEveryMillis = Math.round(positive(statusEveryMinutes, "--status-every") * 60_000);
         Engine chosen = EngineCatalog.byName(settings.engine());
         OutputFolder.check(out, "--out");
         Machine machine = Machine.current();
@@ -128,7 +133,7 @@ public final class EosCommand implements Callable<Integer> {
             for (String from : settings.starts()) {
                 branches.add(Thread.ofPlatform().name("eos-" + from).start(() -> {
                     try {
-                        runBranch(runner, settings, from, points, total, bar, log);
+                        runBranch(runner, settings, from, points, total, bar, log, statusEveryMillis);
                     } catch (RuntimeException | Error e) {
                         synchronized (failures) {
                             failures.add(e);
@@ -159,12 +164,12 @@ public final class EosCommand implements Callable<Integer> {
 
     /**
      * One start's points, in ascending packing fraction, onto {@code points}; a line on {@code log} for each,
-     * and, without a bar, what the branch is doing every few minutes ({@link StatusLines}).
+     * and, without a bar, what the branch is doing every {@code statusEveryMillis} ({@link StatusLines}).
      */
     private static void runBranch(EosRunner runner, EosSettings settings, String from, List<EosPoint> points, int total,
-                                  ProgressBar bar, PrintWriter log) {
+                                  ProgressBar bar, PrintWriter log, long statusEveryMillis) {
         List<Double> phis = settings.phis();
-        StatusLines lines = bar.visible() ? null : new StatusLines(log, StatusLines.EVERY_MILLIS, System::currentTimeMillis);
+        StatusLines lines = bar.visible() ? null : new StatusLines(log, statusEveryMillis, System::currentTimeMillis);
         for (int i = 0; i < phis.size(); i++) {
             double phi = phis.get(i);
             EosPoint p = runner.measure(phi, from, settings.deadline(), phis.size() - i, status -> {

@@ -7,13 +7,11 @@ import java.util.function.LongSupplier;
  * What a study's branch is doing, as a line on a log now and then, for when no progress bar shows
  * (stderr redirected to a file, as for a run of hours): a point takes tens of minutes, and its line
  * when it ends would otherwise be the only sign that the study is alive. At most one line per
- * {@code everyMillis} per branch, the first once that long has passed; the clock is given
+ * {@code everyMillis} per branch ({@code --status-every}, 5 minutes by default: often enough to watch,
+ * rarely enough to read), the first once that long has passed; the clock is given
  * (milliseconds) so that the pacing can be tested without waiting.
  */
 final class StatusLines {
-    /** How often a branch says what it does: often enough to watch, rarely enough to read. */
-    static final long EVERY_MILLIS = 5 * 60_000;
-
     private final PrintWriter log;
     private final long everyMillis;
     private final LongSupplier clock;

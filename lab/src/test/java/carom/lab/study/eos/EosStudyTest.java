@@ -25,9 +25,13 @@ class EosStudyTest {
 
         Lab r = Lab.run("study", "eos", "--out", out.toString(), "--n", "144", "--phis", "0.3,0.7,0.71", "--engine", "fast",
                 "--block-collisions", "5", "--window", "2", "--min-equilibration", "10", "--max-equilibration", "40",
-                "--blocks", "16", "--snapshots", "0.7");
+                "--blocks", "16", "--snapshots", "0.7", "--status-every", "1e-9");
 
         assertThat(r.status()).as(r.err()).isZero();
+        // No bar here (stderr is not a terminal): each start says what it does, here at every chance.
+        for (String start : List.of("crystal", "fluid")) {
+            assertThat(r.err().lines()).as(r.err()).anyMatch(l -> l.matches("eos: phi 0\\.7 " + start + " (equilibrating|measuring).*"));
+        }
         assertThat(Files.list(out).map(p -> p.getFileName().toString()).toList()).containsExactlyInAnyOrder("report.md", "eos.csv",
                 "eos.png", "eos.svg", "eos-transition.png", "eos-transition.svg", "psi6.png", "psi6.svg",
                 "snapshot-phi0.700-crystal.png", "snapshot-phi0.700-fluid.png");
@@ -69,6 +73,7 @@ class EosStudyTest {
         "--engine;akka;--engine: akka is relaxed",
         "--blocks;1;--blocks: must be 2 to 1000000",
         "--block-collisions;NaN;--block-collisions: must be a number > 0",
+        "--status-every;0;--status-every: must be a number > 0",
         "--start;glass;--start: 'glass' is neither both, crystal nor fluid",
         "--deadline;soon;--deadline: 'soon' is neither an instant",
         "--deadline;2020-01-01T00:00:00Z;--deadline: '2020-01-01T00:00:00Z' has passed"})
