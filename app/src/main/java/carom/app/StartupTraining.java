@@ -61,7 +61,6 @@ public final class StartupTraining {
                 }
                 ok &= Main.run(quiet, quiet, args.toArray(String[]::new)) == 0;
             }
-
         } finally {
             delete(scratch);
         }

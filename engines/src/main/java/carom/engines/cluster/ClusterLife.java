@@ -137,8 +137,8 @@ final class ClusterLife implements AutoCloseable {
                 List<String> cmd = new ArrayList<>(List.of(javaBin));
                 for (String arg : java.lang.management.ManagementFactory.getRuntimeMXBean().getInputArguments()) {
                     // The heap limit, the JDK's access flags and the start-up cache of this JVM (as ./carom
-                    // sets them: the cache was trained on a cluster run too, and serves the same class path),
-                    // nothing else.
+                    // sets them; for a cluster command, the cache trained on a two-JVM run), nothing else: a
+                    // worker has the same class path, so the cache serves it too.
                     if (arg.startsWith("-Xmx") || arg.startsWith("--enable-native-access")
                             || arg.startsWith("--sun-misc-unsafe-memory-access") || arg.startsWith("-XX:AOTCache=")
                             || arg.equals("-Xlog:aot=off") || arg.equals("-Xlog:cds=off")) {
