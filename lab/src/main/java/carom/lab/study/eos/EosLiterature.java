@@ -4,15 +4,16 @@ import java.util.List;
 
 /**
  * Published equation-of-state points of equal hard discs, as βPσ² (σ the diameter) against packing
- * fraction, with their source and system size: what the study plots beside its own.
+ * fraction, with their source and system size: what the study plots beside its own (public for the lab
+ * notes' programs that plot several studies together).
  */
-final class EosLiterature {
+public final class EosLiterature {
     /** One published point. */
-    record Point(double phi, double betaPSigma2, String source) {
+    public record Point(double phi, double betaPSigma2, String source) {
     }
 
     /** A published series: one source and system size ({@code discs}; infinite for a thermodynamic-limit fit). */
-    record Series(String name, double discs, List<Point> points) {
+    public record Series(String name, double discs, List<Point> points) {
     }
 
     private EosLiterature() {
@@ -24,7 +25,7 @@ final class EosLiterature {
      * N = 128² runs of Li et al. in the box of our runs at that N (1 : √3/2, a triangular lattice's),
      * and its N = 1024² runs through the liquid-hexatic loop.
      */
-    static List<Series> all() {
+    public static List<Series> all() {
         return List.of(
                 new Series("fluid: Kolafa-Rottner 2006, Bernard-Krauth 2011", Double.POSITIVE_INFINITY, List.of(
                         fromZ(0.30, 2.0633, "KR2006"), fromZ(0.50, 4.1069, "KR2006"), fromZ(0.65, 8.4078, "KR2006"),
@@ -50,7 +51,7 @@ final class EosLiterature {
      * or null where none has one. Nearest in N^-1/2, the scale of the finite-size corrections through the
      * loop (the interface's cost), so that a thermodynamic-limit fit is the nearest to a large enough N.
      */
-    static Point at(double phi, int discs) {
+    public static Point at(double phi, int discs) {
         Point best = null;
         double bestDistance = Double.POSITIVE_INFINITY;
         for (Series s : all()) {
