@@ -1,4 +1,5 @@
 import carom.lab.report.Charts;
+import carom.lab.study.eos.BranchAgreement;
 import carom.lab.study.eos.EosLiterature;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -12,8 +13,8 @@ import java.util.TreeMap;
 /**
  * Several {@code carom study eos} runs of one N in one plot of βPσ² against φ through the transition, beside
  * the published points of the HistoricDisks data set from 0.69 up (N = 128² of Li et al. 2022 and 1024²):
- * each packing fraction's accepted value (both starts within two combined errors: their plain mean, the
- * error their combined one halved, as the study reports it), and each start's own value.
+ * each packing fraction's accepted value (both starts agreeing as the study's {@link BranchAgreement} judges:
+ * their plain mean, the error their combined one halved, as the study reports it), and each start's own value.
  *
  * <pre>java -cp lab/target/carom-lab.jar lab/notes/eos-transition/PlotBySize.java OUT_NAME RUN/eos.csv...</pre>
  *
@@ -51,7 +52,7 @@ public class PlotBySize {
         for (var entry : byPhi.entrySet()) {
             double[] c = entry.getValue().get("crystal");
             double[] l = entry.getValue().get("fluid");
-            if (c != null && l != null && Math.abs(c[0] - l[0]) <= 2 * Math.hypot(c[1], l[1])) {
+            if (c != null && l != null && BranchAgreement.of(c[0], c[1], l[0], l[1]).agree()) {
                 x.add(entry.getKey());
                 y.add((c[0] + l[0]) / 2);
                 e.add(Math.hypot(c[1], l[1]) / 2);

@@ -407,24 +407,29 @@ final class ClusterLife implements AutoCloseable {
         }
     }
 
-    /** Destroys every worker and its descendants, and waits for them. */
+    /** Destroys every worker and its descendants, waits for them, and removes their logs. */
     private void destroyWorkers() {
-        for (Process p : workers) {
-            p.descendants().forEach(ProcessHandle::destroyForcibly);
-            p.destroyForcibly();
-        }
-        for (Process p : workers) {
-            try {
-                p.waitFor(10, TimeUnit.SECONDS);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        }
+        destroyAndWait(workers);
         for (Path log : workerLogs) {
             try {
                 Files.deleteIfExists(log);
             } catch (IOException e) {
                 // A temporary file; nothing else to do.
+            }
+        }
+    }
+
+    /** Destroys {@code processes} and their descendants, and waits up to 10 s for each to end. */
+    static void destroyAndWait(List<Process> processes) {
+        for (Process p : processes) {
+            p.descendants().forEach(ProcessHandle::destroyForcibly);
+            p.destroyForcibly();
+        }
+        for (Process p : processes) {
+            try {
+                p.waitFor(10, TimeUnit.SECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
             }
         }
     }

@@ -205,10 +205,11 @@ class ClusterEngineTest {
     void aWorkerKilledMidRunIsRecoveredFromTheLastCheckpointAndTheRunEndsInTheSameState(String checkpointWindows,
             int slabsPerJvm) throws Exception {
         // Killed at the first progress report (after 64 windows): recovered from the checkpoint of window
-        // 40, or from the scene (the first checkpoint). The run hands out samples and saves checkpoint files all along. Two cases cover
-        // both choices (where from, slabs per JVM) in pairs, each case costing two worker JVMs' start:
-        // from a checkpoint with two slabs a JVM (six domains' state re-cut into four), from the start
-        // with one; the seed-node test below recovers with one slab a JVM from wherever it stood.
+        // 40, or from the scene (the first checkpoint). The run hands out samples and saves checkpoint
+        // files all along. Two cases cover both choices (where from, slabs per JVM) in pairs, each case
+        // costing two worker JVMs' start: from a checkpoint with two slabs a JVM (six domains' state
+        // re-cut into four), from the start with one; the seed-node test below recovers with one slab a
+        // JVM from wherever it stood.
         Scene scene = RandomScenes.dense(900, 0.5, true, 5, 0.5);
         double every = scene.until() / 8;
         Going running = new Going();
@@ -335,9 +336,7 @@ class ClusterEngineTest {
             Invariants.assertSameRun(scene.name(), r, new SerialEngine().run(scene, RunOptions.until(scene.until())), SAME);
             assertThat(first.isAlive()).as("the worker left serves on").isTrue();
         } finally {
-            for (Process p : new Process[] {first, second}) {
-                p.destroyForcibly().waitFor(30, TimeUnit.SECONDS);
-            }
+            ClusterLife.destroyAndWait(List.of(first, second));
         }
     }
 }

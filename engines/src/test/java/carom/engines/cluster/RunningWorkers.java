@@ -6,7 +6,6 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.extension.AfterAllCallback;
 import org.junit.jupiter.api.extension.AfterEachCallback;
 import org.junit.jupiter.api.extension.BeforeAllCallback;
@@ -98,16 +97,7 @@ final class RunningWorkers implements BeforeAllCallback, AfterAllCallback, After
     }
 
     private void close() {
-        for (Process p : workers) {
-            p.destroyForcibly();
-        }
-        for (Process p : workers) {
-            try {
-                p.waitFor(30, TimeUnit.SECONDS);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        }
+        ClusterLife.destroyAndWait(workers);
         workers.clear();
         addresses.clear();
     }

@@ -11,13 +11,17 @@ package carom.lab.study.eos;
  * @param difference     crystal's βPσ² minus the liquid's
  * @param combinedError  √(σ_crystal² + σ_liquid²)
  */
-record BranchAgreement(double difference, double combinedError) {
+public record BranchAgreement(double difference, double combinedError) {
     /** Agreement within this many combined standard errors accepts a point. */
     static final double SIGMAS = 2.0;
 
     static BranchAgreement of(EosPoint crystal, EosPoint fluid) {
-        return new BranchAgreement(crystal.betaPSigma2() - fluid.betaPSigma2(),
-                Math.hypot(crystal.betaPSigma2Error(), fluid.betaPSigma2Error()));
+        return of(crystal.betaPSigma2(), crystal.betaPSigma2Error(), fluid.betaPSigma2(), fluid.betaPSigma2Error());
+    }
+
+    /** The two starts' βPσ² and errors compared (public for the lab notes' programs that read a study's CSV). */
+    public static BranchAgreement of(double crystal, double crystalError, double fluid, double fluidError) {
+        return new BranchAgreement(crystal - fluid, Math.hypot(crystalError, fluidError));
     }
 
     /** The difference in combined standard errors (infinite if both errors are zero and the values differ). */
@@ -29,7 +33,7 @@ record BranchAgreement(double difference, double combinedError) {
     }
 
     /** Whether the two branches agree, which accepts the point as equilibrated. */
-    boolean agree() {
+    public boolean agree() {
         return Math.abs(sigmas()) <= SIGMAS;
     }
 }
