@@ -20,9 +20,16 @@ public final class CellGrid {
     public final double cellHeight;
     private final double colsPerUnit;
     private final double rowsPerUnit;
-    /** Neighbours of cell c are {@code neighbours[neighbourStart[c] .. neighbourStart[c+1])}. */
-    public final int[] neighbourStart;
-    public final int[] neighbours;
+    /**
+     * The neighbour table, made on first use: the engines that step cell by cell read it, while a
+     * whole-state scan ({@link NeighbourPairs}) walks the grid without it. A table of 9 ints a cell
+     * would be most of a million-disc scene check's time and memory. Final fields publish it safely to
+     * other threads; two threads that race to make it make the same table.
+     */
+    private Neighbourhood table;
+
+    private record Neighbourhood(int[] start, int[] list) {
+    }
 
     private CellGrid(double width, double height, boolean periodic, int cols, int rows) {
         this.width = width;
@@ -34,8 +41,25 @@ public final class CellGrid {
         this.cellHeight = height / rows;
         this.colsPerUnit = cols / width;
         this.rowsPerUnit = rows / height;
-        this.neighbourStart = new int[cols * rows + 1];
-        this.neighbours = buildNeighbours();
+    }
+
+    /** Neighbours of cell c are {@code neighbours()[neighbourStart()[c] .. neighbourStart()[c+1])}, c itself included. */
+    public int[] neighbourStart() {
+        return table().start;
+    }
+
+    /** See {@link #neighbourStart()}. */
+    public int[] neighbours() {
+        return table().list;
+    }
+
+    private Neighbourhood table() {
+        Neighbourhood t = table;
+        if (t == null) {
+            t = buildNeighbours();
+            table = t;
+        }
+        return t;
     }
 
     /**
@@ -86,14 +110,17 @@ public final class CellGrid {
         return r < 0 ? 0 : (r >= rows ? rows - 1 : r);
     }
 
-    private int[] buildNeighbours() {
+    private Neighbourhood buildNeighbours() {
         int cells = cols * rows;
-        int[] scratch = new int[9 * cells];
+        int[] start = new int[cells + 1];
+        // Wrapped neighbours coincide only on a periodic axis of fewer than three cells.
+        boolean distinct = !periodic || (cols >= 3 && rows >= 3);
+        int[] list = new int[distinct ? neighbourCount() : 9 * cells];
         int k = 0;
         for (int r = 0; r < rows; r++) {
             for (int c = 0; c < cols; c++) {
                 int cell = r * cols + c;
-                neighbourStart[cell] = k;
+                start[cell] = k;
                 for (int dr = -1; dr <= 1; dr++) {
                     int nr = r + dr;
                     if (periodic) {
@@ -109,15 +136,24 @@ public final class CellGrid {
                             continue;
                         }
                         int neighbour = nr * cols + nc;
-                        if (!contains(scratch, neighbourStart[cell], k, neighbour)) {
-                            scratch[k++] = neighbour;
+                        if (distinct || !contains(list, start[cell], k, neighbour)) {
+                            list[k++] = neighbour;
                         }
                     }
                 }
             }
         }
-        neighbourStart[cells] = k;
-        return k == scratch.length ? scratch : java.util.Arrays.copyOf(scratch, k);
+        start[cells] = k;
+        return new Neighbourhood(start, k == list.length ? list : java.util.Arrays.copyOf(list, k));
+    }
+
+    /** Entries of the table when no two neighbours of a cell coincide: a product of the axes' counts. */
+    private long neighbourCountAlong(int n) {
+        return periodic ? 3L * n : (n == 1 ? 1 : 3L * n - 2);
+    }
+
+    private int neighbourCount() {
+        return Math.toIntExact(neighbourCountAlong(cols) * neighbourCountAlong(rows));
     }
 
     private static boolean contains(int[] a, int from, int to, int v) {

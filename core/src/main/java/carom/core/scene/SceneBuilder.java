@@ -251,6 +251,7 @@ public final class SceneBuilder {
 
     private void checkNoOverlaps(Discs d, int[] blockStarts) {
         double coordinateUlp = 4 * Math.ulp(Math.max(box.width(), box.height()));
+        // The first overlap found is named: a scene of discs piled on one point must fail at once.
         NeighbourPairs.forEach(d, box.width(), box.height(), box.periodic(), (i, j, dx, dy) -> {
             double sigma = d.radius[i] + d.radius[j];
             double dist = Math.sqrt(dx * dx + dy * dy);

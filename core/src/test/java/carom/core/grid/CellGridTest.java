@@ -14,8 +14,8 @@ import org.junit.jupiter.params.provider.ValueSource;
 class CellGridTest {
     private static Set<Integer> neighboursOf(CellGrid g, int cell) {
         Set<Integer> s = new HashSet<>();
-        for (int k = g.neighbourStart[cell]; k < g.neighbourStart[cell + 1]; k++) {
-            assertThat(s.add(g.neighbours[k])).as("neighbour %d of cell %d listed once", g.neighbours[k], cell).isTrue();
+        for (int k = g.neighbourStart()[cell]; k < g.neighbourStart()[cell + 1]; k++) {
+            assertThat(s.add(g.neighbours()[k])).as("neighbour %d of cell %d listed once", g.neighbours()[k], cell).isTrue();
         }
         return s;
     }

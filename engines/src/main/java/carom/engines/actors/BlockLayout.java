@@ -107,8 +107,8 @@ public final class BlockLayout {
         for (int c = 0; c < cells; c++) {
             holderStart[c] = size;
             int found = 0;
-            for (int m = grid.neighbourStart[c]; m < grid.neighbourStart[c + 1]; m++) {
-                int other = grid.neighbours[m];
+            for (int m = grid.neighbourStart()[c]; m < grid.neighbourStart()[c + 1]; m++) {
+                int other = grid.neighbours()[m];
                 int a = actorOfCell[other];
                 if (other < c && a != actorOfCell[c] && indexOf(scratch, found, a) < 0) {
                     if (found == scratch.length) {
@@ -137,8 +137,8 @@ public final class BlockLayout {
             int first = size;
             for (int q = cellStart[a]; q < cellStart[a + 1]; q++) {
                 int c = cellList[q];
-                for (int m = grid.neighbourStart[c]; m < grid.neighbourStart[c + 1]; m++) {
-                    int b = actorOfCell[grid.neighbours[m]];
+                for (int m = grid.neighbourStart()[c]; m < grid.neighbourStart()[c + 1]; m++) {
+                    int b = actorOfCell[grid.neighbours()[m]];
                     if (b != a && !seen.get(b)) {
                         seen.set(b);
                         if (size == result.length) {

@@ -96,8 +96,8 @@ final class BlockNeighbourhood {
         int size = cells.length;
         for (int l = 0; l < ownCells; l++) {
             int c = cells[l];
-            for (int m = grid.neighbourStart[c]; m < grid.neighbourStart[c + 1]; m++) {
-                int other = grid.neighbours[m];
+            for (int m = grid.neighbourStart()[c]; m < grid.neighbourStart()[c + 1]; m++) {
+                int other = grid.neighbours()[m];
                 if (other > c && layout.actorOfCell[other] != actor && BlockLayout.indexOf(cells, ownCells, size, other) < 0) {
                     if (size == cells.length) {
                         cells = Arrays.copyOf(cells, 2 * size);
@@ -117,8 +117,8 @@ final class BlockNeighbourhood {
         for (int l = 0; l < knownCell.length; l++) {
             pairStart[l] = size;
             int c = knownCell[l];
-            for (int m = grid.neighbourStart[c]; m < grid.neighbourStart[c + 1]; m++) {
-                int other = grid.neighbours[m];
+            for (int m = grid.neighbourStart()[c]; m < grid.neighbourStart()[c + 1]; m++) {
+                int other = grid.neighbours()[m];
                 boolean otherOwn = layout.actorOfCell[other] == actor;
                 boolean owned = l < ownCells ? otherOwn || other > c : otherOwn && other < c;
                 if (owned) {

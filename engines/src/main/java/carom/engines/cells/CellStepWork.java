@@ -111,8 +111,8 @@ public final class CellStepWork {
         for (int m = cells.start[c]; m < cells.start[c + 1]; m++) {
             int i = cells.items[m];
             predictWalls(i, 0, w);
-            for (int k = grid.neighbourStart[c]; k < grid.neighbourStart[c + 1]; k++) {
-                int other = grid.neighbours[k];
+            for (int k = grid.neighbourStart()[c]; k < grid.neighbourStart()[c + 1]; k++) {
+                int other = grid.neighbours()[k];
                 if (other < c) {
                     continue;
                 }
@@ -146,8 +146,8 @@ public final class CellStepWork {
 
     /** Whether no neighbour of c has a valid event before {@code t}. */
     public boolean isLocalMinimum(int c, double t, Worker w) {
-        for (int k = grid.neighbourStart[c]; k < grid.neighbourStart[c + 1]; k++) {
-            int other = grid.neighbours[k];
+        for (int k = grid.neighbourStart()[c]; k < grid.neighbourStart()[c + 1]; k++) {
+            int other = grid.neighbours()[k];
             if (other != c && nextValidTime(other, w) < t) {
                 return false;
             }
@@ -241,8 +241,8 @@ public final class CellStepWork {
         predictWalls(k, now, w);
         int ck = cells.cellOf[k];
         boolean deferred = false;
-        for (int m = grid.neighbourStart[ck]; m < grid.neighbourStart[ck + 1]; m++) {
-            int other = grid.neighbours[m];
+        for (int m = grid.neighbourStart()[ck]; m < grid.neighbourStart()[ck + 1]; m++) {
+            int other = grid.neighbours()[m];
             if (rowDistance(band, other / grid.cols) > 1) {
                 deferred = true;
                 continue;
@@ -276,8 +276,8 @@ public final class CellStepWork {
             }
             int band = w.deferred[k + 2];
             int ck = cells.cellOf[disc];
-            for (int m = grid.neighbourStart[ck]; m < grid.neighbourStart[ck + 1]; m++) {
-                int other = grid.neighbours[m];
+            for (int m = grid.neighbourStart()[ck]; m < grid.neighbourStart()[ck + 1]; m++) {
+                int other = grid.neighbours()[m];
                 if (rowDistance(band, other / grid.cols) > 1) {
                     predictAgainstCell(disc, other, d.t[disc], w);
                 }

@@ -246,8 +246,8 @@ final class SerialRun {
         for (int i = 0; i < n; i++) {
             predictWalls(i, 0);
             int cell = cells.cellOf[i];
-            for (int k = grid.neighbourStart[cell], kEnd = grid.neighbourStart[cell + 1]; k < kEnd; k++) {
-                int other = grid.neighbours[k];
+            for (int k = grid.neighbourStart()[cell], kEnd = grid.neighbourStart()[cell + 1]; k < kEnd; k++) {
+                int other = grid.neighbours()[k];
                 for (int m = cells.start[other], mEnd = cells.start[other + 1]; m < mEnd; m++) {
                     int j = cells.items[m];
                     if (j > i) {
@@ -330,8 +330,8 @@ final class SerialRun {
         }
         predictWalls(i, now);
         int cell = cells.cellOf[i];
-        for (int k = grid.neighbourStart[cell], kEnd = grid.neighbourStart[cell + 1]; k < kEnd; k++) {
-            int other = grid.neighbours[k];
+        for (int k = grid.neighbourStart()[cell], kEnd = grid.neighbourStart()[cell + 1]; k < kEnd; k++) {
+            int other = grid.neighbours()[k];
             for (int m = cells.start[other], mEnd = cells.start[other + 1]; m < mEnd; m++) {
                 int j = cells.items[m];
                 if (j != i) {

@@ -136,8 +136,8 @@ final class SteppedRun {
     private void resolvePairs(double time) {
         int[] start = cells.start;
         int[] items = cells.items;
-        int[] neighbourStart = grid.neighbourStart;
-        int[] neighbours = grid.neighbours;
+        int[] neighbourStart = grid.neighbourStart();
+        int[] neighbours = grid.neighbours();
         for (int c = 0, count = grid.cellCount(); c < count; c++) {
             int cStart = start[c];
             int cEnd = start[c + 1];

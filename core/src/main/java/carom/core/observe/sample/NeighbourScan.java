@@ -149,8 +149,8 @@ final class NeighbourScan {
         double halfW = 0.5 * w;
         double halfH = 0.5 * h;
         int[] start = lists.start;
-        int[] nbStart = grid.neighbourStart;
-        int[] nb = grid.neighbours;
+        int[] nbStart = grid.neighbourStart();
+        int[] nb = grid.neighbours();
         int cells = grid.cellCount();
         for (int c = 0; c < cells; c++) {
             int aFrom = start[c];
