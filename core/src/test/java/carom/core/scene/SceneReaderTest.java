@@ -935,4 +935,82 @@ class SceneReaderTest {
         String message = rejected(json, "particles[0].species: unknown species 'none' (declared: disc, peg, s0, ");
         assertThat(message).endsWith(", ... (1002 species))").hasSizeLessThan(200);
     }
+
+    // ---- the particles list, read apart from the tree (before the species it names may be known) ----
+
+    /** A scene whose particles come before its species, with particle {@code k} edited by {@code edit}. */
+    private static String particlesFirst(int count, int k, Consumer<ObjectNode> edit) {
+        ObjectNode root = JSON.createObjectNode();
+        ArrayNode particles = root.putArray("particles");
+        for (int i = 0; i < count; i++) {
+            ObjectNode p = particles.addObject().put("species", "disc").put("x", 1 + i).put("y", 1);
+            if (i == k) {
+                edit.accept(p);
+            }
+        }
+        root.putObject("box").put("width", count + 2).put("height", 3).put("boundary", "walls");
+        root.putArray("species").addObject().put("name", "disc").put("radius", 0.25).put("mass", 1);
+        root.put("until", 1);
+        return root.toString();
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @CsvSource(delimiter = '|', textBlock = """
+            an unknown species                       | species | "none"  | particles[3].species: unknown species 'none'
+            a species that is not a string           | species | 7       | particles[3].species: must be a string
+            a missing x                              | x       |         | particles[3].x: missing
+            an unknown key                           | z       | 1       | particles[3].z: unknown key
+            """)
+    void aParticleBeforeTheSpeciesIsCheckedAsInAnyOrder(String what, String key, String value, String message) {
+        String json = particlesFirst(6, 3, p -> {
+            if (value == null) {
+                p.remove(key);
+            } else {
+                p.set(key, value(value));
+            }
+        });
+        rejected(json, message);
+    }
+
+    @Test
+    void anEarlierUnknownSpeciesIsNamedBeforeALaterMissingNumber() {
+        String json = particlesFirst(6, 1, p -> p.put("species", "none")).replace("\"x\":5,", "");
+        rejected(json, "particles[1].species: unknown species 'none'");
+    }
+
+    @Test
+    void anEarlierMissingNumberIsNamedBeforeALaterUnknownSpecies() {
+        String json = particlesFirst(6, 4, p -> p.put("species", "none")).replace("\"x\":2,", "");
+        rejected(json, "particles[1].x: missing");
+    }
+
+    @Test
+    void withinOneParticleTheSpeciesComesBeforeItsNumbers() {
+        rejected(particlesFirst(3, 2, p -> p.put("species", "none").remove("x")), "particles[2].species: unknown species");
+    }
+
+    @Test
+    void particlesAreReadToTheBitInFileOrder() {
+        java.util.SplittableRandom random = new java.util.SplittableRandom(7);
+        int n = 3000;
+        double[][] expected = new double[n][4];
+        StringBuilder json = new StringBuilder("{\"particles\": [");
+        for (int i = 0; i < n; i++) {
+            // Positions on a grid with random low bits, velocities of any magnitude and digits.
+            expected[i][0] = (i % 60) + 0.5 + 0.1 * random.nextDouble();
+            expected[i][1] = (i / 60) + 0.5 + 0.1 * random.nextDouble();
+            expected[i][2] = Double.longBitsToDouble(random.nextLong(0x3CB0000000000000L, 0x44B0000000000000L));
+            expected[i][3] = -random.nextDouble() * Math.pow(10, random.nextInt(-20, 20));
+            json.append(i == 0 ? "" : ",").append(String.format(
+                    "{\"species\": \"d\", \"x\": %s, \"y\": %s, \"vx\": %s, \"vy\": %s}",
+                    expected[i][0], expected[i][1], expected[i][2], expected[i][3]));
+        }
+        json.append("], \"box\": {\"width\": 61, \"height\": 51, \"boundary\": \"walls\"},"
+                + " \"species\": [{\"name\": \"d\", \"radius\": 0.2, \"mass\": 1}], \"until\": 1}");
+        Discs d = SceneReader.parse(json.toString()).newDiscs();
+        assertThat(d.n).isEqualTo(n);
+        for (int i = 0; i < n; i++) {
+            assertThat(new double[] {d.x[i], d.y[i], d.vx[i], d.vy[i]}).as("disc %d", i).containsExactly(expected[i]);
+        }
+    }
 }
