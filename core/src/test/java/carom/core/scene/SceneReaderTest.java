@@ -1013,4 +1013,15 @@ class SceneReaderTest {
             assertThat(new double[] {d.x[i], d.y[i], d.vx[i], d.vy[i]}).as("disc %d", i).containsExactly(expected[i]);
         }
     }
+
+    /** Every spelling of a number gives the double a tree of the file gives: ints, big ints, -0, subnormals. */
+    @ParameterizedTest
+    @ValueSource(strings = {"5", "-0", "-0.0", "1e2", "0.1", "18446744073709551616", "-3.5E-320", "2.2250738585072011e-308",
+            "123456789012345678901234567890.5"})
+    void aNumberIsReadAsATreeWouldReadIt(String spelling) {
+        String json = particlesFirst(1, 0, p -> p.set("vx", value(spelling)));
+        double expected = value(spelling).doubleValue();
+        double read = SceneReader.parse(json).newDiscs().vx[0];
+        assertThat(Double.doubleToRawLongBits(read)).as(spelling).isEqualTo(Double.doubleToRawLongBits(expected));
+    }
 }
