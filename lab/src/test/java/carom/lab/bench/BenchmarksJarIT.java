@@ -56,6 +56,18 @@ class BenchmarksJarIT {
         assertThat(secondsPerRun.values()).allSatisfy(score -> assertThat(score).isPositive().isFinite());
     }
 
+    /** Every start-up phase runs, on a scene small enough for CI, and scores a time. */
+    @Test
+    void startupTimesEveryPhase() throws Exception {
+        Path csv = OUT.resolve("startup.csv");
+        Jmh jmh = run("Startup", "-p", "n=400", "-rf", "csv", "-rff", csv.toString());
+        assertThat(jmh.exit).as(jmh.output).isZero();
+        Map<String, Double> millis = scores(csv, "carom.lab.bench.StartupBenchmark.run", "phase");
+        assertThat(millis.keySet()).as(jmh.output)
+                .containsExactlyInAnyOrder("generate", "read", "table", "predict", "calendar", "check");
+        assertThat(millis.values()).allSatisfy(score -> assertThat(score).isPositive().isFinite());
+    }
+
     /** A -D carrier count that disagrees with threads must stop the trial, not measure other carriers. */
     @Test
     void vthreadsRefusesCarriersOtherThanThreads() throws Exception {
@@ -132,10 +144,15 @@ class BenchmarksJarIT {
 
     /** Score by engine of the rows of {@code benchmark} in JMH's CSV result file. */
     private static Map<String, Double> scores(Path csv, String benchmark) throws IOException {
+        return scores(csv, benchmark, "engine");
+    }
+
+    /** Score by the value of parameter {@code param} of the rows of {@code benchmark} in JMH's CSV result file. */
+    private static Map<String, Double> scores(Path csv, String benchmark, String param) throws IOException {
         List<String> lines = Files.readAllLines(csv, StandardCharsets.UTF_8);
         List<String> header = cells(lines.get(0));
         int score = header.indexOf("Score");
-        int engine = header.indexOf("Param: engine");
+        int engine = header.indexOf("Param: " + param);
         Map<String, Double> byEngine = new TreeMap<>();
         for (String line : lines.subList(1, lines.size())) {
             List<String> row = cells(line);
