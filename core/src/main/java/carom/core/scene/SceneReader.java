@@ -194,25 +194,24 @@ public final class SceneReader {
         }
 
         void addTo(SceneBuilder builder, Map<String, Integer> speciesByName, List<Species> species) {
+            // Each name looked up once; an unknown one is named at the first particle that uses it.
+            Integer[] speciesOf = new Integer[names.size()];
+            for (int m = 0; m < speciesOf.length; m++) {
+                speciesOf[m] = speciesByName.get(names.get(m));
+            }
             for (int k = 0; k < count; k++) {
+                Integer s = speciesOf[nameOf[k]];
+                if (s == null) {
+                    throw unknownSpecies("particles[" + k + "]", names.get(nameOf[k]), species);
+                }
                 int at = 4 * k;
-                int s = speciesIndex(names.get(nameOf[k]), k, speciesByName, species);
                 builder.disc(s, state[at], state[at + 1], state[at + 2], state[at + 3]);
             }
             if (failed != null) {
-                int k = failedAt;
-                readParticle(failed, "particles[" + k + "]", name -> speciesIndex(name, k, speciesByName, species),
-                        new double[4], 0);
-                throw new IllegalStateException("particles[" + k + "] failed a check once and passed it later");
+                String path = "particles[" + failedAt + "]";
+                readParticle(failed, path, name -> speciesRef(name, path, speciesByName, species), new double[4], 0);
+                throw new IllegalStateException(path + " failed a check once and passed it later");
             }
-        }
-
-        private static int speciesIndex(String name, int k, Map<String, Integer> speciesByName, List<Species> species) {
-            Integer index = speciesByName.get(name);
-            if (index == null) {
-                throw unknownSpecies("particles[" + k + "]", name, species);
-            }
-            return index;
         }
     }
 
@@ -461,7 +460,11 @@ public final class SceneReader {
     }
 
     private static int speciesRef(JsonNode o, String path, Map<String, Integer> speciesByName, List<Species> species) {
-        String name = string(required(o, path, "species"), path + ".species");
+        return speciesRef(string(required(o, path, "species"), path + ".species"), path, speciesByName, species);
+    }
+
+    /** The index of species {@code name}, named by the object at {@code path}. */
+    private static int speciesRef(String name, String path, Map<String, Integer> speciesByName, List<Species> species) {
         Integer index = speciesByName.get(name);
         if (index == null) {
             throw unknownSpecies(path, name, species);

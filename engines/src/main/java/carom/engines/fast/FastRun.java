@@ -124,11 +124,7 @@ final class FastRun {
 
     RunResult run() {
         long started = System.nanoTime();
-        for (int i = 0; i < n; i++) {
-            if (invMass(i) > 0) {
-                table.setEventTime(i, predictFull(i, 0));
-            }
-        }
+        table.predictFirstEvents(i -> predictFull(i, 0));
         replan(0);
         return finish(started);
     }
@@ -240,10 +236,6 @@ final class FastRun {
 
     private long predictions() {
         return lists == null ? p.predictions() : lists.predictions();
-    }
-
-    private double invMass(int i) {
-        return table.invMass(i);
     }
 
     private void advance(int i, double time) {

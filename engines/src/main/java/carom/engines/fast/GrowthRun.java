@@ -200,11 +200,7 @@ public final class GrowthRun {
         queue = table.newCalendar(n);
         stageEnd = plan.end(table);
         stages++;
-        for (int i = 0; i < n; i++) {
-            if (table.invMass(i) > 0) {
-                table.setEventTime(i, predictor.predictFull(i, 0));
-            }
-        }
+        table.predictFirstEvents(i -> predictor.predictFull(i, 0));
         replan(0);
     }
 

@@ -9,6 +9,7 @@ import carom.core.physics.Restitution;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
 import java.util.Arrays;
+import java.util.function.IntToDoubleFunction;
 
 /**
  * The discs of a one-event-per-disc run laid out for event-driven prediction: the cell grid, the
@@ -367,6 +368,18 @@ public final class DiscTable {
      */
     public void setEventTime(int i, double t) {
         rec[i * stride + EV] = t;
+    }
+
+    /**
+     * How a run starts: every mobile disc's first event, predicted at local time 0 by
+     * {@code predictFull} (the run's predictor), written as its event time before a calendar is planned.
+     */
+    public void predictFirstEvents(IntToDoubleFunction predictFull) {
+        for (int i = 0; i < n; i++) {
+            if (invMass(i) > 0) {
+                setEventTime(i, predictFull.applyAsDouble(i));
+            }
+        }
     }
 
     /** Whether neighbour lists can predict on this table ({@link ListPredictor}): straight flight seen through each cell's image, no growth. */

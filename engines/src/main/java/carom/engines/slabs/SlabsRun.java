@@ -230,11 +230,7 @@ final class SlabsRun {
                 }
             } else if (merged && domainCount > 1) {
                 // A merged start: fast's first predictions and calendar, no thread until the first split.
-                for (int i = 0; i < n; i++) {
-                    if (table.invMass(i) > 0) {
-                        table.setEventTime(i, whole.predictFull(i, 0));
-                    }
-                }
+                table.predictFirstEvents(i -> whole.predictFull(i, 0));
                 replan(0);
                 startMergedPhase(policy.startBudget());
             } else {

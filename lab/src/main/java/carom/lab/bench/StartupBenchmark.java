@@ -125,11 +125,7 @@ public class StartupBenchmark {
 
     /** Every mobile disc's first event, as a run starts. */
     private DiscTable predictAll() {
-        for (int i = 0; i < n; i++) {
-            if (table.invMass(i) > 0) {
-                table.setEventTime(i, predictor.predictFull(i, 0));
-            }
-        }
+        table.predictFirstEvents(i -> predictor.predictFull(i, 0));
         return table;
     }
 
