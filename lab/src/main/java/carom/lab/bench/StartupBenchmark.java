@@ -1,5 +1,6 @@
 package carom.lab.bench;
 
+import carom.core.BadInputException;
 import carom.core.engine.RunOptions;
 import carom.core.observe.StateChecks;
 import carom.core.scene.Scene;
@@ -87,7 +88,8 @@ public class StartupBenchmark {
         switch (phase) {
             case "read" -> listed = writeListed(scene, discs);
             case "generate", "table", "predict", "calendar", "check" -> { }
-            default -> throw new IllegalArgumentException(
+            // One line, as for an unknown engine in the other benchmarks (EngineSetup), not a stack trace.
+            default -> throw new BadInputException(
                     "phase: " + phase + " (known: generate, read, table, predict, calendar, check)");
         }
     }

@@ -68,6 +68,18 @@ class BenchmarksJarIT {
         assertThat(millis.values()).allSatisfy(score -> assertThat(score).isPositive().isFinite());
     }
 
+    /**
+     * An unknown phase stops the trial with one line naming the phases, as an unknown engine does, not
+     * with the benchmark's stack trace (JMH's own report of the failed run, under -foe, keeps its trace).
+     */
+    @Test
+    void startupRefusesAnUnknownPhaseInOneLine() throws Exception {
+        Jmh jmh = run("Startup", "-p", "n=400", "-p", "phase=nope");
+        assertThat(jmh.exit).as(jmh.output).isNotZero();
+        assertThat(jmh.output).contains("phase: nope (known: generate, read, table, predict, calendar, check)")
+                .doesNotContain("StartupBenchmark.prepare");
+    }
+
     /** A -D carrier count that disagrees with threads must stop the trial, not measure other carriers. */
     @Test
     void vthreadsRefusesCarriersOtherThanThreads() throws Exception {
