@@ -43,7 +43,7 @@ public final class FastEngine implements Engine {
 
     @Override
     public List<Tunable<?>> tunables() {
-        return List.of(KernelTunables.CELL_FACTOR, KernelTunables.SKIN, Tunables.AUDIT_ENERGY);
+        return List.of(KernelTunables.CELL_FACTOR, KernelTunables.SKIN, KernelTunables.PREFETCH, Tunables.AUDIT_ENERGY);
     }
 
     @Override

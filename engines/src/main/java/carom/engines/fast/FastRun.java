@@ -103,6 +103,7 @@ final class FastRun {
         this.table = new DiscTable(scene, src,
                 skin > 0 ? KernelTunables.listCellFactor(options, skin) : KernelTunables.cellFactor(options, scene));
         this.n = table.n;
+        table.prefetchHints(KernelTunables.PREFETCH.of(options));
         this.motion = new DiscMotion(table);
         this.p = new CellPredictor(motion);
         // By default, lists only where the box allows them (4 cells along each periodic axis); asked for, or nothing.

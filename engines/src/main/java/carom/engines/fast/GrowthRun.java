@@ -110,6 +110,8 @@ public final class GrowthRun {
     private long rescalings;
     private Stop stop;
     private double stoppedAt;
+    /** The tunable {@code prefetch}, for every stage's table. */
+    private final boolean prefetch;
 
     /**
      * @param stopPressure Z at which the run stops (+Infinity: at {@code until} only)
@@ -123,6 +125,7 @@ public final class GrowthRun {
         this.state = scene.newDiscs();
         this.n = state.n;
         this.plan = new GrowthStages(scene, state.maxRadius(), KernelTunables.growthCellFactor(options));
+        this.prefetch = KernelTunables.PREFETCH.of(options);
         this.energyStart = Observables.kineticEnergy(state);
         this.momentumStart = Observables.momentum(state);
         this.energyCap = energyStart > 0 ? energyCap : Double.POSITIVE_INFINITY;
@@ -195,6 +198,7 @@ public final class GrowthRun {
         }
         epoch = at;
         table = plan.table(state, at);
+        table.prefetchHints(prefetch);
         motion = new DiscMotion(table);
         predictor = new CellPredictor(motion);
         queue = table.newCalendar(n);

@@ -58,6 +58,8 @@ public final class CalendarQueue {
     private long cur;
     /** Slices drained in a row without finding an entry. */
     private int idle;
+    /** The owner's prefetch hints as entries reach the heap, or null. */
+    private final Prefetch prefetch;
 
     /**
      * An empty queue over the owner's records: every disc's time must be +Infinity already (the
@@ -66,7 +68,7 @@ public final class CalendarQueue {
      * @param buckets a power of two
      */
     CalendarQueue(int buckets, double[] keys, int keyStride, int keyAt, int[] links, int linkStride, int linkAt,
-                         int prevAt) {
+                         int prevAt, Prefetch prefetch) {
         if (Integer.bitCount(buckets) != 1) {
             throw new IllegalArgumentException("buckets must be a power of two: " + buckets);
         }
@@ -77,6 +79,7 @@ public final class CalendarQueue {
         this.linkStride = linkStride;
         this.linkAt = linkAt;
         this.prevAt = prevAt;
+        this.prefetch = prefetch;
         this.head = new int[buckets];
         this.buckets = buckets;
         this.mask = buckets - 1;
@@ -225,6 +228,9 @@ public final class CalendarQueue {
             }
             cur++;
             drain((int) (cur & mask));
+            if (prefetch != null && heapSize > 0) {
+                prefetch.sliceReady(heap, heapSize);
+            }
         }
         return heap[0];
     }
@@ -243,6 +249,9 @@ public final class CalendarQueue {
         while (i != NIL) {
             int following = next(i);
             if (sliceOf(time(i)) <= cur) {
+                if (prefetch != null) {
+                    prefetch.entering(i);
+                }
                 heapPush(i);
                 inBuckets--;
                 idle = 0;

@@ -519,8 +519,18 @@ public final class DiscTable {
      */
     public CalendarQueue newCalendar(int discs) {
         int buckets = Integer.highestOneBit(Math.max(64, discs / 2 - 1)) << 1;
-        return new CalendarQueue(buckets, rec, stride, EV, ir, IS, QNEXT, QPREV);
+        return new CalendarQueue(buckets, rec, stride, EV, ir, IS, QNEXT, QPREV, Prefetch.forTable(this, prefetchWanted));
     }
+
+    /**
+     * Whether calendars made from now on give prefetch hints where they pay ({@link Prefetch}; the
+     * tunable {@code prefetch}). Hints change no value, only speed.
+     */
+    public void prefetchHints(boolean wanted) {
+        prefetchWanted = wanted;
+    }
+
+    private boolean prefetchWanted = true;
 
     /**
      * Rebuilds {@code queue} over discs {@code members[0..count)} (every disc if {@code members} is

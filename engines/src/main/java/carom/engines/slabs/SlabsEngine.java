@@ -50,7 +50,8 @@ public final class SlabsEngine implements Engine {
 
     @Override
     public List<Tunable<?>> tunables() {
-        return List.of(KernelTunables.CELL_FACTOR, DOMAIN_ROWS, Tunables.AUDIT_ENERGY, SlabsRun.SEQUENTIAL, SpinPolicy.SPINS,
+        return List.of(KernelTunables.CELL_FACTOR, KernelTunables.PREFETCH, DOMAIN_ROWS, Tunables.AUDIT_ENERGY, SlabsRun.SEQUENTIAL,
+                SpinPolicy.SPINS,
                 MergePolicy.WINDOW_EVENTS, MergePolicy.MERGE_EVENTS,
                 MergePolicy.ESTIMATE_WINDOWS);
     }

@@ -140,6 +140,7 @@ final class SlabsRun {
         Discs src = scene.newDiscs();
         this.table = prebuilt != null ? prebuilt : new DiscTable(scene, src, KernelTunables.cellFactor(options, scene));
         this.n = table.n;
+        table.prefetchHints(KernelTunables.PREFETCH.of(options));
         this.audit = Tunables.AUDIT_ENERGY.of(options) ? EnergyAudit.forScene(scene) : null;
         this.progress = options.progress();
         this.serialVirial = VirialAccumulator.forRun(until);

@@ -33,7 +33,7 @@ class CalendarQueueTest {
             keys[i * KEY_STRIDE + KEY_AT] = INF;
         }
         Arrays.fill(model, INF);
-        return new CalendarQueue(buckets, keys, KEY_STRIDE, KEY_AT, links, LINK_STRIDE, NEXT_AT, PREV_AT);
+        return new CalendarQueue(buckets, keys, KEY_STRIDE, KEY_AT, links, LINK_STRIDE, NEXT_AT, PREV_AT, null);
     }
 
     private static double randomDelay(SplittableRandom random, double width, int buckets) {
@@ -153,7 +153,7 @@ class CalendarQueueTest {
     void queuesOverDisjointMembersShareTheRecords(long seed) {
         SplittableRandom random = new SplittableRandom(seed);
         CalendarQueue even = newQueue(8);
-        CalendarQueue odd = new CalendarQueue(8, keys, KEY_STRIDE, KEY_AT, links, LINK_STRIDE, NEXT_AT, PREV_AT);
+        CalendarQueue odd = new CalendarQueue(8, keys, KEY_STRIDE, KEY_AT, links, LINK_STRIDE, NEXT_AT, PREV_AT, null);
         int[] evens = new int[DISCS / 2];
         int[] odds = new int[DISCS / 2];
         for (int k = 0; k < DISCS / 2; k++) {
