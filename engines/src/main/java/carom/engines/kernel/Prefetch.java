@@ -15,8 +15,8 @@ import java.nio.file.StandardCopyOption;
  * Prefetch hints for a table's calendar: as events reach the calendar's heap, a few events before
  * they are run, ask the memory system for the records and cell heads they will read. At large N an
  * event is bound by memory latency (lab note fast-layout-variants), and the hints let those misses
- * overlap with the events before: about 1.05-1.1x at N = 1e6 and packing fraction 0.5, and on the
- * thesis workload (lab note prefetch).
+ * overlap with the events before: about 1.05-1.1x at N = 1e6 and packing fraction 0.5 (lab note
+ * prefetch).
  *
  * <p>Java has no prefetch instruction, so the hints are a small C library ({@code src/main/c}, built
  * into the jar when a C compiler is at hand), called through the foreign-function API's critical

@@ -19,6 +19,9 @@
  *       crossing, and the cells (a diameter plus the skin wide) only serve to make lists.</li>
  *   <li>{@link carom.engines.kernel.CalendarQueue}: Paul's O(1) queue of one event per disc, keyed
  *       and linked through the records; one per thread.</li>
+ *   <li>{@code Prefetch}: hints from the calendar to the memory system at large N (the records its
+ *       next events will read), through a few lines of C when the build could make them; only speed,
+ *       never a value.</li>
  *   <li>{@link carom.engines.kernel.SavedStates}: disc states saved for an undo log
  *       ({@code slabs} rolls windows back with it).</li>
  * </ul>
