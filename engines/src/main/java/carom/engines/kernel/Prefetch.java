@@ -33,18 +33,25 @@ import java.nio.file.StandardCopyOption;
 final class Prefetch {
     /** Fewest discs for which a table's calendar gets hints. */
     static final int MIN_DISCS = 1 << 15;
-    /** Whether the library is loaded and bound (the hints are possible at all). */
-    static final boolean AVAILABLE;
-    /** (double[] rec, int[] ir, int[] heads, int disc, int stride, int cols, int cells, int n) void. */
-    private static final MethodHandle ENTRY;
-    /** (double[] rec, int[] ir, int[] heads, int[] heap, int count, int stride, int cols, int cells, int n) void. */
-    private static final MethodHandle SLICE;
 
-    static {
-        MethodHandle[] bound = bind();
-        AVAILABLE = bound != null;
-        ENTRY = bound == null ? null : bound[0];
-        SLICE = bound == null ? null : bound[1];
+    /**
+     * The library, bound on first use only: binding takes about 0.2 s (reflection, the linker, the
+     * library's copy), which a run too small for hints must not pay at start-up.
+     */
+    private static final class Native {
+        /** Whether the library is loaded and bound (the hints are possible at all). */
+        static final boolean AVAILABLE;
+        /** (double[] rec, int[] ir, int[] heads, int disc, int stride, int cols, int cells, int n) void. */
+        static final MethodHandle ENTRY;
+        /** (double[] rec, int[] ir, int[] heads, int[] heap, int count, int stride, int cols, int cells, int n) void. */
+        static final MethodHandle SLICE;
+
+        static {
+            MethodHandle[] bound = bind();
+            AVAILABLE = bound != null;
+            ENTRY = bound == null ? null : bound[0];
+            SLICE = bound == null ? null : bound[1];
+        }
     }
 
     private final double[] rec;
@@ -66,13 +73,18 @@ final class Prefetch {
 
     /** Hints for {@code table}'s calendars, or null where there are none (see the class comment). */
     static Prefetch forTable(DiscTable table, boolean wanted) {
-        return wanted && AVAILABLE && table.n >= MIN_DISCS ? new Prefetch(table) : null;
+        return wanted && table.n >= MIN_DISCS && available() ? new Prefetch(table) : null;
+    }
+
+    /** Whether the library is loaded and bound here (binds it on the first call). */
+    static boolean available() {
+        return Native.AVAILABLE;
     }
 
     /** Disc i has moved from its bucket to the heap: its partner's records and its cell rows' heads. */
     void entering(int i) {
         try {
-            ENTRY.invokeExact(rec, ir, heads, i, stride, cols, heads.length, n);
+            Native.ENTRY.invokeExact(rec, ir, heads, i, stride, cols, heads.length, n);
         } catch (Throwable t) {
             throw new IllegalStateException(t);
         }
@@ -81,7 +93,7 @@ final class Prefetch {
     /** A slice is in the heap, its entries {@code heap[0..count)}: the first disc of each of their nine cells. */
     void sliceReady(int[] heap, int count) {
         try {
-            SLICE.invokeExact(rec, ir, heads, heap, count, stride, cols, heads.length, n);
+            Native.SLICE.invokeExact(rec, ir, heads, heap, count, stride, cols, heads.length, n);
         } catch (Throwable t) {
             throw new IllegalStateException(t);
         }

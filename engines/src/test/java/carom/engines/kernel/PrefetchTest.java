@@ -28,12 +28,12 @@ class PrefetchTest {
     @Test
     void theHelperTheBuildMadeIsBound() {
         assumeTrue(built(), "no prefetch helper in this build (no C compiler, or not Linux)");
-        assertThat(Prefetch.AVAILABLE).isTrue();
+        assertThat(Prefetch.available()).isTrue();
     }
 
     @Test
     void onlyLargeTablesThatWantThemGetHints() {
-        assumeTrue(Prefetch.AVAILABLE);
+        assumeTrue(Prefetch.available());
         Scene large = StandardScenes.thesis(Prefetch.MIN_DISCS, 3);
         Scene small = StandardScenes.thesis(Prefetch.MIN_DISCS / 2, 3);
         DiscTable big = new DiscTable(large, large.newDiscs(), 2);
@@ -44,7 +44,7 @@ class PrefetchTest {
 
     @Test
     void nonsenseIndicesAreIgnored() {
-        assumeTrue(Prefetch.AVAILABLE);
+        assumeTrue(Prefetch.available());
         Scene scene = StandardScenes.thesis(Prefetch.MIN_DISCS, 5);
         DiscTable table = new DiscTable(scene, scene.newDiscs(), 2);
         Prefetch hints = Prefetch.forTable(table, true);
@@ -64,7 +64,7 @@ class PrefetchTest {
     @ParameterizedTest(name = "{0} on {1} threads, seed {2}")
     @CsvSource({"fast, 1, 11", "fast, 1, 12", "slabs, 2, 13"})
     void hintsChangeNoBit(String engine, int threads, long seed) {
-        assumeTrue(Prefetch.AVAILABLE);
+        assumeTrue(Prefetch.available());
         Scene scene = StandardScenes.thesis(40_000, seed);
         RunResult with = run(engine, scene, threads, "true");
         RunResult without = run(engine, scene, threads, "false");
