@@ -10,6 +10,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -17,8 +18,8 @@ import org.junit.jupiter.api.io.TempDir;
  * The cluster engine's samples and checkpoints through the command line, with 2 JVMs: a trajectory and
  * observables that are those of {@code slabs} to rounding; and a coordinator stopped by SIGTERM (it
  * saves, stops its worker and exits with 143) or killed by SIGKILL (its worker notices, prints one
- * {@code error:} line and exits by itself), whose last checkpoint resumes to the bytes of the run that
- * never stopped. Nothing asserts on time; the waits have only hang guards. No JVM may be left behind,
+ * {@code error:} line and exits by itself; in the fault suite, {@code -Pfaults}), whose last checkpoint
+ * resumes to the bytes of the run that never stopped. Nothing asserts on time; the waits have only hang guards. No JVM may be left behind,
  * passed or failed: the workers of a child coordinator are not this JVM's descendants once it is gone,
  * so they are noted while it runs and destroyed in the end if still there.
  */
@@ -110,58 +111,66 @@ class ClusterCheckpointCommandsTest {
     }
 
     @Test
-    void aCoordinatorStoppedBySigtermOrKilledBySigkillLeavesNoWorkerAndItsLastCheckpointResumesToTheSameBytes()
-            throws Exception {
+    void aCoordinatorStoppedBySigtermStopsItsWorkerAndItsLastCheckpointResumesToTheSameBytes() throws Exception {
+        stopTheCoordinatorMidRunAndResume("TERM");
+    }
+
+    /** In the fault suite ({@code -Pfaults}): the worker's wait to notice its coordinator gone costs seconds. */
+    @Test
+    @Tag("faults")
+    void aCoordinatorKilledBySigkillLeavesNoWorkerAndItsLastCheckpointResumesToTheSameBytes() throws Exception {
+        stopTheCoordinatorMidRunAndResume("KILL");
+    }
+
+    private void stopTheCoordinatorMidRunAndResume(String signal) throws Exception {
         String until = "0.6";
         ok("simulate", example("gas.json"), "--until", until, "--engine", "cluster", "--nodes", "2",
                 "--out", path("straight.csv"), "--summary", path("straight.json"));
-        for (String signal : List.of("TERM", "KILL")) {
-            Path ckpt = dir.resolve(signal + ".ckpt");
-            Path output = dir.resolve(signal + ".txt");
-            List<String> cmd = List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                    "-cp", System.getProperty("java.class.path"), Main.class.getName(), "simulate", example("gas.json"),
-                    "--until", until, "--engine", "cluster", "--nodes", "2", "--checkpoint", ckpt.toString(),
-                    "--checkpoint-every", "0.05", "--out", path(signal + "-never.csv"));
-            Process child = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(output.toFile()).start();
-            started.add(child.toHandle());
-            List<ProcessHandle> workers;
-            try {
-                // The first periodic checkpoint says the run is under way, its worker joined.
-                for (int waited = 0; !Files.exists(ckpt) && child.isAlive() && waited < 30_000; waited++) {
-                    Thread.sleep(10);
-                }
-                assertThat(Files.exists(ckpt)).as("a first checkpoint\n" + Files.readString(output)).isTrue();
-                workers = child.descendants().toList();
-                started.addAll(workers);
-                assertThat(workers).as("the worker JVM").hasSize(1);
-                Process kill = new ProcessBuilder("sh", "-c", "kill -" + signal + " " + child.pid()).start();
-                assertThat(kill.waitFor(30, TimeUnit.SECONDS)).isTrue();
-                assertThat(child.waitFor(2, TimeUnit.MINUTES)).as("the coordinator stopped").isTrue();
-                // Its worker goes too: stopped by the coordinator, or by itself once the coordinator is gone.
-                for (int waited = 0; workers.stream().anyMatch(ClusterCheckpointCommandsTest::running) && waited < 6000; waited++) {
-                    Thread.sleep(10);
-                }
-                assertThat(workers.stream().filter(ClusterCheckpointCommandsTest::running).toList()).as("workers left").isEmpty();
-            } finally {
-                child.destroyForcibly();
+        Path ckpt = dir.resolve(signal + ".ckpt");
+        Path output = dir.resolve(signal + ".txt");
+        List<String> cmd = List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-cp", System.getProperty("java.class.path"), Main.class.getName(), "simulate", example("gas.json"),
+                "--until", until, "--engine", "cluster", "--nodes", "2", "--checkpoint", ckpt.toString(),
+                "--checkpoint-every", "0.05", "--out", path(signal + "-never.csv"));
+        Process child = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(output.toFile()).start();
+        started.add(child.toHandle());
+        List<ProcessHandle> workers;
+        try {
+            // The first periodic checkpoint says the run is under way, its worker joined.
+            for (int waited = 0; !Files.exists(ckpt) && child.isAlive() && waited < 30_000; waited++) {
+                Thread.sleep(10);
             }
-            String said = Files.readString(output);
-            List<String> errors = said.lines().filter(l -> l.startsWith("error: ")).toList();
-            if (signal.equals("TERM")) {
-                assertThat(child.exitValue()).as(said).isEqualTo(143);
-                assertThat(said).contains("stopped at t = ");
-                assertThat(errors).as(said).isEmpty();
-            } else {
-                assertThat(child.exitValue()).as(said).isEqualTo(137);
-                assertThat(errors).as(said).hasSize(1);
-                assertThat(errors.getFirst()).contains("cluster worker").contains("coordinator").contains("is gone");
+            assertThat(Files.exists(ckpt)).as("a first checkpoint\n" + Files.readString(output)).isTrue();
+            workers = child.descendants().toList();
+            started.addAll(workers);
+            assertThat(workers).as("the worker JVM").hasSize(1);
+            Process kill = new ProcessBuilder("sh", "-c", "kill -" + signal + " " + child.pid()).start();
+            assertThat(kill.waitFor(30, TimeUnit.SECONDS)).isTrue();
+            assertThat(child.waitFor(2, TimeUnit.MINUTES)).as("the coordinator stopped").isTrue();
+            // Its worker goes too: stopped by the coordinator, or by itself once the coordinator is gone.
+            for (int waited = 0; workers.stream().anyMatch(ClusterCheckpointCommandsTest::running) && waited < 6000; waited++) {
+                Thread.sleep(10);
             }
-            assertThat(dir.resolve(signal + "-never.csv")).doesNotExist();
-            ok("resume", ckpt.toString(), "--out", path(signal + "-resumed.csv"), "--summary", path(signal + "-resumed.json"));
-            assertThat(Files.readString(dir.resolve(signal + "-resumed.csv"))).as("resumed after " + signal)
-                    .isEqualTo(Files.readString(dir.resolve("straight.csv")));
-            assertThat(counts(signal + "-resumed.json")).isNotEmpty().isEqualTo(counts("straight.json"));
+            assertThat(workers.stream().filter(ClusterCheckpointCommandsTest::running).toList()).as("workers left").isEmpty();
+        } finally {
+            child.destroyForcibly();
         }
+        String said = Files.readString(output);
+        List<String> errors = said.lines().filter(l -> l.startsWith("error: ")).toList();
+        if (signal.equals("TERM")) {
+            assertThat(child.exitValue()).as(said).isEqualTo(143);
+            assertThat(said).contains("stopped at t = ");
+            assertThat(errors).as(said).isEmpty();
+        } else {
+            assertThat(child.exitValue()).as(said).isEqualTo(137);
+            assertThat(errors).as(said).hasSize(1);
+            assertThat(errors.getFirst()).contains("cluster worker").contains("coordinator").contains("is gone");
+        }
+        assertThat(dir.resolve(signal + "-never.csv")).doesNotExist();
+        ok("resume", ckpt.toString(), "--out", path(signal + "-resumed.csv"), "--summary", path(signal + "-resumed.json"));
+        assertThat(Files.readString(dir.resolve(signal + "-resumed.csv"))).as("resumed after " + signal)
+                .isEqualTo(Files.readString(dir.resolve("straight.csv")));
+        assertThat(counts(signal + "-resumed.json")).isNotEmpty().isEqualTo(counts("straight.json"));
     }
 
     /** The summary's collision counts and the like, without wall times. */

@@ -68,7 +68,7 @@ class SimulateFuzzTest {
 
     // The scene format's words, so that mutation builds keys and values the reader knows.
     @DictionaryFile(resourcePath = FuzzInputs.DICTIONARY)
-    @FuzzTest(maxDuration = "20s")
+    @FuzzTest(maxDuration = "5s")
     void simulateEndsWithAResultOrOneErrorLine(byte[] bytes) throws Throwable {
         Files.write(scene, bytes);
         boolean readable;

@@ -61,7 +61,7 @@ class SceneReaderFuzzTest {
 
     // The scene format's words, so that mutation builds keys and values the reader knows.
     @DictionaryFile(resourcePath = FuzzInputs.DICTIONARY)
-    @FuzzTest(maxDuration = "20s")
+    @FuzzTest(maxDuration = "5s")
     void readsASceneOrRejectsItAsBadInput(byte[] bytes) throws Throwable {
         Files.write(file, bytes);
         String fromFile = answerWithinDeadline(HANG_SECONDS, () -> verdict(() -> SceneReader.read(file)));
