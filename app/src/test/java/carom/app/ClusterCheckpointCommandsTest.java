@@ -3,6 +3,7 @@ package carom.app;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
+import carom.app.checkpoint.CheckpointFile;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -19,7 +20,7 @@ import org.junit.jupiter.api.io.TempDir;
  * observables that are those of {@code slabs} to rounding; and a coordinator stopped by SIGTERM (it
  * saves, stops its worker and exits with 143) or killed by SIGKILL (its worker notices, prints one
  * {@code error:} line and exits by itself; in the fault suite, {@code -Pfaults}), whose last checkpoint
- * resumes to the bytes of the run that never stopped. Nothing asserts on time; the waits have only hang guards. No JVM may be left behind,
+ * resumes to the bytes of a run that never stopped (both to just past the checkpoint's time). Nothing asserts on time; the waits have only hang guards. No JVM may be left behind,
  * passed or failed: the workers of a child coordinator are not this JVM's descendants once it is gone,
  * so they are noted while it runs and destroyed in the end if still there.
  */
@@ -122,15 +123,17 @@ class ClusterCheckpointCommandsTest {
         stopTheCoordinatorMidRunAndResume("KILL");
     }
 
+    /**
+     * The coordinator's run is far too long to end before the signal (t = 1000), so the signal lands
+     * mid-run however loaded the machine. Its last checkpoint, resumed to just past its time, is then
+     * compared with a straight run to that time.
+     */
     private void stopTheCoordinatorMidRunAndResume(String signal) throws Exception {
-        String until = "0.6";
-        ok("simulate", example("gas.json"), "--until", until, "--engine", "cluster", "--nodes", "2",
-                "--out", path("straight.csv"), "--summary", path("straight.json"));
         Path ckpt = dir.resolve(signal + ".ckpt");
         Path output = dir.resolve(signal + ".txt");
         List<String> cmd = List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-cp", System.getProperty("java.class.path"), Main.class.getName(), "simulate", example("gas.json"),
-                "--until", until, "--engine", "cluster", "--nodes", "2", "--checkpoint", ckpt.toString(),
+                "--until", "1000", "--engine", "cluster", "--nodes", "2", "--checkpoint", ckpt.toString(),
                 "--checkpoint-every", "0.05", "--out", path(signal + "-never.csv"));
         Process child = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(output.toFile()).start();
         started.add(child.toHandle());
@@ -167,7 +170,12 @@ class ClusterCheckpointCommandsTest {
             assertThat(errors.getFirst()).contains("cluster worker").contains("coordinator").contains("is gone");
         }
         assertThat(dir.resolve(signal + "-never.csv")).doesNotExist();
-        ok("resume", ckpt.toString(), "--out", path(signal + "-resumed.csv"), "--summary", path(signal + "-resumed.json"));
+        // Quarters of a time unit: a few seconds of the cluster's run past the checkpoint.
+        String until = String.valueOf((Math.floor(CheckpointFile.read(ckpt).time() * 4) + 1) / 4);
+        ok("resume", ckpt.toString(), "--until", until, "--out", path(signal + "-resumed.csv"),
+                "--summary", path(signal + "-resumed.json"));
+        ok("simulate", example("gas.json"), "--until", until, "--engine", "cluster", "--nodes", "2",
+                "--out", path("straight.csv"), "--summary", path("straight.json"));
         assertThat(Files.readString(dir.resolve(signal + "-resumed.csv"))).as("resumed after " + signal)
                 .isEqualTo(Files.readString(dir.resolve("straight.csv")));
         assertThat(counts(signal + "-resumed.json")).isNotEmpty().isEqualTo(counts("straight.json"));
