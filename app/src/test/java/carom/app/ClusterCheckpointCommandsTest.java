@@ -20,9 +20,10 @@ import org.junit.jupiter.api.io.TempDir;
  * observables that are those of {@code slabs} to rounding; and a coordinator stopped by SIGTERM (it
  * saves, stops its worker and exits with 143) or killed by SIGKILL (its worker notices, prints one
  * {@code error:} line and exits by itself; in the fault suite, {@code -Pfaults}), whose last checkpoint
- * resumes to the bytes of a run that never stopped (both to just past the checkpoint's time). Nothing asserts on time; the waits have only hang guards. No JVM may be left behind,
- * passed or failed: the workers of a child coordinator are not this JVM's descendants once it is gone,
- * so they are noted while it runs and destroyed in the end if still there.
+ * resumes to the bytes of a run that never stopped (both to just past the checkpoint's time). Nothing
+ * asserts on time; the waits have only hang guards. No JVM may be left behind, passed or failed: the
+ * workers of a child coordinator are not this JVM's descendants once it is gone, so they are noted
+ * while it runs and destroyed in the end if still there.
  */
 class ClusterCheckpointCommandsTest {
     @TempDir
