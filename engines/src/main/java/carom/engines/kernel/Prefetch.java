@@ -158,7 +158,6 @@ final class Prefetch {
         Array.set(options, 0, critical);
         Object address = valueC.getField("ADDRESS").get(null);
         Object int32 = valueC.getField("JAVA_INT").get(null);
-        Object int64 = valueC.getField("JAVA_LONG").get(null);
         Method find = lookupC.getMethod("find", String.class);
         Method ofVoid = descC.getMethod("ofVoid", layoutC.arrayType());
         Method downcall = linkerC.getMethod("downcallHandle", segmentC, descC, optionC.arrayType());
