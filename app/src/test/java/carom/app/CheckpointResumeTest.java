@@ -7,7 +7,6 @@ import java.io.IOException;
 import java.nio.ByteBuffer;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
@@ -106,10 +105,8 @@ class CheckpointResumeTest {
     void aSignalMidRunWritesACheckpointThatResumesToTheSameBytes() throws IOException, InterruptedException {
         for (String signal : List.of("INT", "TERM")) {
             Path ckpt = dir.resolve(signal + ".ckpt");
-            List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                    "-cp", System.getProperty("java.class.path"), Main.class.getName(), "simulate", example("gas.json"),
-                    "--until", "1e6", "--checkpoint", ckpt.toString(), "--checkpoint-every", "0.5",
-                    "--out", dir.resolve(signal + "-never.csv").toString()));
+            List<String> cmd = Cli.inChildJvm(List.of(), "simulate", example("gas.json"), "--until", "1e6",
+                    "--checkpoint", ckpt.toString(), "--checkpoint-every", "0.5", "--out", dir.resolve(signal + "-never.csv").toString());
             Process child = new ProcessBuilder(cmd).redirectErrorStream(true)
                     .redirectOutput(dir.resolve(signal + ".txt").toFile()).start();
             try {
@@ -118,9 +115,7 @@ class CheckpointResumeTest {
                     Thread.sleep(10);
                 }
                 assertThat(Files.exists(ckpt)).as("a first checkpoint").isTrue();
-                // The shell's own kill: a kill binary is not on every machine.
-                Process kill = new ProcessBuilder("sh", "-c", "kill -" + signal + " " + child.pid()).start();
-                assertThat(kill.waitFor(30, TimeUnit.SECONDS)).isTrue();
+                Cli.signal(child, signal);
                 assertThat(child.waitFor(2, TimeUnit.MINUTES)).as("the child stopped").isTrue();
             } finally {
                 child.destroyForcibly();

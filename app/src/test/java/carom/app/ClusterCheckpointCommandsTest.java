@@ -132,10 +132,8 @@ class ClusterCheckpointCommandsTest {
     private void stopTheCoordinatorMidRunAndResume(String signal) throws Exception {
         Path ckpt = dir.resolve(signal + ".ckpt");
         Path output = dir.resolve(signal + ".txt");
-        List<String> cmd = List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", System.getProperty("java.class.path"), Main.class.getName(), "simulate", example("gas.json"),
-                "--until", "1000", "--engine", "cluster", "--nodes", "2", "--checkpoint", ckpt.toString(),
-                "--checkpoint-every", "0.05", "--out", path(signal + "-never.csv"));
+        List<String> cmd = Cli.inChildJvm(List.of(), "simulate", example("gas.json"), "--until", "1000", "--engine", "cluster",
+                "--nodes", "2", "--checkpoint", ckpt.toString(), "--checkpoint-every", "0.05", "--out", path(signal + "-never.csv"));
         Process child = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(output.toFile()).start();
         started.add(child.toHandle());
         List<ProcessHandle> workers;
@@ -148,8 +146,7 @@ class ClusterCheckpointCommandsTest {
             workers = child.descendants().toList();
             started.addAll(workers);
             assertThat(workers).as("the worker JVM").hasSize(1);
-            Process kill = new ProcessBuilder("sh", "-c", "kill -" + signal + " " + child.pid()).start();
-            assertThat(kill.waitFor(30, TimeUnit.SECONDS)).isTrue();
+            Cli.signal(child, signal);
             assertThat(child.waitFor(2, TimeUnit.MINUTES)).as("the coordinator stopped").isTrue();
             // Its worker goes too: stopped by the coordinator, or by itself once the coordinator is gone.
             for (int waited = 0; workers.stream().anyMatch(ClusterCheckpointCommandsTest::running) && waited < 6000; waited++) {

@@ -346,9 +346,7 @@ class FaultsTest {
         if (fileBlocks != null) {
             command.addAll(List.of("sh", "-c", "ulimit -f " + fileBlocks + " && exec \"$@\"", "sh"));
         }
-        command.addAll(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-XX:-UsePerfData", "-Xmx2g", "-cp", System.getProperty("java.class.path"), Main.class.getName()));
-        command.addAll(args);
+        command.addAll(Cli.inChildJvm(List.of("-XX:-UsePerfData", "-Xmx2g"), args.toArray(String[]::new)));
         Process p = new ProcessBuilder(command).redirectOutput(logs.resolve("out.txt").toFile())
                 .redirectError(logs.resolve("err.txt").toFile()).start();
         children.add(p);

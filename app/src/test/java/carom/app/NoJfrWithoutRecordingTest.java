@@ -44,10 +44,9 @@ class NoJfrWithoutRecordingTest {
 
     private List<String> run(String engine, Path scene, boolean jfr) throws IOException, InterruptedException {
         Path log = dir.resolve("classes-" + engine + "-" + jfr + ".log");
-        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Xlog:class+load=info:file=" + log, "-cp", System.getProperty("java.class.path"),
-                Main.class.getName(), "simulate", scene.toString(), "--engine", engine, "--threads", "2",
-                "--until", "0.0001", "--out", dir.resolve("f-" + engine + jfr + ".csv").toString()));
+        List<String> cmd = new ArrayList<>(Cli.inChildJvm(List.of("-Xlog:class+load=info:file=" + log), "simulate",
+                scene.toString(), "--engine", engine, "--threads", "2", "--until", "0.0001",
+                "--out", dir.resolve("f-" + engine + jfr + ".csv").toString()));
         if (jfr) {
             cmd.add("--jfr");
             cmd.add(dir.resolve(engine + ".jfr").toString());
