@@ -65,6 +65,12 @@ public final class ListPredictor {
     private final double skin;
     /** Half the skin: how far a disc moves from its list centre before its list is made again. */
     private final double reach;
+    /**
+     * On a periodic axis, a disc whose list centre is at least this far from both ends has every
+     * neighbour's centre within the box on its own side, so raw separations need no image (more than
+     * the largest contact distance plus the skin; +Infinity without periodic axes, where none is needed).
+     */
+    private final double edgeMargin;
     /** Each disc's list centre (x, y). */
     private final double[] centre;
     /** Each disc's neighbours, {@link #slots} per disc, the first {@link #length}[i] in use. */
@@ -108,6 +114,7 @@ public final class ListPredictor {
         this.walls = t.walls;
         this.skin = skin;
         this.reach = 0.5 * skin;
+        this.edgeMargin = 1.01 * (largestDiameter + skin) + skin;
         int n = t.n;
         this.centre = new double[2 * n];
         this.length = new int[n];
@@ -309,6 +316,11 @@ public final class ListPredictor {
         // bounds the early rejection too.
         double expiry = timeToLeave(xi - centre[2 * i], yi - centre[2 * i + 1], vxi, vyi, reach);
         double limit = Math.min(best, expiry);
+        // Away from the box's ends no neighbour lies across one: the loop then skips the image fix.
+        double cx = centre[2 * i];
+        double cy = centre[2 * i + 1];
+        boolean images = periodic && (cx < edgeMargin || cx > width - edgeMargin || cy < edgeMargin
+                || cy > height - edgeMargin);
         boolean shared = st == R;
         double sigmaShared = ri + sharedRadius;
         int base = i * slots;
@@ -324,8 +336,10 @@ public final class ListPredictor {
             // the skin of the box, so a raw separation is within a box length and a half of the true one.
             double dx = r[jt + X] + vxj * dt - xi;
             double dy = r[jt + Y] + vyj * dt - yi;
-            dx = dx > halfWidth ? dx - width : (dx < -halfWidth ? dx + width : dx);
-            dy = dy > halfHeight ? dy - height : (dy < -halfHeight ? dy + height : dy);
+            if (images) {
+                dx = dx > halfWidth ? dx - width : (dx < -halfWidth ? dx + width : dx);
+                dy = dy > halfHeight ? dy - height : (dy < -halfHeight ? dy + height : dy);
+            }
             double t = PairLaw.timeToContactBefore(dx, dy, vxj - vxi, vyj - vyi, shared ? sigmaShared : ri + r[jt + R], limit);
             if (t < limit) {
                 best = t;
@@ -363,8 +377,13 @@ public final class ListPredictor {
 
     /** Test view: disc i's neighbours, sorted. */
     int[] neighboursOf(int i) {
-        int[] out = Arrays.copyOfRange(list, i * slots, i * slots + length[i]);
+        int[] out = neighboursInOrder(i);
         Arrays.sort(out);
         return out;
+    }
+
+    /** Test view: disc i's neighbours in the order its scan takes them. */
+    int[] neighboursInOrder(int i) {
+        return Arrays.copyOfRange(list, i * slots, i * slots + length[i]);
     }
 }

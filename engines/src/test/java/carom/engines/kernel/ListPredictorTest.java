@@ -65,6 +65,69 @@ class ListPredictorTest {
         }
     }
 
+    /**
+     * A scan skips the nearest-image fix for a disc whose list centre is far from the box's ends: that
+     * must change nothing. After lists made again at random, every disc's prediction (time, partner,
+     * kind) equals a scan of its list with the nearest image always taken; discs near the ends and far
+     * from them both occur.
+     */
+    @ParameterizedTest(name = "N {0}, phi {1}, seed {2}")
+    @CsvSource({"400, 0.72, 5", "300, 0.65, 6", "900, 0.70, 7"})
+    void predictionsAwayFromTheEndsAreThoseWithEveryImageTaken(int n, double phi, long seed) {
+        Scene scene = RandomScenes.dense(n, phi, true, seed, 1);
+        double skin = 0.5;
+        DiscTable table = new DiscTable(scene, scene.newDiscs(), 1 + skin);
+        ListPredictor lists = new ListPredictor(new DiscMotion(table), skin, 1.0);
+        SplittableRandom random = new SplittableRandom(seed);
+        double now = 0;
+        for (int step = 0; step < 1000; step++) {
+            now += 5e-4;
+            lists.expireAndPredict(random.nextInt(table.n), now);
+        }
+        int nearAnEnd = 0;
+        for (int i = 0; i < table.n; i++) {
+            double t = lists.predictFull(i, now);
+            double[] expected = scanWithEveryImage(table, lists, i, now, skin);
+            assertThat(t).as("time of disc %d", i).isEqualTo(expected[0]);
+            assertThat(table.partner(i)).as("partner of disc %d", i).isEqualTo((int) expected[1]);
+            double margin = 2 * (1.0 + skin);
+            double cx = lists.centre(i, 0);
+            double cy = lists.centre(i, 1);
+            if (cx < margin || cy < margin || cx > table.width - margin || cy > table.height - margin) {
+                nearAnEnd++;
+            }
+        }
+        assertThat(nearAnEnd).as("discs near the ends").isBetween(1, table.n - 1);
+    }
+
+    /** {time, partner} of disc i at {@code now}: its walls-free list scan, every separation by nearest image. */
+    private static double[] scanWithEveryImage(DiscTable table, ListPredictor lists, int i, double now, double skin) {
+        double[] r = table.rec;
+        int st = table.stride;
+        int at = i * st;
+        double xi = r[at + DiscTable.X] + r[at + DiscTable.VX] * (now - r[at + DiscTable.T]);
+        double yi = r[at + DiscTable.Y] + r[at + DiscTable.VY] * (now - r[at + DiscTable.T]);
+        double expiry = ListPredictor.timeToLeave(xi - lists.centre(i, 0), yi - lists.centre(i, 1),
+                r[at + DiscTable.VX], r[at + DiscTable.VY], 0.5 * skin);
+        double best = Double.POSITIVE_INFINITY;
+        double limit = expiry;
+        int partner = DiscTable.NONE;
+        for (int j : lists.neighboursInOrder(i)) {
+            int jt = j * st;
+            double dt = now - r[jt + DiscTable.T];
+            double dx = table.boundary.separationX(r[jt + DiscTable.X] + r[jt + DiscTable.VX] * dt - xi);
+            double dy = table.boundary.separationY(r[jt + DiscTable.Y] + r[jt + DiscTable.VY] * dt - yi);
+            double t = carom.core.physics.PairLaw.timeToContactBefore(dx, dy, r[jt + DiscTable.VX] - r[at + DiscTable.VX],
+                    r[jt + DiscTable.VY] - r[at + DiscTable.VY], table.radius(i) + table.radius(j), limit);
+            if (t < limit) {
+                best = t;
+                limit = t;
+                partner = j;
+            }
+        }
+        return expiry < best ? new double[] {now + expiry, partner} : new double[] {now + best, partner};
+    }
+
     @ParameterizedTest(name = "offset {0}")
     @ValueSource(doubles = {0, 0.1, -0.2, 0.24})
     void aDiscLeavesItsReachWhenItsDistanceFromTheCentreIsHalfTheSkin(double offset) {
