@@ -67,8 +67,8 @@ public final class ListPredictor {
     private final double reach;
     /**
      * On a periodic axis, a disc whose list centre is at least this far from both ends has every
-     * neighbour's centre within the box on its own side, so raw separations need no image (more than
-     * the largest contact distance plus the skin; +Infinity without periodic axes, where none is needed).
+     * neighbour's centre within the box on its own side, so raw separations need no image: more than
+     * the largest contact distance plus the skin, which bounds the distance between two list centres.
      */
     private final double edgeMargin;
     /** Each disc's list centre (x, y). */

@@ -90,6 +90,7 @@ class ListPredictorTest {
             double[] expected = scanWithEveryImage(table, lists, i, now, skin);
             assertThat(t).as("time of disc %d", i).isEqualTo(expected[0]);
             assertThat(table.partner(i)).as("partner of disc %d", i).isEqualTo((int) expected[1]);
+            assertThat(table.kind(i)).as("kind of disc %d's event", i).isEqualTo((byte) expected[2]);
             double margin = 2 * (1.0 + skin);
             double cx = lists.centre(i, 0);
             double cy = lists.centre(i, 1);
@@ -100,7 +101,7 @@ class ListPredictorTest {
         assertThat(nearAnEnd).as("discs near the ends").isBetween(1, table.n - 1);
     }
 
-    /** {time, partner} of disc i at {@code now}: its walls-free list scan, every separation by nearest image. */
+    /** {time, partner, kind} of disc i at {@code now}: its walls-free list scan, every separation by nearest image. */
     private static double[] scanWithEveryImage(DiscTable table, ListPredictor lists, int i, double now, double skin) {
         double[] r = table.rec;
         int st = table.stride;
@@ -125,7 +126,8 @@ class ListPredictorTest {
                 partner = j;
             }
         }
-        return expiry < best ? new double[] {now + expiry, partner} : new double[] {now + best, partner};
+        return expiry < best ? new double[] {now + expiry, partner, DiscTable.EXPIRE}
+                : new double[] {now + best, partner, DiscTable.HIT};
     }
 
     @ParameterizedTest(name = "offset {0}")
