@@ -6,7 +6,13 @@ import static org.assertj.core.api.Assertions.within;
 
 import carom.core.BadInputException;
 import carom.core.physics.Boundary;
+import carom.core.scene.BoundaryKind;
+import carom.core.scene.GenerateBlock;
+import carom.core.scene.Layout;
 import carom.core.scene.Scene;
+import carom.core.scene.SceneBuilder;
+import carom.core.scene.Species;
+import carom.core.scene.VelocityDistribution;
 import carom.core.state.Discs;
 import carom.engines.reference.RandomScenes;
 import java.util.SplittableRandom;
@@ -69,15 +75,16 @@ class ListPredictorTest {
      * A scan skips the nearest-image fix for a disc whose list centre is far from the box's ends: that
      * must change nothing. After lists made again at random, every disc's prediction (time, partner,
      * kind) equals a scan of its list with the nearest image always taken; discs near the ends and far
-     * from them both occur.
+     * from them both occur. Equal discs, and a 50:50 mixture of diameters 1 and 1.4, where the margin
+     * must follow the larger.
      */
-    @ParameterizedTest(name = "N {0}, phi {1}, seed {2}")
-    @CsvSource({"400, 0.72, 5", "300, 0.65, 6", "900, 0.70, 7"})
-    void predictionsAwayFromTheEndsAreThoseWithEveryImageTaken(int n, double phi, long seed) {
-        Scene scene = RandomScenes.dense(n, phi, true, seed, 1);
-        double skin = 0.5;
-        DiscTable table = new DiscTable(scene, scene.newDiscs(), 1 + skin);
-        ListPredictor lists = new ListPredictor(new DiscMotion(table), skin, 1.0);
+    @ParameterizedTest(name = "N {0}, phi {1}, seed {2}, largest diameter {3}")
+    @CsvSource({"400, 0.72, 5, 1", "300, 0.65, 6, 1", "900, 0.70, 7, 1", "400, 0.5, 8, 1.4"})
+    void predictionsAwayFromTheEndsAreThoseWithEveryImageTaken(int n, double phi, long seed, double largest) {
+        Scene scene = largest == 1 ? RandomScenes.dense(n, phi, true, seed, 1) : mixture(n, phi, largest, seed);
+        double skin = 0.5 * largest;
+        DiscTable table = new DiscTable(scene, scene.newDiscs(), 1.5);
+        ListPredictor lists = new ListPredictor(new DiscMotion(table), skin, largest);
         SplittableRandom random = new SplittableRandom(seed);
         double now = 0;
         for (int step = 0; step < 1000; step++) {
@@ -91,7 +98,7 @@ class ListPredictorTest {
             assertThat(t).as("time of disc %d", i).isEqualTo(expected[0]);
             assertThat(table.partner(i)).as("partner of disc %d", i).isEqualTo((int) expected[1]);
             assertThat(table.kind(i)).as("kind of disc %d's event", i).isEqualTo((byte) expected[2]);
-            double margin = 2 * (1.0 + skin);
+            double margin = 2 * (largest + skin);
             double cx = lists.centre(i, 0);
             double cy = lists.centre(i, 1);
             if (cx < margin || cy < margin || cx > table.width - margin || cy > table.height - margin) {
@@ -99,6 +106,19 @@ class ListPredictorTest {
             }
         }
         assertThat(nearAnEnd).as("discs near the ends").isBetween(1, table.n - 1);
+    }
+
+    /** n discs, half of diameter 1 and half of {@code largest}, on a lattice in a periodic square box. */
+    private static Scene mixture(int n, double phi, double largest, long seed) {
+        double meanArea = Math.PI * 0.25 * (1 + largest * largest) / 2;
+        double side = Math.sqrt(n * meanArea / phi);
+        return SceneBuilder.create("mixture-" + seed)
+                .box(side, side, BoundaryKind.PERIODIC)
+                .species(Species.mobile("small", 0.5, 1))
+                .species(Species.mobile("large", 0.5 * largest, 1.96))
+                .generate(new GenerateBlock(Layout.LATTICE, new int[] {0, 1},
+                        new double[] {0.5, 0.5}, n, 0.5, new VelocityDistribution.Maxwell(1), seed))
+                .until(1).build();
     }
 
     /** {time, partner, kind} of disc i at {@code now}: its walls-free list scan, every separation by nearest image. */
