@@ -312,13 +312,13 @@ public final class ListPredictor {
                 }
             }
         }
-        // The expiry first: a contact after it is not needed now (the disc predicts again then), so it
-        // bounds the early rejection too.
-        double expiry = timeToLeave(xi - centre[2 * i], yi - centre[2 * i + 1], vxi, vyi, reach);
-        double limit = Math.min(best, expiry);
-        // Away from the box's ends no neighbour lies across one: the loop then skips the image fix.
         double cx = centre[2 * i];
         double cy = centre[2 * i + 1];
+        // The expiry first: a contact after it is not needed now (the disc predicts again then), so it
+        // bounds the early rejection too.
+        double expiry = timeToLeave(xi - cx, yi - cy, vxi, vyi, reach);
+        double limit = Math.min(best, expiry);
+        // Away from the box's ends no neighbour lies across one: the loop then skips the image fix.
         boolean images = periodic && (cx < edgeMargin || cx > width - edgeMargin || cy < edgeMargin
                 || cy > height - edgeMargin);
         boolean shared = st == R;
