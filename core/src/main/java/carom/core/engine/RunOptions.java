@@ -7,10 +7,12 @@ import java.util.Map;
  * engine-specific tunables as text (for example {@code cellFactor=2}; each engine declares its own as
  * {@link Tunable}s), and optionally a {@link Sampler} told the state every {@code every} of simulated
  * time ({@code every} is NaN and {@code sampler} null without one), and optionally where to save
- * {@link Checkpoints} (null without).
+ * {@link Checkpoints} (null without), and optionally a {@link carom.core.observe.CollisionObserver} told
+ * every collision (null without: exact engines then pay one null test a collision).
  */
 public record RunOptions(double until, int threads, ProgressListener progress, Map<String, String> tunables,
-                         double every, Sampler sampler, Checkpoints checkpoints) {
+                         double every, Sampler sampler, Checkpoints checkpoints,
+                         carom.core.observe.CollisionObserver collisions) {
     public RunOptions {
         tunables = Map.copyOf(tunables);
         if (progress == null) {
@@ -24,7 +26,7 @@ public record RunOptions(double until, int threads, ProgressListener progress, M
     /** Options without checkpoints. */
     public RunOptions(double until, int threads, ProgressListener progress, Map<String, String> tunables,
                       double every, Sampler sampler) {
-        this(until, threads, progress, tunables, every, sampler, null);
+        this(until, threads, progress, tunables, every, sampler, null, null);
     }
 
     /** Options without samples. */
@@ -34,17 +36,22 @@ public record RunOptions(double until, int threads, ProgressListener progress, M
 
     /** These options with {@code sampler} told the state at every multiple of {@code interval} up to {@code until}. */
     public RunOptions withSamples(double interval, Sampler newSampler) {
-        return new RunOptions(until, threads, progress, tunables, interval, newSampler, checkpoints);
+        return new RunOptions(until, threads, progress, tunables, interval, newSampler, checkpoints, collisions);
     }
 
     /** These options saving checkpoints into {@code sink}. */
     public RunOptions withCheckpoints(Checkpoints sink) {
-        return new RunOptions(until, threads, progress, tunables, every, sampler, sink);
+        return new RunOptions(until, threads, progress, tunables, every, sampler, sink, collisions);
+    }
+
+    /** These options telling {@code observer} every collision (null: none). */
+    public RunOptions withCollisions(carom.core.observe.CollisionObserver observer) {
+        return new RunOptions(until, threads, progress, tunables, every, sampler, checkpoints, observer);
     }
 
     /** These options with another end time. */
     public RunOptions withUntil(double newUntil) {
-        return new RunOptions(newUntil, threads, progress, tunables, every, sampler, checkpoints);
+        return new RunOptions(newUntil, threads, progress, tunables, every, sampler, checkpoints, collisions);
     }
 
     /** Whether the run hands out samples. */
@@ -57,16 +64,16 @@ public record RunOptions(double until, int threads, ProgressListener progress, M
     }
 
     public RunOptions withThreads(int newThreads) {
-        return new RunOptions(until, newThreads, progress, tunables, every, sampler, checkpoints);
+        return new RunOptions(until, newThreads, progress, tunables, every, sampler, checkpoints, collisions);
     }
 
     public RunOptions withProgress(ProgressListener listener) {
-        return new RunOptions(until, threads, listener, tunables, every, sampler, checkpoints);
+        return new RunOptions(until, threads, listener, tunables, every, sampler, checkpoints, collisions);
     }
 
     public RunOptions withTunable(String key, String value) {
         Map<String, String> m = new java.util.HashMap<>(tunables);
         m.put(key, value);
-        return new RunOptions(until, threads, progress, m, every, sampler, checkpoints);
+        return new RunOptions(until, threads, progress, m, every, sampler, checkpoints, collisions);
     }
 }
