@@ -26,7 +26,8 @@ import java.util.function.ToDoubleFunction;
  */
 public enum Effect {
     GRAVITY("gravity", Range.FINITE, 0, "L/T²", "a uniform acceleration of every mobile disc; [0, -9.81] pulls down",
-            (e, v) -> e.withGravity(v[0], v[1]), component("gx", Effects::gravityX), component("gy", Effects::gravityY)),
+            (e, v) -> e.withGravity(v[0], v[1]),
+            component("gx", Effects::gravityX), component("gy", Effects::gravityY)),
     RESTITUTION("restitution", Range.UNIT_INTERVAL, 1, "none",
             "the coefficient of normal restitution of disc-disc collisions: 1 elastic, 0 perfectly inelastic",
             (e, v) -> e.withRestitution(v[0], e.wallRestitution()), component("e", Effects::restitution)),
@@ -124,9 +125,14 @@ public enum Effect {
         return Arrays.stream(components).map(Component::name).toList();
     }
 
-    /** The JSON path of component {@code k}: {@code effects.tc}, or {@code effects.gravity[1]} for a list. */
+    /** The JSON path of the value: {@code effects.tc}. */
+    public String path() {
+        return "effects." + key;
+    }
+
+    /** The JSON path of component {@code k}: the value's for a number, {@code effects.gravity[1]} in a list. */
     public String path(int k) {
-        return "effects." + key + (components.length == 1 ? "" : "[" + k + "]");
+        return components.length == 1 ? path() : path() + "[" + k + "]";
     }
 
     /** Component {@code k} of this effect's value in {@code effects}. */

@@ -397,7 +397,7 @@ public final class SceneReader {
         if (values.length == 1) {
             values[0] = number(value, effect.path(0));
         } else {
-            String path = "effects." + effect.key;
+            String path = effect.path();
             array(value, path);
             if (value.size() != values.length) {
                 throw new BadInputException(path + ": must have exactly " + values.length + " components ["

@@ -19,31 +19,35 @@ import org.junit.jupiter.params.provider.ValueSource;
 class GrowthLawTest {
     private static final Boundary.Walls WALLS = (Boundary.Walls) Boundary.of(new Box(10, 8, BoundaryKind.WALLS));
 
+    /** A pair's separation, relative velocity and contact distance at scale 1, drawn within {@code reach}. */
+    private record Pair(double dx, double dy, double dvx, double dvy, double sigma0) {
+        static Pair draw(SplittableRandom random, double reach, double largestSigma0) {
+            return new Pair(random.nextDouble(-reach, reach), random.nextDouble(-reach, reach),
+                    random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(0.1, largestSigma0));
+        }
+    }
+
     @ParameterizedTest
     @ValueSource(longs = {1, 2, 3, 4})
     void rigidIsThePairLawAndTheWallsToTheBit(long seed) {
         SplittableRandom random = new SplittableRandom(seed);
         GrowthLaw rigid = GrowthLaw.RIGID;
         for (int n = 0; n < 2000; n++) {
-            double dx = random.nextDouble(-2, 2);
-            double dy = random.nextDouble(-2, 2);
-            double dvx = random.nextDouble(-1, 1);
-            double dvy = random.nextDouble(-1, 1);
-            double sigma0 = random.nextDouble(0.1, 1.5);
-            assertThat(rigid.pairContact(dx, dy, dvx, dvy, sigma0, 1))
-                    .isEqualTo(PairLaw.timeToContact(dx, dy, dvx, dvy, sigma0));
+            Pair p = Pair.draw(random, 2, 1.5);
+            assertThat(rigid.pairContact(p.dx(), p.dy(), p.dvx(), p.dvy(), p.sigma0(), 1))
+                    .isEqualTo(PairLaw.timeToContact(p.dx(), p.dy(), p.dvx(), p.dvy(), p.sigma0()));
             int wall = random.nextInt(4);
             double x = random.nextDouble(0.5, 9.5);
             double y = random.nextDouble(0.5, 7.5);
-            assertThat(rigid.wallContact(wall, x, y, dvx, dvy, 0.5, 1, WALLS))
-                    .isEqualTo(WALLS.timeToWall(wall, x, y, dvx, dvy, 0.5));
+            assertThat(rigid.wallContact(wall, x, y, p.dvx(), p.dvy(), 0.5, 1, WALLS))
+                    .isEqualTo(WALLS.timeToWall(wall, x, y, p.dvx(), p.dvy(), 0.5));
             double e = random.nextDouble();
-            assertThat(rigid.bounce(wall, dvx, 0.5, e)).isEqualTo(-e * dvx);
+            assertThat(rigid.bounce(wall, p.dvx(), 0.5, e)).isEqualTo(-e * p.dvx());
 
-            double[] mine = {dvx, 0, dvy, 0.3};
+            double[] mine = {p.dvx(), 0, p.dvy(), 0.3};
             double[] pairLaw = mine.clone();
-            double virial = rigid.collidePair(mine, 0, 1, mine, 2, 3, 1, 0.5, dx, dy, e, sigma0);
-            assertThat(virial).isEqualTo(PairLaw.collide(pairLaw, 0, 1, pairLaw, 2, 3, 1, 0.5, dx, dy, e));
+            double virial = rigid.collidePair(mine, 0, 1, mine, 2, 3, 1, 0.5, p.dx(), p.dy(), e, p.sigma0());
+            assertThat(virial).isEqualTo(PairLaw.collide(pairLaw, 0, 1, pairLaw, 2, 3, 1, 0.5, p.dx(), p.dy(), e));
             assertThat(mine).containsExactly(pairLaw);
         }
         assertThat(rigid.rate()).isZero();
@@ -57,27 +61,23 @@ class GrowthLawTest {
         double rate = random.nextDouble(0.01, 0.5);
         GrowthLaw law = GrowthLaw.linear(rate);
         for (int n = 0; n < 2000; n++) {
-            double dx = random.nextDouble(-2, 2);
-            double dy = random.nextDouble(-2, 2);
-            double dvx = random.nextDouble(-1, 1);
-            double dvy = random.nextDouble(-1, 1);
-            double sigma0 = random.nextDouble(0.1, 1.0);
+            Pair p = Pair.draw(random, 2, 1.0);
             double scale = random.nextDouble(1, 1.5);
-            assertThat(law.pairContact(dx, dy, dvx, dvy, sigma0, scale))
-                    .isEqualTo(GrowthLaw.timeToContact(dx, dy, dvx, dvy, sigma0 * scale, sigma0 * rate));
+            assertThat(law.pairContact(p.dx(), p.dy(), p.dvx(), p.dvy(), p.sigma0(), scale))
+                    .isEqualTo(GrowthLaw.timeToContact(p.dx(), p.dy(), p.dvx(), p.dvy(), p.sigma0() * scale, p.sigma0() * rate));
             int wall = random.nextInt(4);
             double x = random.nextDouble(1, 9);
             double y = random.nextDouble(1, 7);
-            assertThat(law.wallContact(wall, x, y, dvx, dvy, 0.5, scale, WALLS))
-                    .isEqualTo(GrowthLaw.timeToWall(wall, x, y, dvx, dvy, 0.5 * scale, 0.5 * rate, 10, 8));
+            assertThat(law.wallContact(wall, x, y, p.dvx(), p.dvy(), 0.5, scale, WALLS))
+                    .isEqualTo(GrowthLaw.timeToWall(wall, x, y, p.dvx(), p.dvy(), 0.5 * scale, 0.5 * rate, 10, 8));
             double e = random.nextDouble();
-            assertThat(law.bounce(wall, dvx, 0.5, e)).isEqualTo(GrowthLaw.wallBounce(wall, dvx, 0.5 * rate, e));
+            assertThat(law.bounce(wall, p.dvx(), 0.5, e)).isEqualTo(GrowthLaw.wallBounce(wall, p.dvx(), 0.5 * rate, e));
 
-            double[] mine = {dvx, 0, dvy, 0.3};
+            double[] mine = {p.dvx(), 0, p.dvy(), 0.3};
             double[] statics = mine.clone();
-            double virial = law.collidePair(mine, 0, 1, mine, 2, 3, 1, 0.5, dx, dy, e, sigma0);
-            double impulse = GrowthLaw.collide(statics, 0, 1, statics, 2, 3, 1, 0.5, dx, dy, e, sigma0 * rate);
-            assertThat(virial).isEqualTo(impulse * Math.sqrt(dx * dx + dy * dy));
+            double virial = law.collidePair(mine, 0, 1, mine, 2, 3, 1, 0.5, p.dx(), p.dy(), e, p.sigma0());
+            double impulse = GrowthLaw.collide(statics, 0, 1, statics, 2, 3, 1, 0.5, p.dx(), p.dy(), e, p.sigma0() * rate);
+            assertThat(virial).isEqualTo(impulse * Math.sqrt(p.dx() * p.dx() + p.dy() * p.dy()));
             assertThat(mine).containsExactly(statics);
         }
         assertThat(law.rate()).isEqualTo(rate);
@@ -91,22 +91,18 @@ class GrowthLawTest {
         GrowthLaw law = GrowthLaw.linear(random.nextDouble(0.05, 0.5));
         int found = 0;
         for (int n = 0; n < 2000; n++) {
-            double dx = random.nextDouble(-3, 3);
-            double dy = random.nextDouble(-3, 3);
-            double dvx = random.nextDouble(-1, 1);
-            double dvy = random.nextDouble(-1, 1);
-            double sigma0 = random.nextDouble(0.1, 0.5);
+            Pair p = Pair.draw(random, 3, 0.5);
             double scale = random.nextDouble(1, 1.5);
-            if (Math.hypot(dx, dy) <= sigma0 * scale) {
+            if (Math.hypot(p.dx(), p.dy()) <= p.sigma0() * scale) {
                 continue; // overlapped: no contact to find
             }
-            double t = law.pairContact(dx, dy, dvx, dvy, sigma0, scale);
+            double t = law.pairContact(p.dx(), p.dy(), p.dvx(), p.dvy(), p.sigma0(), scale);
             if (t == Double.POSITIVE_INFINITY) {
                 continue;
             }
             found++;
-            double distance = Math.hypot(dx + dvx * t, dy + dvy * t);
-            assertThat(distance).isCloseTo(sigma0 * (scale + law.rate() * t), within(1e-9 * (1 + distance)));
+            double distance = Math.hypot(p.dx() + p.dvx() * t, p.dy() + p.dvy() * t);
+            assertThat(distance).isCloseTo(p.sigma0() * (scale + law.rate() * t), within(1e-9 * (1 + distance)));
         }
         assertThat(found).isPositive();
     }

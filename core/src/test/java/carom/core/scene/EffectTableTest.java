@@ -164,7 +164,7 @@ class EffectTableTest {
                     .hasMessage(effect.path(0) + ": must be a number, got array");
             return;
         }
-        String path = "effects." + effect.key;
+        String path = effect.path();
         String names = "[" + String.join(", ", effect.componentNames()) + "]";
         assertThatThrownBy(() -> SceneReader.parse(scene(effects(effect, "1"))))
                 .hasMessage(path + ": must be an array, got number");
