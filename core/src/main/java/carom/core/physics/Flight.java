@@ -1,5 +1,6 @@
 package carom.core.physics;
 
+import carom.core.scene.Effects;
 import carom.core.state.Discs;
 
 /**
@@ -13,6 +14,11 @@ import carom.core.state.Discs;
  */
 public abstract sealed class Flight permits Flight.Straight, Flight.Parabolic {
     public static final Flight STRAIGHT = new Straight();
+
+    /** The flight {@code effects} names: {@link Parabolic} under gravity, else {@link #STRAIGHT}. */
+    public static Flight of(Effects effects) {
+        return effects.hasGravity() ? parabolic(effects.gravityX(), effects.gravityY()) : STRAIGHT;
+    }
 
     public static Flight parabolic(double gx, double gy) {
         return new Parabolic(gx, gy);

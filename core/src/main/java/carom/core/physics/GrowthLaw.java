@@ -1,9 +1,21 @@
 package carom.core.physics;
 
+import carom.core.scene.Effects;
+
 /**
- * Contacts and collisions of discs whose radii grow linearly in time (the {@code growth} effect, the
- * Lubachevsky-Stillinger protocol): a pair's contact distance is sigma + sigmaRate * t from now, a
- * disc's radius r + rRate * t.
+ * How radii change in time, chosen once per scene ({@link #of}, as {@link Physics#of} chooses every
+ * law): {@link #RIGID} radii, or linear growth at rate G (the {@code growth} effect, the
+ * Lubachevsky-Stillinger protocol), where a disc of radius R(0) has radius R(0) s at scale s = 1 + G t,
+ * t the absolute time. Growth overrides only the primitives that see the radii move, as DynamO's
+ * {@code DynCompression} overrides those of its Newtonian dynamics: a pair's contact time
+ * ({@link #pairContact}), a wall's ({@link #wallContact}), the pair impulse ({@link #collidePair}) and
+ * the wall bounce ({@link #bounce}). They take sizes at scale 1 (R(0), sigma0 = Ri(0) + Rj(0)) and the
+ * scale now, which a run keeps on its own clock; with {@link #RIGID} they are exactly the rigid
+ * primitives ({@link PairLaw}, {@link Boundary.Walls}), to the bit. An engine takes the law once and
+ * each call site then sees one implementation.
+ *
+ * <p>The static methods are the growing primitives themselves, in the sizes and rates of now: a pair's
+ * contact distance is sigma + sigmaRate * t from now, a disc's radius r + rRate * t.
  *
  * <p>Pair contact: with r = rj - ri, v = vj - vi, |r + v t| = sigma + sigmaRate t is the quadratic
  * a t^2 + 2 b t + c = 0 with a = v.v - sigmaRate^2, b = r.v - sigma sigmaRate (half the rate at which
@@ -20,8 +32,130 @@ package carom.core.physics;
  * Collisions bounce the discs off each other's growing surfaces: the approach speed u in the impulse
  * becomes u + sigmaRate, so after an elastic collision the gap opens as fast as it closed before.
  */
-public final class GrowthLaw {
+public abstract sealed class GrowthLaw permits GrowthLaw.Rigid, GrowthLaw.Linear {
+    /** Radii that never change: the rigid primitives. */
+    public static final GrowthLaw RIGID = new Rigid();
+
     private GrowthLaw() {
+    }
+
+    /** The law {@code effects} names: {@link #linear} at its growth rate, or {@link #RIGID}. */
+    public static GrowthLaw of(Effects effects) {
+        return effects.grows() ? linear(effects.growth()) : RIGID;
+    }
+
+    /** Radii R(0)(1 + G t) at absolute time t, for a finite rate G > 0. */
+    public static GrowthLaw linear(double rate) {
+        if (!(rate > 0 && rate < Double.POSITIVE_INFINITY)) {
+            throw new IllegalArgumentException("growth rate must be a finite number > 0, got " + rate);
+        }
+        return new Linear(rate);
+    }
+
+    /** The growth rate G (0 for {@link #RIGID}): the scale's change per unit time. */
+    public abstract double rate();
+
+    /** Whether radii change in time. */
+    public final boolean grows() {
+        return this instanceof Linear;
+    }
+
+    /**
+     * Time from now until the pair first touches, or {@code +Infinity}: {@link #timeToContact} at
+     * contact distance sigma0 * scale growing at sigma0 * rate, or {@link PairLaw#timeToContact} at sigma0.
+     *
+     * @param sigma0 the contact distance at scale 1, Ri(0) + Rj(0)
+     * @param scale  the radii's scale now (1 when rigid)
+     */
+    public abstract double pairContact(double dx, double dy, double dvx, double dvy, double sigma0, double scale);
+
+    /**
+     * Time from now until a disc of radius r0 * scale at (x, y) with velocity (vx, vy) touches wall
+     * {@code wall} of {@code walls} while closing on it ({@link #timeToWall}, or
+     * {@link Boundary.Walls#timeToWall} at r0).
+     */
+    public abstract double wallContact(int wall, double x, double y, double vx, double vy, double r0, double scale,
+                                       Boundary.Walls walls);
+
+    /**
+     * Applies the impulse of a pair collision, velocities held as in {@link PairLaw#collide(double[], int,
+     * int, double[], int, int, double, double, double, double, double)} ({@link #collide} with sigmaRate
+     * sigma0 * rate, or that rigid collision).
+     *
+     * @return the collision virial J * |r| (0 if the surfaces were not approaching after all)
+     */
+    public abstract double collidePair(double[] vx, int ix, int jx, double[] vy, int iy, int jy, double invMi,
+                                       double invMj, double dx, double dy, double e, double sigma0);
+
+    /**
+     * The normal velocity after a disc of radius r0 at scale 1 bounces off wall {@code wall} with
+     * restitution e ({@link #wallBounce} at rRate r0 * rate, or -e times it when rigid).
+     */
+    public abstract double bounce(int wall, double normal, double r0, double e);
+
+    static final class Rigid extends GrowthLaw {
+        @Override
+        public double rate() {
+            return 0;
+        }
+
+        @Override
+        public double pairContact(double dx, double dy, double dvx, double dvy, double sigma0, double scale) {
+            return PairLaw.timeToContact(dx, dy, dvx, dvy, sigma0);
+        }
+
+        @Override
+        public double wallContact(int wall, double x, double y, double vx, double vy, double r0, double scale,
+                                  Boundary.Walls walls) {
+            return walls.timeToWall(wall, x, y, vx, vy, r0);
+        }
+
+        @Override
+        public double collidePair(double[] vx, int ix, int jx, double[] vy, int iy, int jy, double invMi,
+                                  double invMj, double dx, double dy, double e, double sigma0) {
+            return PairLaw.collide(vx, ix, jx, vy, iy, jy, invMi, invMj, dx, dy, e);
+        }
+
+        @Override
+        public double bounce(int wall, double normal, double r0, double e) {
+            return -e * normal;
+        }
+    }
+
+    static final class Linear extends GrowthLaw {
+        private final double rate;
+
+        private Linear(double rate) {
+            this.rate = rate;
+        }
+
+        @Override
+        public double rate() {
+            return rate;
+        }
+
+        @Override
+        public double pairContact(double dx, double dy, double dvx, double dvy, double sigma0, double scale) {
+            return timeToContact(dx, dy, dvx, dvy, sigma0 * scale, sigma0 * rate);
+        }
+
+        @Override
+        public double wallContact(int wall, double x, double y, double vx, double vy, double r0, double scale,
+                                  Boundary.Walls walls) {
+            return timeToWall(wall, x, y, vx, vy, r0 * scale, r0 * rate, walls.width, walls.height);
+        }
+
+        @Override
+        public double collidePair(double[] vx, int ix, int jx, double[] vy, int iy, int jy, double invMi,
+                                  double invMj, double dx, double dy, double e, double sigma0) {
+            double impulse = collide(vx, ix, jx, vy, iy, jy, invMi, invMj, dx, dy, e, sigma0 * rate);
+            return impulse * Math.sqrt(dx * dx + dy * dy);
+        }
+
+        @Override
+        public double bounce(int wall, double normal, double r0, double e) {
+            return wallBounce(wall, normal, r0 * rate, e);
+        }
     }
 
     /**

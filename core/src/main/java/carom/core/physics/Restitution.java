@@ -1,5 +1,7 @@
 package carom.core.physics;
 
+import carom.core.scene.Effects;
+
 /**
  * Which restitution a collision gets, chosen once per scene: {@link #ELASTIC} (e = 1 always, for
  * scenes that name no restitution: nothing to evaluate), a constant pair and wall restitution, or the
@@ -34,6 +36,11 @@ public abstract sealed class Restitution permits Restitution.Memoryless, Restitu
     /** Whether this model keeps per-disc history ({@link #lastCollision}) that a checkpoint must save. */
     public boolean remembers() {
         return true;
+    }
+
+    /** The model {@code effects} names (its restitutions and tc), as {@link #of(double, double, double)}. */
+    public static Restitution of(Effects effects) {
+        return of(effects.restitution(), effects.wallRestitution(), effects.tc());
     }
 
     public static Restitution of(double pairRestitution, double wallRestitution, double tc) {

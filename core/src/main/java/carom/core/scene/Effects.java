@@ -1,9 +1,13 @@
 package carom.core.scene;
 
 /**
- * The effects a scene names (SPEC "effects"). Absent keys mean off: no gravity, elastic pairs and
- * walls, no TC model. Engines and {@code Physics} ask these predicates once at start-up and never
- * per event.
+ * The effects a scene names under {@code effects}, one named field each (described in {@link Effect}:
+ * key, range, neutral value). Absent keys mean off: no gravity, elastic pairs and walls, no TC model, no
+ * growth. Engines and {@code Physics} ask these predicates once at start-up and never per event.
+ *
+ * <p>Built by name from {@link #NONE} with the withers ({@code Effects.NONE.withGravity(0, -9.81).withTc(1e-4)}),
+ * never by position: the canonical constructor is for this record alone, so that adding an effect changes
+ * no call site.
  *
  * @param gravityX        gravitational acceleration, x component (0 without gravity)
  * @param gravityY        gravitational acceleration, y component (0 without gravity)
@@ -17,11 +21,6 @@ package carom.core.scene;
 public record Effects(double gravityX, double gravityY, double restitution, double wallRestitution, double tc,
                       double growth) {
     public static final Effects NONE = new Effects(0, 0, 1, 1, 0, 0);
-
-    /** Effects without growth. */
-    public Effects(double gravityX, double gravityY, double restitution, double wallRestitution, double tc) {
-        this(gravityX, gravityY, restitution, wallRestitution, tc, 0);
-    }
 
     /** Whether radii grow during the run ({@code growth} > 0). */
     public boolean grows() {
@@ -48,6 +47,7 @@ public record Effects(double gravityX, double gravityY, double restitution, doub
         return new Effects(gx, gy, restitution, wallRestitution, tc, growth);
     }
 
+    /** Pair and wall restitution at once ({@link Effect#RESTITUTION}, {@link Effect#WALL_RESTITUTION}). */
     public Effects withRestitution(double pairs, double walls) {
         return new Effects(gravityX, gravityY, pairs, walls, tc, growth);
     }

@@ -8,12 +8,12 @@ import java.util.Arrays;
 import java.util.List;
 
 /**
- * Builds a {@link Scene} and validates it as SPEC demands: sizes and ranges, every disc inside the
- * box, no two discs overlapping (checked on a grid in O(N), since scenes may hold millions of discs),
- * and no more discs than this JVM's memory can simulate. Every violation is a
+ * Builds a {@link Scene} and validates it: sizes and ranges (the effects' by {@link Effect#check}),
+ * every disc inside the box, no two discs overlapping (checked on a grid in O(N), since scenes may hold
+ * millions of discs), and no more discs than this JVM's memory can simulate. Every violation is a
  * {@link BadInputException} naming the JSON path or the disc ids.
  *
- * <p>Ids follow SPEC: explicit discs first, in the order added, then each generate block in turn.
+ * <p>Disc ids: explicit discs first, in the order added, then each generate block in turn.
  */
 public final class SceneBuilder {
     /** Heap an engine needs per disc, generously: scene copy, state, grid, queue. */
@@ -152,20 +152,7 @@ public final class SceneBuilder {
                     largestDiameter, box.width(), box.height()));
         }
         requirePositive("until", until);
-        requireFinite("effects.gravity[0]", effects.gravityX());
-        requireFinite("effects.gravity[1]", effects.gravityY());
-        requireUnitInterval("effects.restitution", effects.restitution());
-        requireUnitInterval("effects.wallRestitution", effects.wallRestitution());
-        if (!(effects.tc() >= 0) || Double.isInfinite(effects.tc())) {
-            throw new BadInputException("effects.tc: must be a finite number >= 0, got " + effects.tc());
-        }
-        if (!(effects.growth() >= 0) || Double.isInfinite(effects.growth())) {
-            throw new BadInputException("effects.growth: must be a finite number > 0, got " + effects.growth());
-        }
-        if (effects.grows() && effects.hasGravity()) {
-            throw new BadInputException("effects.growth: growth under gravity is not supported (compression "
-                    + "to jamming runs without gravity)");
-        }
+        Effect.check(effects);
         for (int b = 0; b < blocks.size(); b++) {
             GenerateBlock block = blocks.get(b);
             String path = "generate[" + b + "]";
@@ -268,7 +255,7 @@ public final class SceneBuilder {
     }
 
     /**
-     * SPEC: resting contact is not modelled, so a disc may not start touching a wall that gravity
+     * Resting contact at the start is not modelled, so a disc may not start touching a wall that gravity
      * presses it against unless it moves away from it.
      */
     private void checkNoneRestingOnWalls(Discs d, int[] blockStarts) {
@@ -343,12 +330,6 @@ public final class SceneBuilder {
     private static void requireNonNegative(String path, double v) {
         if (!(v >= 0) || Double.isInfinite(v)) {
             throw new BadInputException(path + ": must be a finite number >= 0, got " + v);
-        }
-    }
-
-    private static void requireUnitInterval(String path, double v) {
-        if (!(v >= 0 && v <= 1)) {
-            throw new BadInputException(path + ": must lie in [0, 1], got " + v);
         }
     }
 }

@@ -35,7 +35,7 @@ import java.util.Set;
 import java.util.function.ToIntFunction;
 
 /**
- * Reads a scene file (SPEC "Scene files") strictly: malformed JSON, duplicate keys, trailing content,
+ * Reads a scene file strictly: malformed JSON, duplicate keys, trailing content,
  * non-finite numbers, wrong types, missing keys and unknown keys are all errors, so that a typo never
  * silently changes the physics. The tree is walked by hand so that every error names its JSON path
  * ({@code species[1].mass}); ranges, placement and overlaps are then checked by {@link SceneBuilder}.
@@ -67,7 +67,6 @@ public final class SceneReader {
     private static final Set<String> GENERATE_KEYS = Set.of("species", "fractions", "count", "layout", "jitter", "velocity", "seed");
     private static final Set<String> UNIFORM_KEYS = Set.of("distribution", "scale");
     private static final Set<String> MAXWELL_KEYS = Set.of("distribution", "temperature");
-    private static final List<String> EFFECTS = List.of("gravity", "restitution", "wallRestitution", "tc", "growth");
     /** Species names an "unknown species" message lists before it just counts them. */
     private static final int DECLARED_NAMES_SHOWN = 10;
 
@@ -340,7 +339,7 @@ public final class SceneReader {
             if (velocityNode != null) {
                 for (int s : mixture) {
                     if (species.get(s).fixed()) {
-                        // The generator would drop it silently; a fixed disc never moves (SPEC).
+                        // The generator would drop it silently; a fixed disc never moves.
                         throw new BadInputException(path + ".velocity: species " + Quoted.of(species.get(s).name())
                                 + " is fixed and cannot have a velocity");
                     }
@@ -369,34 +368,51 @@ public final class SceneReader {
         }
     }
 
+    /** {@code effects}, read by walking {@link Effect}'s table: known keys only, each value of its shape. */
     private static Effects readEffects(JsonNode e) {
         for (Iterator<String> keys = e.fieldNames(); keys.hasNext(); ) {
             String key = keys.next();
-            if (!EFFECTS.contains(key)) {
-                throw new BadInputException("effects." + Quoted.bare(key) + ": unknown effect (known: " + String.join(", ", EFFECTS) + ")");
+            if (Effect.byKey(key) == null) {
+                throw new BadInputException("effects." + Quoted.bare(key) + ": unknown effect (known: "
+                        + String.join(", ", Effect.keys()) + ")");
             }
         }
         Effects effects = Effects.NONE;
-        JsonNode gravity = e.get("gravity");
-        if (gravity != null) {
-            array(gravity, "effects.gravity");
-            if (gravity.size() != 2) {
-                throw new BadInputException("effects.gravity: must have exactly 2 components [gx, gy], got " + gravity.size());
+        for (Effect effect : Effect.values()) {
+            JsonNode value = e.get(effect.key);
+            if (value != null) {
+                effects = effect.with(effects, readEffect(value, effect));
             }
-            effects = effects.withGravity(number(gravity.get(0), "effects.gravity[0]"),
-                    number(gravity.get(1), "effects.gravity[1]"));
-        }
-        double restitution = optionalNumber(e, "effects", "restitution", 1);
-        double wallRestitution = optionalNumber(e, "effects", "wallRestitution", 1);
-        effects = effects.withRestitution(restitution, wallRestitution).withTc(optionalNumber(e, "effects", "tc", 0));
-        if (e.has("growth")) {
-            double growth = requiredNumber(e, "effects", "growth");
-            if (!(growth > 0)) {
-                throw new BadInputException("effects.growth: must be a finite number > 0, got " + growth);
-            }
-            effects = effects.withGrowth(growth);
         }
         return effects;
+    }
+
+    /**
+     * One effect's value: a number, or a list of exactly as many numbers as it has components. Ranges
+     * are {@link SceneBuilder}'s to check, but for an effect whose neutral value the file may not write
+     * (a growth of 0 would be taken for no growth): its range is checked here.
+     */
+    private static double[] readEffect(JsonNode value, Effect effect) {
+        double[] values = new double[effect.size()];
+        if (values.length == 1) {
+            values[0] = number(value, effect.path(0));
+        } else {
+            String path = effect.path();
+            array(value, path);
+            if (value.size() != values.length) {
+                throw new BadInputException(path + ": must have exactly " + values.length + " components ["
+                        + String.join(", ", effect.componentNames()) + "], got " + value.size());
+            }
+            for (int k = 0; k < values.length; k++) {
+                values[k] = number(value.get(k), effect.path(k));
+            }
+        }
+        if (effect.neutralIsUnwritable()) {
+            for (int k = 0; k < values.length; k++) {
+                effect.checkWritten(k, values[k]);
+            }
+        }
+        return values;
     }
 
     /** {@code species}: one name, or a list of distinct names (a mixture, which then needs {@code fractions}). */

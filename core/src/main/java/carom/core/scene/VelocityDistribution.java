@@ -1,6 +1,6 @@
 package carom.core.scene;
 
-/** How a generate block draws velocities (SPEC "generate.velocity"). */
+/** How a generate block draws velocities (its {@code velocity} key). */
 public sealed interface VelocityDistribution {
     /** Every disc at rest. */
     record AtRest() implements VelocityDistribution {

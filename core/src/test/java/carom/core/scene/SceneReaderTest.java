@@ -125,7 +125,7 @@ class SceneReaderTest {
         assertThat(scene.name()).isEqualTo("base");
         assertThat(scene.box()).isEqualTo(new Box(10, 10, BoundaryKind.WALLS));
         assertThat(scene.species()).containsExactly(Species.mobile("disc", 0.5, 1.0), Species.fixed("peg", 0.2));
-        assertThat(scene.effects()).isEqualTo(new Effects(0, -1, 0.9, 0.8, 1e-4));
+        assertThat(scene.effects()).isEqualTo(Effects.NONE.withGravity(0, -1).withRestitution(0.9, 0.8).withTc(1e-4));
         assertThat(scene.until()).isEqualTo(3.0);
         assertThat(scene.size()).isEqualTo(7);
     }
@@ -232,7 +232,7 @@ class SceneReaderTest {
         Scene scene = SceneReader.parse(root.toString());
         assertThat(scene.name()).isEqualTo("head-on");
         assertThat(scene.size()).isEqualTo(2);
-        assertThat(scene.effects()).isEqualTo(new Effects(0, -9.81, 0.9, 0.8, 1e-4));
+        assertThat(scene.effects()).isEqualTo(Effects.NONE.withGravity(0, -9.81).withRestitution(0.9, 0.8).withTc(1e-4));
         assertThat(scene.until()).isEqualTo(10.0);
         assertThat(scene.species().get(1).fixed()).isTrue();
     }
@@ -618,7 +618,7 @@ class SceneReaderTest {
     @Test
     void restitutionBoundsAreInclusive() {
         String json = base(root -> at(root, "/effects").put("restitution", 0).put("wallRestitution", 1).put("tc", 0));
-        assertThat(SceneReader.parse(json).effects()).isEqualTo(new Effects(0, -1, 0, 1, 0));
+        assertThat(SceneReader.parse(json).effects()).isEqualTo(Effects.NONE.withGravity(0, -1).withRestitution(0, 1));
     }
 
     @Test

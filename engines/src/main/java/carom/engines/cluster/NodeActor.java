@@ -194,7 +194,7 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
             builder.species(s.fixed() ? Species.fixed(s.name(), s.radius()) : Species.mobile(s.name(), s.radius(), s.mass()));
         }
         double[] e = m.effects();
-        builder.effects(new Effects(e[0], e[1], e[2], e[3], e[4])).until(m.until());
+        builder.effects(Effects.NONE.withGravity(e[0], e[1]).withRestitution(e[2], e[3]).withTc(e[4])).until(m.until());
         return this;
     }
 

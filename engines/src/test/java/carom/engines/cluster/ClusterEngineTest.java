@@ -122,7 +122,7 @@ class ClusterEngineTest {
     void gasesWithGravityAndWithRestitutionAndTcMatchSerialOnThreeNodes() {
         // Gravity with elastic collisions, and restitution with the TC model without gravity; inelastic
         // collisions under gravity (resting contact): ClusterRestingContactTest.
-        for (Effects effects : List.of(new Effects(0, -2, 1, 1, 0), Effects.NONE.withRestitution(0.8, 0.9).withTc(1e-3))) {
+        for (Effects effects : List.of(Effects.NONE.withGravity(0, -2), Effects.NONE.withRestitution(0.8, 0.9).withTc(1e-3))) {
             Scene scene = RandomScenes.dense(900, 0.5, false, 11, 0.25).withEffects(effects);
             RunResult r = cluster(scene, 3);
             assertThat(r.counters().get("crossDomainEvents")).isPositive();

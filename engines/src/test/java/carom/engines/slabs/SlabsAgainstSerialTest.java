@@ -84,7 +84,7 @@ class SlabsAgainstSerialTest {
     void denseWalledGasWithGravityRestitutionAndTcMatchesSerial(int domains) {
         // Parabolic flight, dissipative pairs and walls, TC memory: all undone and redone by rollbacks.
         Scene scene = RandomScenes.dense(900, 0.5, false, 11, 0.25)
-                .withEffects(new Effects(0, -2, 1, 1, 0).withRestitution(0.8, 0.9).withTc(1e-3));
+                .withEffects(Effects.NONE.withGravity(0, -2).withRestitution(0.8, 0.9).withTc(1e-3));
         RunResult r = slabsWithEffects(scene, domains);
         assertThat(r.counters().get("domains")).isEqualTo(domains);
         assertThat(r.counters().get("crossDomainEvents")).isPositive();

@@ -104,7 +104,7 @@ class SlabsMergeTest {
     @Test
     void phasesInTurnUnderGravityRestitutionAndTcMatchSerial() {
         Scene scene = RandomScenes.dense(900, 0.5, false, 11, 0.25)
-                .withEffects(new Effects(0, -2, 1, 1, 0).withRestitution(0.8, 0.9).withTc(1e-3));
+                .withEffects(Effects.NONE.withGravity(0, -2).withRestitution(0.8, 0.9).withTc(1e-3));
         RunResult r = FixedDomains.alternating(2, 20).run(scene, RunOptions.until(scene.until()));
         Invariants.noOverlapsAndInside(scene, r.finalState());
         assertThat(r.counters().get("mergedEvents")).isPositive();
