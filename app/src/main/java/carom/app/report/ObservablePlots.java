@@ -4,12 +4,8 @@ import carom.core.observe.sample.BondOrder;
 import carom.core.observe.sample.MeanSquaredDisplacement;
 import carom.core.observe.sample.PressureSeries;
 import carom.core.observe.sample.RadialDistribution;
-import carom.core.observe.sample.SampledObservable;
 import java.awt.BasicStroke;
 import java.awt.Color;
-import java.io.IOException;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import org.knowm.xchart.XYChart;
@@ -19,8 +15,8 @@ import org.knowm.xchart.style.XYStyler;
 import org.knowm.xchart.style.markers.SeriesMarkers;
 
 /**
- * One plot per sampled observable, {@code KEY.png} next to {@code KEY.csv} and, for a paper, the same
- * drawing as vector graphics ({@code KEY.svg}, {@link #writeVector}), drawn headless with XChart in
+ * The chart of each observable, which its {@link ObservableSpec} writes as {@code KEY.png} next to
+ * {@code KEY.csv} and, for a paper, as vector graphics ({@code KEY.svg}), drawn headless with XChart in
  * {@link ChartStyle}'s look: white background, axis titles with carom's units (lengths in the scene's length unit, times in
  * its time unit, σ the contact distance), log axes for the mean squared displacement.
  *
@@ -39,39 +35,6 @@ public final class ObservablePlots {
     private static final Color DATA = ChartStyle.PALETTE[0];
 
     private ObservablePlots() {
-    }
-
-    /** Writes {@code dir/KEY.png} and returns its path. */
-    public static Path write(SampledObservable observable, Path dir) throws IOException {
-        Path file = dir.resolve(observable.key() + ".png");
-        Files.write(file, png(observable));
-        return file;
-    }
-
-    /** Writes {@code dir/KEY.svg}, the PNG's drawing as vector graphics, and returns its path. */
-    public static Path writeVector(SampledObservable observable, Path dir) throws IOException {
-        Path file = dir.resolve(observable.key() + ".svg");
-        Files.write(file, svg(observable));
-        return file;
-    }
-
-    /** The observable's plot as PNG bytes. */
-    public static byte[] png(SampledObservable observable) {
-        return ChartStyle.png(chart(observable));
-    }
-
-    /** The observable's plot as SVG bytes. */
-    public static byte[] svg(SampledObservable observable) {
-        return ChartStyle.svg(chart(observable));
-    }
-
-    static XYChart chart(SampledObservable observable) {
-        return switch (observable) {
-            case RadialDistribution gr -> radialDistribution(gr);
-            case MeanSquaredDisplacement msd -> meanSquaredDisplacement(msd);
-            case BondOrder psi6 -> bondOrder(psi6);
-            case PressureSeries pressure -> pressure(pressure);
-        };
     }
 
     static XYChart radialDistribution(RadialDistribution gr) {
