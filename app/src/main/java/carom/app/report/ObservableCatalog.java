@@ -3,6 +3,7 @@ package carom.app.report;
 import carom.core.BadInputException;
 import carom.core.Quoted;
 import carom.core.observe.sample.BondOrder;
+import carom.core.observe.sample.CollisionRates;
 import carom.core.observe.sample.MeanSquaredDisplacement;
 import carom.core.observe.sample.PressureSeries;
 import carom.core.observe.sample.RadialDistribution;
@@ -28,7 +29,10 @@ public final class ObservableCatalog {
                     List.of("t", "psi6"), (scene, interval) -> new BondOrder(), BondOrder::restore, ObservablePlots::bondOrder),
             new ObservableSpec<>(PressureSeries.KEY, "the reduced pressure Z over each interval between consecutive samples",
                     List.of("t0", "t1", "Z"), (scene, interval) -> PressureSeries.of(scene.species()), PressureSeries::restore,
-                    ObservablePlots::pressure));
+                    ObservablePlots::pressure),
+            new ObservableSpec<>(CollisionRates.KEY, "the pair-collision rate per disc, 2P/(N·Δt), and the wall-collision rate over each interval between consecutive samples (engines that tell collisions)",
+                    List.of("t0", "t1", "pairRate", "wallRate"), (scene, interval) -> new CollisionRates(), CollisionRates::restore,
+                    ObservablePlots::collisionRates, rates -> rates));
 
     /** The keys, in the order listed. */
     public static final List<String> KEYS = ALL.stream().map(ObservableSpec::key).toList();

@@ -1,6 +1,7 @@
 package carom.app.report;
 
 import carom.core.observe.sample.BondOrder;
+import carom.core.observe.sample.CollisionRates;
 import carom.core.observe.sample.MeanSquaredDisplacement;
 import carom.core.observe.sample.PressureSeries;
 import carom.core.observe.sample.RadialDistribution;
@@ -26,6 +27,8 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
  *     point and ∝ t (diffusive) through the last.</li>
  * <li>{@code psi6.png}: |ψ6| against time, on [0, 1].</li>
  * <li>{@code pressure.png}: Z of each sample interval at the interval's midpoint, with the mean.</li>
+ * <li>{@code collisions.png}: the pair-collision rate per disc of each sample interval at its midpoint,
+ *     with the run's mean and its block error bar.</li>
  * </ul>
  * An observable without data yet still gets a plot that says so.
  */
@@ -117,6 +120,35 @@ public final class ObservablePlots {
             double mean = sum / points.size();
             guide(chart, "mean", new double[] {t0[0], t1[t1.length - 1]}, new double[] {mean, mean});
             line(chart, "Z", x, column(points, 1), points.size() <= 60);
+        }
+        return finish(chart);
+    }
+
+    static XYChart collisionRates(CollisionRates rates) {
+        double[] t0 = rates.intervalStarts();
+        double[] t1 = rates.intervalEnds();
+        double[] rate = rates.pairRates();
+        double mean = rates.meanPairRate();
+        double error = rates.pairRateError();
+        String title = "Pair collisions per disc per unit time, per sample interval";
+        if (Double.isFinite(mean)) {
+            title += Double.isFinite(error)
+                    ? String.format(", mean %s ± %s (%d blocks)", number(mean), number(error), rates.blocks())
+                    : String.format(", mean %s", number(mean));
+        }
+        XYChart chart = chart(title, "time t, middle of each interval (scene time unit)", "pair collisions per disc per unit time");
+        if (rate.length > 0) {
+            double[] x = new double[rate.length];
+            for (int k = 0; k < x.length; k++) {
+                x[k] = 0.5 * (t0[k] + t1[k]);
+            }
+            double[] span = {t0[0], t1[t1.length - 1]};
+            guide(chart, "mean", span, new double[] {mean, mean});
+            if (Double.isFinite(error)) {
+                guide(chart, "mean ± block error", span, new double[] {mean + error, mean + error});
+                guide(chart, " ", span, new double[] {mean - error, mean - error});
+            }
+            line(chart, "rate", x, rate, rate.length <= 60);
         }
         return finish(chart);
     }

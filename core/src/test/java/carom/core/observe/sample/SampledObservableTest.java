@@ -3,6 +3,7 @@ package carom.core.observe.sample;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import carom.core.observe.CollisionObserver;
 import carom.core.scene.Box;
 import java.io.IOException;
 import java.io.StringWriter;
@@ -29,14 +30,24 @@ class SampledObservableTest {
                 Arguments.of("psi6", (Supplier<SampledObservable>) BondOrder::new,
                         (Function<ObservableState, SampledObservable>) BondOrder::restore),
                 Arguments.of("pressure", (Supplier<SampledObservable>) () -> new PressureSeries(new double[] {1}),
-                        (Function<ObservableState, SampledObservable>) PressureSeries::restore));
+                        (Function<ObservableState, SampledObservable>) PressureSeries::restore),
+                Arguments.of("collisions", (Supplier<SampledObservable>) CollisionRates::new,
+                        (Function<ObservableState, SampledObservable>) CollisionRates::restore));
     }
 
-    /** Random discs taking Gaussian steps in a periodic box, with a virial between samples. */
+    /** Random discs taking Gaussian steps in a periodic box, with a virial and collisions between samples. */
     private static void feed(SampledObservable o, int from, int to, long seed) {
         Box box = TestSamples.box(15, 12, true);
         for (int s = from; s < to; s++) {
             SplittableRandom random = new SplittableRandom(seed + s);
+            if (o instanceof CollisionObserver listener) {
+                for (int c = random.nextInt(40); c > 0; c--) {
+                    listener.pair(s * DT, 0, 1, 1, 0, 1, 0, 1);
+                }
+                for (int c = random.nextInt(4); c > 0; c--) {
+                    listener.wall(s * DT, 0, 0, 1);
+                }
+            }
             o.accept(TestSamples.withVirial(TestSamples.idealGas(s * DT, box, 120, 0.5, random), random.nextDouble() * 100));
         }
     }
