@@ -19,20 +19,27 @@ import java.util.List;
 public final class ObservableCatalog {
     /** In the order listed. */
     public static final List<ObservableSpec<?>> ALL = List.of(
-            new ObservableSpec<>(RadialDistribution.KEY, "the radial distribution function of all pairs, averaged over the samples; r the bin centre",
+            new ObservableSpec<>(RadialDistribution.KEY,
+                    "the radial distribution function of all pairs, averaged over the samples; r the bin centre",
                     List.of("r", "g"), (scene, interval) -> new RadialDistribution(), RadialDistribution::restore,
                     ObservablePlots::radialDistribution),
-            new ObservableSpec<>(MeanSquaredDisplacement.KEY, "the mean squared displacement against lag (in time units), from unwrapped positions, over the mobile discs and every time origin",
+            new ObservableSpec<>(MeanSquaredDisplacement.KEY,
+                    "the mean squared displacement against lag (in time units), from unwrapped positions, "
+                            + "over the mobile discs and every time origin",
                     List.of("lag", "msd"), (scene, interval) -> MeanSquaredDisplacement.mobileDiscsOf(scene.species(), interval),
                     MeanSquaredDisplacement::restore, ObservablePlots::meanSquaredDisplacement),
-            new ObservableSpec<>(BondOrder.KEY, "the global bond-orientational order |ψ6| of each sample",
+            new ObservableSpec<>(BondOrder.KEY,
+                    "the global bond-orientational order |ψ6| of each sample",
                     List.of("t", "psi6"), (scene, interval) -> new BondOrder(), BondOrder::restore, ObservablePlots::bondOrder),
-            new ObservableSpec<>(PressureSeries.KEY, "the reduced pressure Z over each interval between consecutive samples",
+            new ObservableSpec<>(PressureSeries.KEY,
+                    "the reduced pressure Z over each interval between consecutive samples",
                     List.of("t0", "t1", "Z"), (scene, interval) -> PressureSeries.of(scene.species()), PressureSeries::restore,
                     ObservablePlots::pressure),
-            new ObservableSpec<>(CollisionRates.KEY, "the pair-collision rate per disc, 2P/(N·Δt), and the wall-collision rate over each interval between consecutive samples (engines that tell collisions)",
-                    List.of("t0", "t1", "pairRate", "wallRate"), (scene, interval) -> new CollisionRates(), CollisionRates::restore,
-                    ObservablePlots::collisionRates, rates -> rates));
+            new ObservableSpec<>(CollisionRates.KEY,
+                    "the pair-collision rate per disc, 2P/(N·Δt), and the wall-collision rate over each interval "
+                            + "between consecutive samples (engines that tell collisions)",
+                    List.of("t0", "t1", "pairRate", "wallRate"), (scene, interval) -> new CollisionRates(),
+                    CollisionRates::restore, ObservablePlots::collisionRates, rates -> rates));
 
     /** The keys, in the order listed. */
     public static final List<String> KEYS = ALL.stream().map(ObservableSpec::key).toList();

@@ -105,9 +105,16 @@ public final class Observing implements Sampler {
         return collisions;
     }
 
-    /** The keys of the observables chosen that listen to collisions, in the order named. */
-    public List<String> collisionKeys() {
-        return chosen.stream().filter(c -> c.spec().needsCollisions()).map(c -> c.spec().key()).toList();
+    /**
+     * Bad input, before the run, if an observable chosen listens to collisions and {@code engine} does
+     * not tell them ({@code tellsCollisions}, from its spec).
+     */
+    public void checkCollisionsToldBy(String engine, boolean tellsCollisions) {
+        if (needsCollisions() && !tellsCollisions) {
+            List<String> keys = chosen.stream().filter(c -> c.spec().needsCollisions()).map(c -> c.spec().key()).toList();
+            throw new BadInputException("--observe: " + String.join(", ", keys) + " counts collisions as the engine "
+                    + "carries them out, and engine " + engine + " does not tell them");
+        }
     }
 
     /** Every observable's state so far, for a checkpoint, in the order named. */

@@ -92,6 +92,22 @@ class ObservableCatalogTest {
                 .hasMessage("--observe: unknown observable 'rdf' (known: " + String.join(", ", ObservableCatalog.KEYS) + ")");
     }
 
+    /** Only observables of collisions ask the engine for them; a run without any pays nothing. */
+    @Test
+    void onlyObservablesOfCollisionsNeedTheEngineToTellThem() {
+        Observing samplesOnly = Observing.of(ObservableFeed.SCENE, "gr,msd,psi6,pressure", ObservableFeed.DT);
+        assertThat(samplesOnly.needsCollisions()).isFalse();
+        assertThat(samplesOnly.collisions()).isNull();
+        samplesOnly.checkCollisionsToldBy("slabs", false);
+        Observing counting = Observing.of(ObservableFeed.SCENE, "pressure,collisions", ObservableFeed.DT);
+        assertThat(counting.needsCollisions()).isTrue();
+        assertThat(counting.collisions()).isNotNull();
+        counting.checkCollisionsToldBy("fast", true);
+        assertThatThrownBy(() -> counting.checkCollisionsToldBy("slabs", false)).isInstanceOf(BadInputException.class)
+                .hasMessage("--observe: collisions counts collisions as the engine carries them out, and engine slabs "
+                        + "does not tell them");
+    }
+
     /** The docs' table of observables lists exactly the registry's keys, in order, with their columns and meanings. */
     @Test
     void docsListExactlyTheRegistry() throws IOException {
