@@ -130,11 +130,11 @@ public final class ObservablePlots {
         double[] rate = rates.pairRates();
         double mean = rates.meanPairRate();
         double error = rates.pairRateError();
-        String title = "Pair collisions per disc per unit time, per sample interval";
+        String title = "Pair collisions per disc per unit time";
         if (Double.isFinite(mean)) {
             title += Double.isFinite(error)
-                    ? String.format(", mean %s ± %s (%d blocks)", number(mean), number(error), rates.blocks())
-                    : String.format(", mean %s", number(mean));
+                    ? String.format(": mean %s ± %s (%d blocks)", number(mean), number(error), rates.blocks())
+                    : String.format(": mean %s", number(mean));
         }
         XYChart chart = chart(title, "time t, middle of each interval (scene time unit)", "pair collisions per disc per unit time");
         if (rate.length > 0) {
@@ -146,7 +146,7 @@ public final class ObservablePlots {
             guide(chart, "mean", span, new double[] {mean, mean});
             if (Double.isFinite(error)) {
                 guide(chart, "mean ± block error", span, new double[] {mean + error, mean + error});
-                guide(chart, " ", span, new double[] {mean - error, mean - error});
+                guide(chart, "mean - block error", span, new double[] {mean - error, mean - error}).setShowInLegend(false);
             }
             line(chart, "rate", x, rate, rate.length <= 60);
         }
@@ -170,11 +170,12 @@ public final class ObservablePlots {
         s.setMarker(markers ? SeriesMarkers.CIRCLE : SeriesMarkers.NONE);
     }
 
-    private static void guide(XYChart chart, String name, double[] x, double[] y) {
+    private static XYSeries guide(XYChart chart, String name, double[] x, double[] y) {
         XYSeries s = chart.addSeries(name, x, y);
         s.setLineColor(ChartStyle.GUIDE);
         s.setLineStyle(ChartStyle.DASHED);
         s.setMarker(SeriesMarkers.NONE);
+        return s;
     }
 
     /** A plot without data says so; XChart cannot lay out axes without a series, so it gets an invisible point. */
