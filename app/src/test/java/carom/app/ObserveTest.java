@@ -88,4 +88,40 @@ class ObserveTest {
             assertThat(files.count()).isEqualTo(1);
         }
     }
+
+    /**
+     * {@code --observe collisions} on {@code fast}: the intervals' pair collisions add up to the summary's.
+     * Needs the run's options to carry {@code Observing.collisions()} to the engine.
+     */
+    @Test
+    void collisionRatesAddUpToTheRunsPairCollisions() throws IOException {
+        Path report = dir.resolve("report");
+        Path summary = dir.resolve("summary.json");
+        Cli r = Cli.run("simulate", gas().toString(), "--engine", "fast", "--every", "0.25", "--observe", "collisions",
+                "--report", report.toString(), "--summary", summary.toString());
+        assertThat(r.status()).as(r.err()).isZero();
+        List<String> csv = Files.readAllLines(report.resolve("collisions.csv"));
+        assertThat(csv.get(0)).isEqualTo("t0,t1,pairRate,wallRate");
+        assertThat(csv).hasSize(1 + 16);
+        long pairs = 0;
+        for (String row : csv.subList(1, csv.size())) {
+            String[] v = row.split(",");
+            double perDisc = Double.parseDouble(v[2]) * (Double.parseDouble(v[1]) - Double.parseDouble(v[0]));
+            pairs += Math.round(perDisc * 400 / 2);
+        }
+        long runPairs = new com.fasterxml.jackson.databind.ObjectMapper().readTree(summary.toFile())
+                .get("collisions").get("pair").asLong();
+        assertThat(runPairs).isPositive();
+        assertThat(pairs).isEqualTo(runPairs);
+    }
+
+    /** An observable of collisions on an engine that does not tell them (slabs' windows can be undone) is bad input. */
+    @Test
+    void collisionRatesNeedAnEngineThatTellsCollisions() throws IOException {
+        Cli r = Cli.run("simulate", gas().toString(), "--engine", "slabs", "--every", "0.25", "--observe", "gr,collisions",
+                "--report", dir.resolve("a").toString());
+        assertThat(r.status()).as(r.err()).isEqualTo(2);
+        assertThat(r.firstErrorLine()).startsWith("error: ").contains("collisions");
+        assertThat(dir.resolve("a")).doesNotExist();
+    }
 }

@@ -1,15 +1,12 @@
 package carom.app.report;
 
 import carom.core.observe.sample.BondOrder;
+import carom.core.observe.sample.CollisionRates;
 import carom.core.observe.sample.MeanSquaredDisplacement;
 import carom.core.observe.sample.PressureSeries;
 import carom.core.observe.sample.RadialDistribution;
-import carom.core.observe.sample.SampledObservable;
 import java.awt.BasicStroke;
 import java.awt.Color;
-import java.io.IOException;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import org.knowm.xchart.XYChart;
@@ -19,8 +16,8 @@ import org.knowm.xchart.style.XYStyler;
 import org.knowm.xchart.style.markers.SeriesMarkers;
 
 /**
- * One plot per sampled observable, {@code KEY.png} next to {@code KEY.csv} and, for a paper, the same
- * drawing as vector graphics ({@code KEY.svg}, {@link #writeVector}), drawn headless with XChart in
+ * The chart of each observable, which its {@link ObservableSpec} writes as {@code KEY.png} next to
+ * {@code KEY.csv} and, for a paper, as vector graphics ({@code KEY.svg}), drawn headless with XChart in
  * {@link ChartStyle}'s look: white background, axis titles with carom's units (lengths in the scene's length unit, times in
  * its time unit, σ the contact distance), log axes for the mean squared displacement.
  *
@@ -30,6 +27,8 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
  *     point and ∝ t (diffusive) through the last.</li>
  * <li>{@code psi6.png}: |ψ6| against time, on [0, 1].</li>
  * <li>{@code pressure.png}: Z of each sample interval at the interval's midpoint, with the mean.</li>
+ * <li>{@code collisions.png}: the pair-collision rate per disc of each sample interval at its midpoint,
+ *     with the run's mean and its block error bar.</li>
  * </ul>
  * An observable without data yet still gets a plot that says so.
  */
@@ -39,39 +38,6 @@ public final class ObservablePlots {
     private static final Color DATA = ChartStyle.PALETTE[0];
 
     private ObservablePlots() {
-    }
-
-    /** Writes {@code dir/KEY.png} and returns its path. */
-    public static Path write(SampledObservable observable, Path dir) throws IOException {
-        Path file = dir.resolve(observable.key() + ".png");
-        Files.write(file, png(observable));
-        return file;
-    }
-
-    /** Writes {@code dir/KEY.svg}, the PNG's drawing as vector graphics, and returns its path. */
-    public static Path writeVector(SampledObservable observable, Path dir) throws IOException {
-        Path file = dir.resolve(observable.key() + ".svg");
-        Files.write(file, svg(observable));
-        return file;
-    }
-
-    /** The observable's plot as PNG bytes. */
-    public static byte[] png(SampledObservable observable) {
-        return ChartStyle.png(chart(observable));
-    }
-
-    /** The observable's plot as SVG bytes. */
-    public static byte[] svg(SampledObservable observable) {
-        return ChartStyle.svg(chart(observable));
-    }
-
-    static XYChart chart(SampledObservable observable) {
-        return switch (observable) {
-            case RadialDistribution gr -> radialDistribution(gr);
-            case MeanSquaredDisplacement msd -> meanSquaredDisplacement(msd);
-            case BondOrder psi6 -> bondOrder(psi6);
-            case PressureSeries pressure -> pressure(pressure);
-        };
     }
 
     static XYChart radialDistribution(RadialDistribution gr) {
@@ -158,6 +124,35 @@ public final class ObservablePlots {
         return finish(chart);
     }
 
+    static XYChart collisionRates(CollisionRates rates) {
+        double[] t0 = rates.intervalStarts();
+        double[] t1 = rates.intervalEnds();
+        double[] rate = rates.pairRates();
+        double mean = rates.meanPairRate();
+        double error = rates.pairRateError();
+        String title = "Pair collisions per disc per unit time";
+        if (Double.isFinite(mean)) {
+            title += Double.isFinite(error)
+                    ? String.format(": mean %s ± %s (%d blocks)", number(mean), number(error), rates.blocks())
+                    : String.format(": mean %s", number(mean));
+        }
+        XYChart chart = chart(title, "time t, middle of each interval (scene time unit)", "pair collisions per disc per unit time");
+        if (rate.length > 0) {
+            double[] x = new double[rate.length];
+            for (int k = 0; k < x.length; k++) {
+                x[k] = 0.5 * (t0[k] + t1[k]);
+            }
+            double[] span = {t0[0], t1[t1.length - 1]};
+            guide(chart, "mean", span, new double[] {mean, mean});
+            if (Double.isFinite(error)) {
+                guide(chart, "mean ± block error", span, new double[] {mean + error, mean + error});
+                guide(chart, "mean - block error", span, new double[] {mean - error, mean - error}).setShowInLegend(false);
+            }
+            line(chart, "rate", x, rate, rate.length <= 60);
+        }
+        return finish(chart);
+    }
+
     private static XYChart chart(String title, String xTitle, String yTitle) {
         XYChart chart = new XYChartBuilder().width(WIDTH).height(HEIGHT).title(title)
                 .xAxisTitle(xTitle).yAxisTitle(yTitle).build();
@@ -175,11 +170,12 @@ public final class ObservablePlots {
         s.setMarker(markers ? SeriesMarkers.CIRCLE : SeriesMarkers.NONE);
     }
 
-    private static void guide(XYChart chart, String name, double[] x, double[] y) {
+    private static XYSeries guide(XYChart chart, String name, double[] x, double[] y) {
         XYSeries s = chart.addSeries(name, x, y);
         s.setLineColor(ChartStyle.GUIDE);
         s.setLineStyle(ChartStyle.DASHED);
         s.setMarker(SeriesMarkers.NONE);
+        return s;
     }
 
     /** A plot without data says so; XChart cannot lay out axes without a series, so it gets an invisible point. */

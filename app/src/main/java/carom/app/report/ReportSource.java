@@ -2,7 +2,6 @@ package carom.app.report;
 
 import carom.core.BadInputException;
 import carom.core.Quoted;
-import carom.core.observe.sample.SampledObservable;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -63,7 +62,7 @@ record ReportSource(Path path, String kind, Path markdown, Map<String, String> p
             if (lower.endsWith(".csv")) {
                 csvs.add(f);
                 String key = name.substring(0, name.length() - 4);
-                if (SampledObservable.KEYS.contains(key)) {
+                if (ObservableCatalog.KEYS.contains(key)) {
                     observables.add(key);
                 }
             } else if (lower.endsWith(".png")) {

@@ -130,8 +130,7 @@ public final class BondOrder implements SampledObservable {
     }
 
     @Override
-    public void writeCsv(Writer out) throws IOException {
-        out.write("t,psi6\n");
+    public void writeRows(Writer out) throws IOException {
         StringBuilder row = new StringBuilder(64);
         for (int k = 0; k < times.size(); k++) {
             row.setLength(0);
@@ -146,7 +145,8 @@ public final class BondOrder implements SampledObservable {
         return new StateCodec.Out(LAYOUT).put(n).put(times.toArray(), n).put(values.toArray(), n).state(KEY);
     }
 
-    static BondOrder restore(ObservableState state) {
+    /** The observable {@code state} was saved from ({@link #state}), continuing exactly where it stopped. */
+    public static BondOrder restore(ObservableState state) {
         StateCodec.In in = new StateCodec.In(state, KEY, LAYOUT);
         int n = in.nextSize();
         BondOrder order = new BondOrder();

@@ -322,8 +322,7 @@ public final class MeanSquaredDisplacement implements SampledObservable {
     }
 
     @Override
-    public void writeCsv(Writer out) throws IOException {
-        out.write("lag,msd\n");
+    public void writeRows(Writer out) throws IOException {
         double[] lags = lags();
         double[] v = values();
         StringBuilder row = new StringBuilder(64);
@@ -358,7 +357,8 @@ public final class MeanSquaredDisplacement implements SampledObservable {
         return Arrays.stream(a).asLongStream().toArray();
     }
 
-    static MeanSquaredDisplacement restore(ObservableState state) {
+    /** The observable {@code state} was saved from ({@link #state}), continuing exactly where it stopped. */
+    public static MeanSquaredDisplacement restore(ObservableState state) {
         StateCodec.In in = new StateCodec.In(state, KEY, LAYOUT);
         double interval = in.nextDouble();
         int points = in.nextInt();

@@ -4,11 +4,11 @@ import java.util.Arrays;
 
 /**
  * An observable's accumulated state in a plain form a checkpoint can store: its key and two arrays of
- * primitives. {@link SampledObservable#restore} rebuilds an observable that continues bit for bit as the
- * saved one would have. The first long of every layout is the layout's version, so that a state saved
+ * primitives. Each observable's {@code restore} rebuilds one that continues bit for bit as the saved one
+ * would have. The first long of every layout is the layout's version, so that a state saved
  * by another layout is refused rather than misread.
  *
- * @param key     the observable's key ({@code gr}, {@code msd}, {@code psi6}, {@code pressure})
+ * @param key     the observable's key ({@link SampledObservable#key()})
  * @param longs   counters and sizes, layout version first
  * @param doubles sums, series and positions
  */

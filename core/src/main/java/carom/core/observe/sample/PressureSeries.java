@@ -14,10 +14,10 @@ import java.util.List;
  * mean of the mobile discs' kinetic energies at t0 and t1 (constant in an elastic run). What that
  * formula means in a walled box, with gravity or with fixed discs is said at {@link VirialAccumulator}.
  *
- * <p>The engine calls {@link #addVirial} for each pair collision (or once per interval with its sum)
- * and {@link #accept} at each sample time; virial reported before the first sample is dropped. Z is
- * NaN for an interval without kinetic energy. Masses come from the species, so the sample's species
- * indices must be the scene's.
+ * <p>Each sample brings the virial of its interval ({@link Sample#virial()}); {@link #addVirial} adds
+ * more by hand (per collision or per interval) before the next sample. Virial before the first sample
+ * is dropped. Z is NaN for an interval without kinetic energy. Masses come from the species, so the
+ * sample's species indices must be the scene's.
  */
 public final class PressureSeries implements SampledObservable {
     public static final String KEY = "pressure";
@@ -60,6 +60,7 @@ public final class PressureSeries implements SampledObservable {
 
     @Override
     public void accept(Sample s) {
+        virial += s.virial;
         double energy = kineticEnergy(s);
         if (started) {
             if (!(s.time > lastTime)) {
@@ -108,8 +109,7 @@ public final class PressureSeries implements SampledObservable {
     }
 
     @Override
-    public void writeCsv(Writer out) throws IOException {
-        out.write("t0,t1,Z\n");
+    public void writeRows(Writer out) throws IOException {
         StringBuilder row = new StringBuilder(80);
         for (int k = 0; k < z.size(); k++) {
             row.setLength(0);
@@ -126,7 +126,8 @@ public final class PressureSeries implements SampledObservable {
                 .put(n).put(starts.toArray(), n).put(ends.toArray(), n).put(z.toArray(), n).state(KEY);
     }
 
-    static PressureSeries restore(ObservableState state) {
+    /** The observable {@code state} was saved from ({@link #state}), continuing exactly where it stopped. */
+    public static PressureSeries restore(ObservableState state) {
         StateCodec.In in = new StateCodec.In(state, KEY, LAYOUT);
         PressureSeries p = new PressureSeries(in.nextDoubles(in.nextSize()));
         p.started = in.nextLong() == 1;

@@ -205,8 +205,7 @@ public final class RadialDistribution implements SampledObservable {
     }
 
     @Override
-    public void writeCsv(Writer out) throws IOException {
-        out.write("r,g\n");
+    public void writeRows(Writer out) throws IOException {
         double[] r = r();
         double[] g = g();
         StringBuilder row = new StringBuilder(64);
@@ -224,7 +223,8 @@ public final class RadialDistribution implements SampledObservable {
                 .put(bins).put(counts, bins).put(sumG, bins).put(sumG2, bins).state(KEY);
     }
 
-    static RadialDistribution restore(ObservableState state) {
+    /** The observable {@code state} was saved from ({@link #state}), continuing exactly where it stopped. */
+    public static RadialDistribution restore(ObservableState state) {
         StateCodec.In in = new StateCodec.In(state, KEY, LAYOUT);
         RadialDistribution gr = new RadialDistribution(in.nextDouble(), in.nextInt());
         gr.samples = in.nextLong();

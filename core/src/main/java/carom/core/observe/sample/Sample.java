@@ -8,6 +8,10 @@ import java.util.Arrays;
  * Every disc's state at one sample time, read-only: what the observables (and a trajectory frame) see.
  * Arrays are indexed by disc id; in a periodic box positions are wrapped into [0, width) x [0, height).
  *
+ * <p>A sample from a run also carries the collision virial of the pair collisions since the previous
+ * sample ({@link #virial()}), so that observables of an interval (the pressure) need nothing besides
+ * samples.
+ *
  * <p>A sample owns copies of the arrays it is built from, so an engine may keep moving its discs
  * after handing one over. The observables of this package read the arrays directly (package access);
  * other code reads them through the accessors.
@@ -22,9 +26,11 @@ public final class Sample {
     final double[] vy;
     final double[] radius;
     final int[] species;
+    final double virial;
 
-    private Sample(double time, Box box, double[] x, double[] y, double[] vx, double[] vy, double[] radius,
-                   int[] species) {
+    /** Takes the arrays as they are (the factories copy). */
+    Sample(double time, Box box, double[] x, double[] y, double[] vx, double[] vy, double[] radius,
+                   int[] species, double virial) {
         this.time = time;
         this.box = box;
         this.n = x.length;
@@ -34,6 +40,7 @@ public final class Sample {
         this.vy = vy;
         this.radius = radius;
         this.species = species;
+        this.virial = virial;
     }
 
     /**
@@ -55,7 +62,7 @@ public final class Sample {
             }
         }
         return new Sample(time, box, wx, wy, Arrays.copyOf(vx, n), Arrays.copyOf(vy, n), Arrays.copyOf(radius, n),
-                Arrays.copyOf(species, n));
+                Arrays.copyOf(species, n), 0);
     }
 
     /**
@@ -64,6 +71,15 @@ public final class Sample {
      */
     public static Sample of(double time, Box box, Discs discs) {
         return of(time, box, discs.x, discs.y, discs.vx, discs.vy, discs.radius, discs.species);
+    }
+
+    /**
+     * A sample of a run: {@code discs} at {@code time}, as {@link #of(double, Box, Discs)}, with the
+     * collision virial Σ J·|r| of the pair collisions since the run's previous sample.
+     */
+    public static Sample of(double time, Box box, Discs discs, double virialSincePreviousSample) {
+        Sample s = of(time, box, discs);
+        return new Sample(s.time, s.box, s.x, s.y, s.vx, s.vy, s.radius, s.species, virialSincePreviousSample);
     }
 
     /** {@code v} in [0, side): a position that wraps to exactly {@code side} by rounding goes to 0. */
@@ -106,6 +122,11 @@ public final class Sample {
 
     public int species(int i) {
         return species[i];
+    }
+
+    /** The collision virial Σ J·|r| of the pair collisions since the previous sample; 0 for a sample not from a run. */
+    public double virial() {
+        return virial;
     }
 
     /**

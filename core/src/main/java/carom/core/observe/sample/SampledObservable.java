@@ -2,38 +2,29 @@ package carom.core.observe.sample;
 
 import java.io.IOException;
 import java.io.Writer;
-import java.util.List;
 
 /**
  * An observable computed on the fly from {@link Sample}s, one at a time, in bounded memory (what its
- * output needs, never the samples themselves). Each writes its CSV as SPEC fixes it and saves its
- * state for a checkpoint. Single-threaded: one writer feeds it.
+ * output needs, never the samples themselves). It writes the rows of its table and saves its state for
+ * a checkpoint; its key, the table's columns and how it is made, restored and plotted are said once, in
+ * its descriptor in the command line's registry of observables. Single-threaded: one writer feeds it.
+ *
+ * <p>An implementation also has a {@code public static restore(ObservableState)} that rebuilds it from
+ * {@link #state()}, continuing bit for bit, and refuses a state of another key or layout.
  */
-public sealed interface SampledObservable
-        permits RadialDistribution, MeanSquaredDisplacement, BondOrder, PressureSeries {
-    /** The keys {@code --observe} accepts, in the order reports list them. */
-    List<String> KEYS = List.of(RadialDistribution.KEY, MeanSquaredDisplacement.KEY, BondOrder.KEY, PressureSeries.KEY);
-
-    /** The name on the command line and of the CSV ({@code KEY.csv}) and plot. */
+public interface SampledObservable {
+    /** The observable's name: on the command line, of its table ({@code KEY.csv}) and plot, and of its state. */
     String key();
 
     /** Takes the next sample; samples come in increasing time, all of the same discs in the same box. */
     void accept(Sample sample);
 
-    /** {@code KEY.csv}: a header line, then one row per point, numbers as {@link Double#toString}. */
-    void writeCsv(Writer out) throws IOException;
+    /**
+     * The rows of {@code KEY.csv} (the header line is its descriptor's): one line per point, values
+     * comma-separated as {@link Double#toString} (or {@link Long#toString} for counts) writes them.
+     */
+    void writeRows(Writer out) throws IOException;
 
     /** Everything accumulated so far, for a checkpoint. */
     ObservableState state();
-
-    /** The observable {@code state} was saved from, continuing exactly where it stopped. */
-    static SampledObservable restore(ObservableState state) {
-        return switch (state.key()) {
-            case RadialDistribution.KEY -> RadialDistribution.restore(state);
-            case MeanSquaredDisplacement.KEY -> MeanSquaredDisplacement.restore(state);
-            case BondOrder.KEY -> BondOrder.restore(state);
-            case PressureSeries.KEY -> PressureSeries.restore(state);
-            default -> throw new IllegalArgumentException("unknown observable '" + state.key() + "'");
-        };
-    }
 }

@@ -146,7 +146,7 @@ class BondOrderTest {
     }
 
     @Test
-    void csvHasOneRowPerSample() throws Exception {
+    void rowsAreOnePerSample() throws Exception {
         BondOrder psi6 = new BondOrder();
         Box box = TestSamples.box(20, 20, true);
         SplittableRandom random = new SplittableRandom(4);
@@ -154,10 +154,9 @@ class BondOrderTest {
             psi6.accept(TestSamples.idealGas(0.5 * s, box, 100, 0.5, random));
         }
         StringWriter out = new StringWriter();
-        psi6.writeCsv(out);
+        psi6.writeRows(out);
         String[] lines = out.toString().split("\n");
-        assertThat(lines).hasSize(4);
-        assertThat(lines[0]).isEqualTo("t,psi6");
-        assertThat(lines[3]).isEqualTo("1.0," + psi6.values()[2]);
+        assertThat(lines).hasSize(3);
+        assertThat(lines[2]).isEqualTo("1.0," + psi6.values()[2]);
     }
 }

@@ -26,17 +26,16 @@ class PressureSeriesTest {
         int[] species = {0, 1, 2};
         p.addVirial(99); // before the first sample: dropped
         p.accept(moving(0, new double[] {1, 2, 0}, new double[] {0, 0, 0}, species)); // KE = 1 + 2 = 3
-        p.addVirial(4);
-        p.addVirial(8);
-        p.accept(moving(0.5, new double[] {0, 0, 0}, new double[] {1, 2, 0}, species)); // KE = 3
+        p.addVirial(4); // by hand, and the rest brought by the sample
+        p.accept(TestSamples.withVirial(moving(0.5, new double[] {0, 0, 0}, new double[] {1, 2, 0}, species), 8)); // KE = 3
         p.accept(moving(1.5, new double[] {0, 0, 0}, new double[] {0, 2, 0}, species)); // KE = 2, mean 2.5
         assertThat(p.intervalStarts()).containsExactly(0.0, 0.5);
         assertThat(p.intervalEnds()).containsExactly(0.5, 1.5);
         // Z = 1 + 12 / (2 * 0.5 * 3) = 5; then no collisions: Z = 1 (an ideal gas).
         assertThat(p.compressibilities()).containsExactly(5.0, 1.0);
         StringWriter out = new StringWriter();
-        p.writeCsv(out);
-        assertThat(out.toString()).isEqualTo("t0,t1,Z\n0.0,0.5,5.0\n0.5,1.5,1.0\n");
+        p.writeRows(out);
+        assertThat(out.toString()).isEqualTo("0.0,0.5,5.0\n0.5,1.5,1.0\n");
     }
 
     @Test

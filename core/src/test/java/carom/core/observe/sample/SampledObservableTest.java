@@ -3,18 +3,19 @@ package carom.core.observe.sample;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import carom.core.observe.CollisionObserver;
 import carom.core.scene.Box;
 import java.io.IOException;
 import java.io.StringWriter;
 import java.io.UncheckedIOException;
 import java.util.Arrays;
 import java.util.SplittableRandom;
+import java.util.function.Function;
 import java.util.function.Supplier;
 import java.util.stream.Stream;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
-import org.junit.jupiter.api.Test;
 
 /** What every observable owes a checkpoint: a saved state that continues exactly, and refusal of others'. */
 class SampledObservableTest {
@@ -22,29 +23,39 @@ class SampledObservableTest {
 
     static Stream<Arguments> observables() {
         return Stream.of(
-                Arguments.of("gr", (Supplier<SampledObservable>) RadialDistribution::new),
-                Arguments.of("msd", (Supplier<SampledObservable>) () -> new MeanSquaredDisplacement(DT, 4, 5, null)),
-                Arguments.of("psi6", (Supplier<SampledObservable>) BondOrder::new),
-                Arguments.of("pressure", (Supplier<SampledObservable>) () -> new PressureSeries(new double[] {1})));
+                Arguments.of("gr", (Supplier<SampledObservable>) RadialDistribution::new,
+                        (Function<ObservableState, SampledObservable>) RadialDistribution::restore),
+                Arguments.of("msd", (Supplier<SampledObservable>) () -> new MeanSquaredDisplacement(DT, 4, 5, null),
+                        (Function<ObservableState, SampledObservable>) MeanSquaredDisplacement::restore),
+                Arguments.of("psi6", (Supplier<SampledObservable>) BondOrder::new,
+                        (Function<ObservableState, SampledObservable>) BondOrder::restore),
+                Arguments.of("pressure", (Supplier<SampledObservable>) () -> new PressureSeries(new double[] {1}),
+                        (Function<ObservableState, SampledObservable>) PressureSeries::restore),
+                Arguments.of("collisions", (Supplier<SampledObservable>) CollisionRates::new,
+                        (Function<ObservableState, SampledObservable>) CollisionRates::restore));
     }
 
-    /** Random discs taking Gaussian steps in a periodic box, with a virial between samples. */
+    /** Random discs taking Gaussian steps in a periodic box, with a virial and collisions between samples. */
     private static void feed(SampledObservable o, int from, int to, long seed) {
         Box box = TestSamples.box(15, 12, true);
         for (int s = from; s < to; s++) {
             SplittableRandom random = new SplittableRandom(seed + s);
-            Sample sample = TestSamples.idealGas(s * DT, box, 120, 0.5, random);
-            if (o instanceof PressureSeries p) {
-                p.addVirial(random.nextDouble() * 100);
+            if (o instanceof CollisionObserver listener) {
+                for (int c = random.nextInt(40); c > 0; c--) {
+                    listener.pair(s * DT, 0, 1, 1, 0, 1, 0, 1);
+                }
+                for (int c = random.nextInt(4); c > 0; c--) {
+                    listener.wall(s * DT, 0, 0, 1);
+                }
             }
-            o.accept(sample);
+            o.accept(TestSamples.withVirial(TestSamples.idealGas(s * DT, box, 120, 0.5, random), random.nextDouble() * 100));
         }
     }
 
     private static String csv(SampledObservable o) {
         StringWriter w = new StringWriter();
         try {
-            o.writeCsv(w);
+            o.writeRows(w);
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
@@ -54,7 +65,8 @@ class SampledObservableTest {
     /** Saved after any number of samples (none included), restored, fed the rest: the same bits as never stopped. */
     @ParameterizedTest(name = "{0}")
     @MethodSource("observables")
-    void restoredStateContinuesExactly(String key, Supplier<SampledObservable> create) {
+    void restoredStateContinuesExactly(String key, Supplier<SampledObservable> create,
+                                        Function<ObservableState, SampledObservable> restore) {
         int total = 70;
         SampledObservable whole = create.get();
         feed(whole, 0, total, 17);
@@ -62,7 +74,7 @@ class SampledObservableTest {
         for (int stop : new int[] {0, 1, 9, 33}) {
             SampledObservable first = create.get();
             feed(first, 0, stop, 17);
-            SampledObservable resumed = SampledObservable.restore(first.state());
+            SampledObservable resumed = restore.apply(first.state());
             assertThat(resumed.state()).isEqualTo(first.state());
             feed(resumed, stop, total, 17);
             assertThat(csv(resumed)).as("stopped after %d samples", stop).isEqualTo(csv(whole));
@@ -72,7 +84,8 @@ class SampledObservableTest {
 
     @ParameterizedTest(name = "{0}")
     @MethodSource("observables")
-    void refusesTruncatedForeignAndOtherVersionStates(String key, Supplier<SampledObservable> create) {
+    void refusesTruncatedForeignAndOtherVersionStates(String key, Supplier<SampledObservable> create,
+                                                      Function<ObservableState, SampledObservable> restore) {
         SampledObservable o = create.get();
         feed(o, 0, 5, 3);
         ObservableState state = o.state();
@@ -81,19 +94,14 @@ class SampledObservableTest {
         ObservableState truncated = doubles.length > 0
                 ? new ObservableState(key, longs, Arrays.copyOf(doubles, doubles.length - 1))
                 : new ObservableState(key, Arrays.copyOf(longs, longs.length - 1), doubles);
-        assertThatThrownBy(() -> SampledObservable.restore(truncated)).isInstanceOf(IllegalArgumentException.class);
+        assertThatThrownBy(() -> restore.apply(truncated)).isInstanceOf(IllegalArgumentException.class);
         ObservableState longer = new ObservableState(key, longs, Arrays.copyOf(doubles, doubles.length + 1));
-        assertThatThrownBy(() -> SampledObservable.restore(longer)).isInstanceOf(IllegalArgumentException.class);
+        assertThatThrownBy(() -> restore.apply(longer)).isInstanceOf(IllegalArgumentException.class);
         long[] otherVersion = longs.clone();
         otherVersion[0] = 99;
-        assertThatThrownBy(() -> SampledObservable.restore(new ObservableState(key, otherVersion, doubles)))
+        assertThatThrownBy(() -> restore.apply(new ObservableState(key, otherVersion, doubles)))
                 .isInstanceOf(IllegalArgumentException.class).hasMessageContaining("layout");
-        assertThatThrownBy(() -> SampledObservable.restore(new ObservableState("nope", longs, doubles)))
+        assertThatThrownBy(() -> restore.apply(new ObservableState("nope", longs, doubles)))
                 .isInstanceOf(IllegalArgumentException.class);
-    }
-
-    @Test
-    void keysAreTheOnesSpecNames() {
-        assertThat(SampledObservable.KEYS).containsExactly("gr", "msd", "psi6", "pressure");
     }
 }

@@ -42,6 +42,11 @@ final class TestSamples {
         return Sample.of(time, box, x, y, new double[n], new double[n], r, new int[n]);
     }
 
+    /** {@code s} as a run's sample that brings {@code virial} since the previous one. */
+    static Sample withVirial(Sample s, double virial) {
+        return new Sample(s.time, s.box, s.x, s.y, s.vx, s.vy, s.radius, s.species, virial);
+    }
+
     static double gaussian(SplittableRandom random) {
         double u = 1 - random.nextDouble();
         return Math.sqrt(-2 * Math.log(u)) * Math.cos(2 * Math.PI * random.nextDouble());
