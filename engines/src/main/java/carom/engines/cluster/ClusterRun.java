@@ -43,6 +43,7 @@ import carom.engines.slabs.StateBatch;
 import carom.engines.slabs.WindowCoordinator;
 import carom.engines.slabs.WindowCounts;
 import carom.engines.slabs.WindowDomains;
+import carom.engines.slabs.WindowVerifier;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
@@ -433,26 +434,17 @@ final class ClusterRun implements WindowDomains {
     }
 
     @Override
-    public double verify(double start, double limit) {
-        return mirror.verify(start, limit);
-    }
-
-    @Override
-    public int violationX() {
-        return mirror.violationX();
-    }
-
-    @Override
-    public int violationY() {
-        return mirror.violationY();
+    public WindowVerifier verifier() {
+        return mirror.verifier();
     }
 
     /** An {@link Undo} to every node; the restored records go into the mirror (the window's bytes too). */
     @Override
     public void undo(double tStar, boolean contact) {
         long before = bytes;
-        for (Reply r : askAll("undo", d -> rt -> new Undo(tStar, contact ? mirror.keepDisc(d) : -1,
-                contact ? mirror.keepEntry(d) : -2, rt))) {
+        WindowVerifier v = mirror.verifier();
+        for (Reply r : askAll("undo", d -> rt -> new Undo(tStar, contact ? v.keepDisc(d) : -1,
+                contact ? v.keepEntry(d) : -2, rt))) {
             mirror.importStates(((Undone) r).changed());
         }
         windowBytes += bytes - before;

@@ -13,7 +13,7 @@ import carom.engines.kernel.DiscTable;
  * are cross events. They are predicted for every mobile disc in an edge cell ({@link #predict}),
  * into a {@link CrossHeap} keyed by time; a prediction against disc j is valid while j's collision
  * counter is unchanged, exactly as in the kernel. The heap's earliest valid event bounds the next
- * window ({@link SlabsRun}).
+ * window ({@link WindowCoordinator}).
  */
 final class CrossPredictions {
     /** Partner code: the disc's next event is its migration into a foreign cell. */

@@ -10,8 +10,9 @@ import carom.engines.kernel.SavedStates;
 import carom.engines.kernel.TableState;
 
 /**
- * The coordinator's side of the {@code cluster} engine's slabs: what {@link SlabsRun} does between
- * windows, on a table of the coordinator's own that mirrors only the edge cells. The slabs run
+ * The coordinator's side of the {@code cluster} engine's slabs: what the slabs' threads adapter
+ * ({@link SlabsRun}) does between windows for the {@link WindowCoordinator}, on a table of the
+ * coordinator's own that mirrors only the edge cells. The slabs run
  * in other JVMs ({@link SlabNode}) and send, after each window, the current records and logged
  * edge-cell segments of the discs that changed in an edge cell; nothing else.
  *
@@ -124,32 +125,9 @@ public final class SlabMirror {
         reports.report(d, changed, segs);
     }
 
-    /**
-     * The earliest contact before {@code limit} between a disc that changed in the window (which
-     * began at local {@code start}) and a foreign disc, on the segments the discs really followed
-     * ({@link WindowVerifier}, over the reports); its time, +Infinity if none.
-     */
-    public double verify(double start, double limit) {
-        return verifier.verify(start, limit);
-    }
-
-    /** The violating discs of the last {@link #verify}. */
-    public int violationX() {
-        return verifier.violationX();
-    }
-
-    public int violationY() {
-        return verifier.violationY();
-    }
-
-    /** The violating disc of domain d, if it holds one (its creating event must stand), else -1. */
-    public int keepDisc(int d) {
-        return verifier.keepDisc(d);
-    }
-
-    /** That disc's segment as domain d's log names it. */
-    public int keepEntry(int d) {
-        return verifier.keepEntry(d);
+    /** The check of the window against the reports ({@link #windowReport}). */
+    public WindowVerifier verifier() {
+        return verifier;
     }
 
     /** Changed edge discs of every domain (records as now imported) get new cross predictions from {@code now}. */

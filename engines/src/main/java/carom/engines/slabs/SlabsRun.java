@@ -364,18 +364,8 @@ final class SlabsRun implements WindowDomains {
     }
 
     @Override
-    public double verify(double start, double limit) {
-        return verifier.verify(start, limit);
-    }
-
-    @Override
-    public int violationX() {
-        return verifier.violationX();
-    }
-
-    @Override
-    public int violationY() {
-        return verifier.violationY();
+    public WindowVerifier verifier() {
+        return verifier;
     }
 
     @Override

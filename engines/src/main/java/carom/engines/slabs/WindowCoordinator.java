@@ -160,7 +160,8 @@ public final class WindowCoordinator {
             counts.windowNanos += t1 - t0;
             boolean stopped = stop < end;
             double reached = stopped ? stop : end;
-            double violation = domains.verify(now, reached);
+            WindowVerifier verifier = domains.verifier();
+            double violation = verifier.verify(now, reached);
             boolean contact = violation <= reached;
             double tStar = contact ? violation : reached;
             if (contact || stopped) {
@@ -171,7 +172,7 @@ public final class WindowCoordinator {
             }
             domains.predictChanged(tStar);
             if (contact) {
-                collide(domains.violationX(), domains.violationY(), tStar);
+                collide(verifier.violationX(), verifier.violationY(), tStar);
             } else if (stopped) {
                 migrate(domains.stopDisc(), tStar);
             } else if (end == h && h <= untilLocal && domains.topStillValid(top)) {

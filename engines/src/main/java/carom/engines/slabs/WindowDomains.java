@@ -11,7 +11,7 @@ import carom.core.state.Discs;
  * except {@link #runWindow}, which runs one window in every domain and returns when all are done.
  * Times are local: they count from {@link #epoch}, which only {@link #rebase} moves. Discs are
  * internal ids, the same in every domain. After {@link #runWindow}: {@link #stopDisc} and
- * {@link #verify} describe that window, {@link #undo} rolls it back, {@link #predictChanged} re-predicts
+ * {@link #verifier} describe that window, {@link #undo} rolls it back, {@link #predictChanged} re-predicts
  * its changed edge discs' cross events; the serial phase then carries out at most one cross event
  * ({@link #collide}, {@link #migrate}), and {@link #afterWindow} the adapter's own work.
  */
@@ -58,16 +58,8 @@ public interface WindowDomains {
     /** The disc of the earliest stop of the last window (its migration), or -1. */
     int stopDisc();
 
-    /**
-     * The earliest contact before {@code limit} between a disc that changed in the window (which began
-     * at local {@code start}) and a foreign disc, on the segments they really followed; +Infinity if none.
-     */
-    double verify(double start, double limit);
-
-    /** The two discs of the violation {@link #verify} found. */
-    int violationX();
-
-    int violationY();
+    /** The check of the last window against the segments its discs really followed. */
+    WindowVerifier verifier();
 
     /**
      * Every domain undoes its events at or after {@code tStar}; with {@code contact}, the event that

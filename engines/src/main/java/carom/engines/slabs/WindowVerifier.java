@@ -21,7 +21,7 @@ import carom.engines.kernel.DiscTable;
  * the cluster coordinator's copy of the nodes' reports ({@link ReportedSegments}); the current records
  * are read from {@code table} (the shared records, or the coordinator's mirror of the edge cells).
  */
-final class WindowVerifier {
+public final class WindowVerifier {
     /** Log entry codes of a segment: the disc's current record, or a disc without an event in the window. */
     static final int RECORD = -1;
     static final int UNTOUCHED = -2;
@@ -53,26 +53,22 @@ final class WindowVerifier {
         this.boundary = table.boundary;
     }
 
-    /** The earliest violation's time, +Infinity if none; its two discs. */
-    double violationTime() {
-        return violation.time();
-    }
-
-    int violationX() {
+    /** The two discs of the earliest violation the last {@link #verify} found. */
+    public int violationX() {
         return violation.x();
     }
 
-    int violationY() {
+    public int violationY() {
         return violation.y();
     }
 
     /** The violating disc of domain d, if it holds one (its creating event must stand), else -1. */
-    int keepDisc(int d) {
+    public int keepDisc(int d) {
         return violation.discOf(d);
     }
 
     /** That disc's segment as domain d's log names it ({@link #UNTOUCHED} if d holds neither disc). */
-    int keepEntry(int d) {
+    public int keepEntry(int d) {
         return violation.entryOf(d, UNTOUCHED);
     }
 
@@ -81,7 +77,7 @@ final class WindowVerifier {
      * (which began at local {@code start}) and a foreign disc, with the segments the discs really
      * followed; returns its time, +Infinity if none.
      */
-    double verify(double start, double limit) {
+    public double verify(double start, double limit) {
         violation.reset();
         for (int a = 0; a < grid.domains; a++) {
             for (int q = 0; q < segments.changedCount(a); q++) {
