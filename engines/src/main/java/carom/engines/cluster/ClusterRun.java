@@ -42,6 +42,7 @@ import carom.engines.slabs.SlabMirror;
 import carom.engines.slabs.StateBatch;
 import carom.engines.slabs.WindowCoordinator;
 import carom.engines.slabs.WindowCounts;
+import carom.engines.slabs.WindowCheck;
 import carom.engines.slabs.WindowDomains;
 import carom.engines.slabs.WindowVerifier;
 import java.time.Duration;
@@ -434,7 +435,7 @@ final class ClusterRun implements WindowDomains {
     }
 
     @Override
-    public WindowVerifier verifier() {
+    public WindowCheck check() {
         return mirror.verifier();
     }
 

@@ -364,7 +364,7 @@ final class SlabsRun implements WindowDomains {
     }
 
     @Override
-    public WindowVerifier verifier() {
+    public WindowCheck check() {
         return verifier;
     }
 

@@ -160,8 +160,8 @@ public final class WindowCoordinator {
             counts.windowNanos += t1 - t0;
             boolean stopped = stop < end;
             double reached = stopped ? stop : end;
-            WindowVerifier verifier = domains.verifier();
-            double violation = verifier.verify(now, reached);
+            WindowCheck check = domains.check();
+            double violation = check.verify(now, reached);
             boolean contact = violation <= reached;
             double tStar = contact ? violation : reached;
             if (contact || stopped) {
@@ -172,7 +172,7 @@ public final class WindowCoordinator {
             }
             domains.predictChanged(tStar);
             if (contact) {
-                collide(verifier.violationX(), verifier.violationY(), tStar);
+                collide(check.violationX(), check.violationY(), tStar);
             } else if (stopped) {
                 migrate(domains.stopDisc(), tStar);
             } else if (end == h && h <= untilLocal && domains.topStillValid(top)) {

@@ -11,7 +11,7 @@ import carom.core.state.Discs;
  * except {@link #runWindow}, which runs one window in every domain and returns when all are done.
  * Times are local: they count from {@link #epoch}, which only {@link #rebase} moves. Discs are
  * internal ids, the same in every domain. After {@link #runWindow}: {@link #stopDisc} and
- * {@link #verifier} describe that window, {@link #undo} rolls it back, {@link #predictChanged} re-predicts
+ * {@link #check} describe that window, {@link #undo} rolls it back, {@link #predictChanged} re-predicts
  * its changed edge discs' cross events; the serial phase then carries out at most one cross event
  * ({@link #collide}, {@link #migrate}), and {@link #afterWindow} the adapter's own work.
  */
@@ -59,7 +59,7 @@ public interface WindowDomains {
     int stopDisc();
 
     /** The check of the last window against the segments its discs really followed. */
-    WindowVerifier verifier();
+    WindowCheck check();
 
     /**
      * Every domain undoes its events at or after {@code tStar}; with {@code contact}, the event that

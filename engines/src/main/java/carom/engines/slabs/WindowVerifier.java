@@ -21,7 +21,7 @@ import carom.engines.kernel.DiscTable;
  * the cluster coordinator's copy of the nodes' reports ({@link ReportedSegments}); the current records
  * are read from {@code table} (the shared records, or the coordinator's mirror of the edge cells).
  */
-public final class WindowVerifier {
+public final class WindowVerifier implements WindowCheck {
     /** Log entry codes of a segment: the disc's current record, or a disc without an event in the window. */
     static final int RECORD = -1;
     static final int UNTOUCHED = -2;
@@ -53,11 +53,12 @@ public final class WindowVerifier {
         this.boundary = table.boundary;
     }
 
-    /** The two discs of the earliest violation the last {@link #verify} found. */
+    @Override
     public int violationX() {
         return violation.x();
     }
 
+    @Override
     public int violationY() {
         return violation.y();
     }
@@ -72,11 +73,8 @@ public final class WindowVerifier {
         return violation.entryOf(d, UNTOUCHED);
     }
 
-    /**
-     * Finds the earliest contact before {@code limit} between a disc that changed in the window
-     * (which began at local {@code start}) and a foreign disc, with the segments the discs really
-     * followed; returns its time, +Infinity if none.
-     */
+    /** Also keeps the contact's discs, their domains and segments for {@link #keepDisc} and {@link #keepEntry}. */
+    @Override
     public double verify(double start, double limit) {
         violation.reset();
         for (int a = 0; a < grid.domains; a++) {
