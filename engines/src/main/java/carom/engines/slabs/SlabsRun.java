@@ -29,7 +29,7 @@ import java.util.Arrays;
  * coordinator's thread, no window, no log, no verification. A window's cost (barrier, verification,
  * serial phase, and on a rollback every event after the violating contact) is paid per cross-slab
  * contact; where discs touch across a slab edge all the time, a settling pile or a Galton board's
- * floor, windows held a handful of events and undid hundreds, and the run was 20 times slower than
+ * floor, windows held a handful of events and undid hundreds, and the run was many times slower than
  * {@code fast} (lab note {@code slabs-granular}). So the run starts merged for a few thousand events (a
  * small scene never splits and never starts a thread). A merged phase counts the events that would have
  * been cross-slab ones; a window ends at one of those at the latest, so when they are too frequent for
