@@ -38,6 +38,7 @@ import carom.engines.cluster.Protocol.Undone;
 import carom.engines.cluster.Protocol.Window;
 import carom.engines.cluster.Protocol.WindowDone;
 import carom.engines.kernel.KernelTunables;
+import carom.engines.slabs.CrossEvents;
 import carom.engines.slabs.SlabMirror;
 import carom.engines.slabs.StateBatch;
 import carom.engines.slabs.WindowCoordinator;
@@ -390,23 +391,8 @@ final class ClusterRun implements WindowDomains {
     }
 
     @Override
-    public int validTop(double now) {
-        return mirror.validTop(now);
-    }
-
-    @Override
-    public double crossTime(int i) {
-        return mirror.crossTime(i);
-    }
-
-    @Override
-    public boolean topStillValid(int i) {
-        return mirror.topStillValid(i);
-    }
-
-    @Override
-    public int crossPartner(int i) {
-        return mirror.crossPartner(i);
+    public CrossEvents crossEvents() {
+        return mirror.crossEvents();
     }
 
     /** A {@link Window} to every node; their reports go into the mirror (the messages count as the window's bytes). */

@@ -56,7 +56,7 @@ public final class SlabMirror {
             views[d] = new Domain(d, table, grid, marks, clock, task, null, ProgressListener.NONE, scene);
         }
         this.motion = views[0].motion;
-        this.cross = k > 1 ? new CrossPredictions(table, grid, views) : null;
+        this.cross = k > 1 ? new CrossPredictions(table, grid, views, marks) : null;
         this.scratch = new SavedStates(motion, 4);
         this.doublesPer = scratch.doublesPerState();
         this.stall = new StallGuard(scene, table::sceneId);
@@ -146,24 +146,9 @@ public final class SlabMirror {
         }
     }
 
-    /** The earliest valid cross event's disc from local {@code now}, or -1. */
-    public int validTop(double now) {
-        return cross == null ? -1 : cross.validTop(now);
-    }
-
-    public double crossTime(int i) {
-        return cross.time(i);
-    }
-
-    /** Disc i's cross partner: a disc, or negative for a migration. */
-    public int crossPartner(int i) {
-        int p = cross.partner(i);
-        return p == CrossPredictions.MIGRATE ? -1 : p;
-    }
-
-    /** Whether the top event may be processed now: neither disc changed in the window, the prediction holds. */
-    public boolean topStillValid(int i) {
-        return !marks.changedThisWindow(i) && cross.valid(i);
+    /** The cross events predicted on the mirror ({@link CrossEvents#NONE} with one slab). */
+    public CrossEvents crossEvents() {
+        return cross == null ? CrossEvents.NONE : cross;
     }
 
     public long crossPredictions() {

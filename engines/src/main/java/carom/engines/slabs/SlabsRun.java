@@ -171,7 +171,7 @@ final class SlabsRun implements WindowDomains {
         this.policy = new MergePolicy(options, n);
         this.merged = !many || policy.startsMerged();
         this.workers = new Thread[sequential ? 0 : k - 1];
-        this.cross = many ? new CrossPredictions(table, grid, domains) : null;
+        this.cross = many ? new CrossPredictions(table, grid, domains, marks) : null;
         this.verifier = many ? new WindowVerifier(table, grid, marks, domains[0].motion, new LoggedSegments(domains, marks))
                 : null;
         this.samples = SampleSchedule.of(scene, options);
@@ -313,24 +313,8 @@ final class SlabsRun implements WindowDomains {
     }
 
     @Override
-    public int validTop(double now) {
-        return cross.validTop(now);
-    }
-
-    @Override
-    public double crossTime(int i) {
-        return cross.time(i);
-    }
-
-    @Override
-    public boolean topStillValid(int i) {
-        return !marks.changedThisWindow(i) && cross.valid(i);
-    }
-
-    @Override
-    public int crossPartner(int i) {
-        int p = cross.partner(i);
-        return p == CrossPredictions.MIGRATE ? -1 : p;
+    public CrossEvents crossEvents() {
+        return cross == null ? CrossEvents.NONE : cross;
     }
 
     @Override

@@ -16,8 +16,8 @@ import carom.engines.kernel.DiscTable;
  * comes first. Every domain processes its own events before the end in parallel, stopping early at a
  * migration; then the window is verified: the earliest contact t* of a changed edge disc with a
  * foreign disc on their real segments (or the earliest stop) is a violation, and every domain undoes
- * its events at or after t*. The violating contact, or the stop's migration, or else the cross event
- * at H, is then processed serially, and the changed edge discs are re-predicted. A run that is merged
+ * its events at or after t*. The changed edge discs get new cross predictions, and then the violating
+ * contact, or the stop's migration, or else the cross event at H, is processed serially. A run that is merged
  * ({@link WindowDomains#merged}) runs the pass on one domain instead, without window.
  *
  * <p>Why it is exact: a domain's events before t* read only its own discs, and no foreign disc touched
@@ -132,8 +132,9 @@ public final class WindowCoordinator {
             double untilLocal = domains.untilLocal();
             boolean merged = domains.merged();
             // The earliest valid cross event bounds the window, and so do the next resync and sample.
-            int top = merged ? -1 : domains.validTop(now);
-            double h = top >= 0 ? domains.crossTime(top) : INF;
+            CrossEvents cross = domains.crossEvents();
+            int top = merged ? -1 : cross.validTop(now);
+            double h = top >= 0 ? cross.time(top) : INF;
             double end = Math.min(Math.min(Math.min(h, resyncAt), sampleLocal), untilLocal);
             boolean last = end == untilLocal && h > untilLocal && resyncAt > untilLocal;
             if (checkpoints != null) {
@@ -175,10 +176,10 @@ public final class WindowCoordinator {
                 collide(check.violationX(), check.violationY(), tStar);
             } else if (stopped) {
                 migrate(domains.stopDisc(), tStar);
-            } else if (end == h && h <= untilLocal && domains.topStillValid(top)) {
+            } else if (end == h && h <= untilLocal && cross.dueAfterWindow(top)) {
                 // (A top whose disc or partner changed in the window is not processed: the next window,
                 // from here, re-predicts it.)
-                int p = domains.crossPartner(top);
+                int p = cross.partnerOrMigration(top);
                 if (p < 0) {
                     migrate(top, h);
                 } else {

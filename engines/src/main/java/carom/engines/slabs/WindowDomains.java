@@ -37,17 +37,8 @@ public interface WindowDomains {
      */
     double runMerged(double end, boolean inclusive);
 
-    /** The earliest valid cross event from local {@code now} (stale ones re-predicted): its disc, or -1. */
-    int validTop(double now);
-
-    /** Local time of disc i's cross event. */
-    double crossTime(int i);
-
-    /** Whether disc i's cross event may be processed now: neither disc changed in the window, the prediction holds. */
-    boolean topStillValid(int i);
-
-    /** Disc i's cross partner: a disc, or -1 for its migration into a foreign domain. */
-    int crossPartner(int i);
+    /** The cross events, predicted on the coordinator's side between windows. */
+    CrossEvents crossEvents();
 
     /**
      * Runs a window: every domain processes its own events before {@code end} (up to it if

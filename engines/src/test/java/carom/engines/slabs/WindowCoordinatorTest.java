@@ -84,7 +84,7 @@ class WindowCoordinatorTest {
      * -1), some found stale when due (then predicted again a little later); each window stops early, or
      * finds a violation, at random.
      */
-    private static final class ScriptedDomains implements WindowDomains, WindowCheck {
+    private static final class ScriptedDomains implements WindowDomains, WindowCheck, CrossEvents {
         private final SplittableRandom random;
         private final double stopChance;
         private final double violationChance;
@@ -147,6 +147,11 @@ class WindowCoordinatorTest {
         }
 
         @Override
+        public CrossEvents crossEvents() {
+            return this;
+        }
+
+        @Override
         public int validTop(double now) {
             windowStart = now;
             int top = -1;
@@ -159,12 +164,12 @@ class WindowCoordinatorTest {
         }
 
         @Override
-        public double crossTime(int i) {
+        public double time(int i) {
             return crossAt[i] - epoch;
         }
 
         @Override
-        public boolean topStillValid(int i) {
+        public boolean dueAfterWindow(int i) {
             if (random.nextDouble() < staleChance) {
                 crossAt[i] += random.nextDouble(0.5);
                 return false;
@@ -173,7 +178,7 @@ class WindowCoordinatorTest {
         }
 
         @Override
-        public int crossPartner(int i) {
+        public int partnerOrMigration(int i) {
             return partner[i];
         }
 
