@@ -1,13 +1,12 @@
 package carom.engines.cluster;
 
-import carom.core.engine.Checkpoints;
-import carom.core.engine.PassCheckpoints;
 import carom.core.engine.StateBytes;
 import carom.core.observe.VirialAccumulator;
 import carom.engines.cluster.Protocol.RestoreState;
 import carom.engines.cluster.Protocol.SaveState;
 import carom.engines.cluster.Protocol.SavedState;
 import carom.engines.slabs.StateBatch;
+import carom.engines.slabs.WindowCounts;
 import java.io.ByteArrayOutputStream;
 import java.util.ArrayList;
 import java.util.List;
@@ -15,7 +14,7 @@ import java.util.Map;
 
 /**
  * A cluster run's checkpoint file state ({@code --checkpoint}), taken at the start of a window
- * ({@link ClusterRun}), every node idle: the coordinator's clocks and counters, its mirror of the edge
+ * (when to take one is the {@link carom.engines.slabs.WindowCoordinator}'s schedule), every node idle: the coordinator's clocks and counters, its mirror of the edge
  * columns, the recovery {@link Checkpoint} it holds, and every node's whole state (table, calendar,
  * counters: {@link carom.engines.slabs.SlabNode#save}), gathered in parts of at most
  * {@link NodeActor#STATE_PART} bytes. Nothing is predicted anew on resume, so a resumed run continues
@@ -30,28 +29,7 @@ import java.util.Map;
 final class ClusterCheckpoint {
     private static final String TAG = "cluster/3";
 
-    private final ClusterRun run;
-    /** When to save: the schedule every engine that saves at pass starts shares. */
-    private final PassCheckpoints schedule;
-
-    ClusterCheckpoint(ClusterRun run, Checkpoints sink) {
-        this.run = run;
-        this.schedule = new PassCheckpoints(sink);
-    }
-
-    /** A resumed run takes up the periodic checkpoints after absolute {@code time}. */
-    void resumedAt(double time) {
-        schedule.resumedAt(time);
-    }
-
-    /** At the start of a window at local {@code now} ({@link PassCheckpoints#atPassStart}). */
-    void atPassStart(double now, boolean mayEnd) {
-        schedule.atPassStart(run.mirror.epoch() + now, mayEnd, () -> save(run, now));
-    }
-
-    /** The end's checkpoint: the start of the window that reached until. */
-    void atEnd() {
-        schedule.atEnd();
+    private ClusterCheckpoint() {
     }
 
     /** The run's state at local {@code now}, the start of a window. */
@@ -72,11 +50,12 @@ final class ClusterCheckpoint {
             }
             nodeStates[d] = whole.toByteArray();
         }
+        WindowCounts counts = run.coordinator.counts();
         StateBytes.Out out = new StateBytes.Out(TAG).putInt(run.nodes.size() / run.slabsPerJvm).putInt(run.slabsPerJvm)
                 .putInt(run.domains)
-                .putDouble(run.until).putDouble(now).putDouble(run.resyncAt).putLong(run.samples.index())
-                .putLongs(new long[] {run.windows, run.commits, run.rollbacks, run.crossDomainEvents, run.migrations,
-                    run.resyncs, run.recoveries, run.messageCount, run.bytes, run.windowBytes, run.crossEventBytes})
+                .putDouble(run.until).putDouble(now).putDouble(run.coordinator.resyncAt()).putLong(run.samples.index())
+                .putLongs(new long[] {counts.windows, counts.commits, counts.rollbacks, counts.crossDomainEvents,
+                    counts.migrations, counts.resyncs, run.recoveries, run.messageCount, run.bytes, run.windowBytes, run.crossEventBytes})
                 .putInt(run.messages.size());
         for (Map.Entry<String, Long> e : run.messages.entrySet()) {
             out.putString(e.getKey()).putLong(e.getValue());
@@ -145,15 +124,16 @@ final class ClusterCheckpoint {
         }
         double savedUntil = in.getDouble();
         double now = in.getDouble();
-        run.resyncAt = in.getDouble();
+        run.coordinator.resyncAt(in.getDouble());
         run.samples.resumeAt(in.getLong());
         long[] c = in.getLongs(11);
-        run.windows = c[0];
-        run.commits = c[1];
-        run.rollbacks = c[2];
-        run.crossDomainEvents = c[3];
-        run.migrations = c[4];
-        run.resyncs = c[5];
+        WindowCounts counts = run.coordinator.counts();
+        counts.windows = c[0];
+        counts.commits = c[1];
+        counts.rollbacks = c[2];
+        counts.crossDomainEvents = c[3];
+        counts.migrations = c[4];
+        counts.resyncs = c[5];
         run.recoveries = c[6];
         run.messageCount = c[7];
         run.bytes = c[8];

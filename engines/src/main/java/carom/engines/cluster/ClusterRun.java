@@ -5,7 +5,6 @@ import akka.actor.typed.ActorSystem;
 import akka.actor.typed.javadsl.AskPattern;
 import akka.serialization.Serialization;
 import akka.serialization.SerializationExtension;
-import carom.core.engine.Counter;
 import carom.core.engine.EngineFailure;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
@@ -38,10 +37,15 @@ import carom.engines.cluster.Protocol.Undo;
 import carom.engines.cluster.Protocol.Undone;
 import carom.engines.cluster.Protocol.Window;
 import carom.engines.cluster.Protocol.WindowDone;
-import carom.engines.kernel.DiscTable;
 import carom.engines.kernel.KernelTunables;
+import carom.engines.slabs.CrossEvents;
 import carom.engines.slabs.SlabMirror;
 import carom.engines.slabs.StateBatch;
+import carom.engines.slabs.WindowCoordinator;
+import carom.engines.slabs.WindowCounts;
+import carom.engines.slabs.WindowCheck;
+import carom.engines.slabs.WindowDomains;
+import carom.engines.slabs.WindowVerifier;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
@@ -56,16 +60,17 @@ import java.util.function.IntFunction;
 import java.util.function.ObjIntConsumer;
 
 /**
- * One run of the cluster engine, on the coordinator: the slabs' protocol ({@code SlabsRun}'s windows,
- * verification, rollback and serial cross-domain events) with every slab in a node of its own and
- * the coordinator's view of the edge cells in a {@link SlabMirror}. Per window: a {@link Window}
- * to every node and its {@link WindowDone} (the changed edge discs' records and segments); on a
- * violation an {@link Undo} and {@link Undone} round; then the cross event, a collision computed on
- * the mirror and {@link Install}ed at both owners, or a migration ({@link Emigrate}, then
- * {@link Install} at the new owner). Every message is counted with its serialized size.
+ * One run of the cluster engine, on the coordinator: the Akka adapter of the slabs' window protocol
+ * ({@link WindowDomains}; the {@link WindowCoordinator} runs the windows, verification, rollback and
+ * serial cross-domain events through this class), with every slab in a node of its own and the
+ * coordinator's view of the edge cells in a {@link SlabMirror}. Per window: a {@link Window} to every
+ * node and its {@link WindowDone} (the changed edge discs' records and segments); on a violation an
+ * {@link Undo} and {@link Undone} round; then the cross event, a collision computed on the mirror and
+ * {@link Install}ed at both owners, or a migration ({@link Emigrate}, then {@link Install} at the new
+ * owner). Every message is counted with its serialized size.
  *
- * <p>Samples ({@code --every}): windows end at the next sample's time, as in {@code SlabsRun}; between
- * them the coordinator gathers every slab's discs at that time ({@link SampleAt}).
+ * <p>Samples ({@code --every}): between windows the coordinator gathers every slab's discs at the
+ * sample's time ({@link SampleAt}).
  *
  * <p>Faults: every {@link #CHECKPOINT_WINDOWS} windows the coordinator takes a {@link Checkpoint}
  * (the first is the scene); when a node is lost (ClusterLife#lostNode), the run carries on from the last one on
@@ -73,7 +78,7 @@ import java.util.function.ObjIntConsumer;
  * {@link ClusterCheckpoint}) is another thing: every node's whole state at the start of a window, so
  * that {@code resume} continues with the very same bits.
  */
-final class ClusterRun {
+final class ClusterRun implements WindowDomains {
     static final Tunable.Whole NODES = new Tunable.Whole("nodes", 2, 1, 64, "JVMs",
             "JVMs of the cluster: this one and nodes-1 workers it starts on 127.0.0.1 (--nodes K sets it)");
     static final Tunable.Real JOIN_SECONDS = Tunable.Real.above("joinSeconds", 120, 0, "seconds",
@@ -101,34 +106,28 @@ final class ClusterRun {
     int slabsPerJvm;
     SlabMirror mirror;
     int domains;
-    // The counters, which a checkpoint file keeps (ClusterCheckpoint).
+    /** The window protocol, run through this class. */
+    final WindowCoordinator coordinator;
+    // The counters, which a checkpoint file keeps (ClusterCheckpoint), beside the protocol's (coordinator.counts()).
     final Map<String, Long> messages = new TreeMap<>();
     long messageCount;
     long bytes;
     long windowBytes;
     long crossEventBytes;
-    long windows;
-    long commits;
-    long rollbacks;
-    long crossDomainEvents;
-    long migrations;
-    long resyncs;
-    double resyncAt;
     private final long checkpointWindows;
     /** The last checkpoint; the slabs' counters and virial lost with the slabs a recovery replaced. */
     Checkpoint checkpoint;
     long[] counterBase = SlabCounts.none();
     double[] virialBase;
     long recoveries;
-    /** Samples asked for ({@code --every}), and the next one's local time (+Infinity if none). */
+    /** Samples asked for ({@code --every}). */
     final SampleSchedule samples;
-    private double sampleLocal;
-    /** The run's checkpoint files, or null without; collisions before the one a resumed run started from. */
-    private final ClusterCheckpoint checkpoints;
+    /** Collisions before the checkpoint a resumed run started from. */
     long collisionsBefore;
-    /** Wall time from sending the windows to having read every node's report, and in the rest of the loop. */
-    long windowNanos;
+    /** Wall time in the coordinator's run of passes (windows, serial phases, samples). */
     long loopNanos;
+    /** The last window's earliest stop's disc (its migration), or -1. */
+    private int stopDisc;
     /** Whether a slab or the mirror has put discs to sleep, and whether every slab has been told so. */
     private boolean slept;
     boolean sleepersNoted;
@@ -152,7 +151,7 @@ final class ClusterRun {
         this.checkpointWindows = CHECKPOINT_WINDOWS.of(options);
         this.virialBase = VirialAccumulator.forRun(until).blockSums();
         this.samples = SampleSchedule.of(scene, options);
-        this.checkpoints = options.checkpoints() == null ? null : new ClusterCheckpoint(this, options.checkpoints());
+        this.coordinator = new WindowCoordinator(this, samples, until, options.checkpoints(), PROGRESS_WINDOWS);
     }
 
     RunResult run() {
@@ -203,24 +202,15 @@ final class ClusterRun {
                         } else {
                             resumed.restoreNodes(this);
                             now = resumed.now();
-                            if (checkpoints != null) {
-                                checkpoints.resumedAt(mirror.epoch() + now);
-                            }
+                            coordinator.resumedAt(mirror.epoch() + now);
                         }
                     }
                     // Samples already handed out (before a recovery's checkpoint, or a resumed one's) are not again.
-                    sampleLocal = samples.next() - mirror.epoch();
                     long loopStart = System.nanoTime();
                     try {
-                        loop(now);
+                        coordinator.run(now);
                     } finally {
                         loopNanos += System.nanoTime() - loopStart;
-                    }
-                    while (samples.next() <= until) {
-                        sample();
-                    }
-                    if (checkpoints != null) {
-                        checkpoints.atEnd();
                     }
                     finals = finish();
                     break;
@@ -242,7 +232,8 @@ final class ClusterRun {
             double seconds = (System.nanoTime() - started) * 1e-9;
             double energyEnd = Observables.kineticEnergy(out);
             Pressure pressure = VirialAccumulator.pressureOf(virial, scene, out, energyStart, energyEnd);
-            long events = sums[SlabCounts.EVENTS] + crossDomainEvents + migrations;
+            WindowCounts counts = coordinator.counts();
+            long events = sums[SlabCounts.EVENTS] + counts.crossDomainEvents + counts.migrations;
             return new RunResult("cluster", true, out, until, sums[SlabCounts.PAIR_COLLISIONS] + mirror.crossPairCollisions,
                     sums[SlabCounts.WALL_COLLISIONS], events,
                     energyStart, energyEnd, momentumStart, Observables.momentum(out), pressure, 0, seconds,
@@ -280,7 +271,7 @@ final class ClusterRun {
             span = Math.max(span, s.span());
         }
         mirror.predictAllCross(0);
-        resyncAt = DiscTable.RESYNC_SPANS * span;
+        coordinator.calendarsPlanned(span);
     }
 
     /**
@@ -304,7 +295,7 @@ final class ClusterRun {
         // The mirror's rest counts go with the slabs': a recovery starts a new mirror from none.
         SlabCounts.add(slabCounters, mirror.restCounts(), SlabCounts.SLEEPS);
         checkpoint = new Checkpoint(mirror.epoch(), states, slabCounters, slabVirial, mirror.virial.blockSums(),
-                mirror.crossPairCollisions, crossDomainEvents, migrations);
+                mirror.crossPairCollisions, coordinator.counts().crossDomainEvents, coordinator.counts().migrations);
     }
 
     /**
@@ -331,8 +322,8 @@ final class ClusterRun {
         }
         mirror.crossPairCollisions = cp.crossPairCollisions();
         mirror.virial.addSums(cp.crossVirial());
-        crossDomainEvents = cp.crossDomainEvents();
-        migrations = cp.migrations();
+        coordinator.counts().crossDomainEvents = cp.crossDomainEvents();
+        coordinator.counts().migrations = cp.migrations();
         counterBase = cp.slabCounters().clone();
         virialBase = cp.slabVirial().clone();
         for (int d = 0; d < domains; d++) {
@@ -370,86 +361,109 @@ final class ClusterRun {
         return Math.max(1, (scene.size() + CHUNK - 1) / CHUNK);
     }
 
-    /** The windows from local {@code now} to the end, and the serial events between them. */
-    private void loop(double now) {
-        while (true) {
-            if (now >= sampleLocal) {
-                sample();
-                continue;
-            }
-            if (now >= resyncAt) {
-                resync(now);
-                now = 0;
-            }
-            if (!sleepersNoted && (slept || mirror.restCounts()[0] > 0)) {
-                sleepersNoted = true;
-                tellSleepers();
-            }
-            int top = mirror.validTop(now);
-            double h = top >= 0 ? mirror.crossTime(top) : INF;
-            double untilLocal = mirror.untilLocal();
-            // The earliest cross event bounds the window, and so do the next resync and sample.
-            double end = Math.min(Math.min(Math.min(h, resyncAt), sampleLocal), untilLocal);
-            boolean last = end == untilLocal && h > untilLocal && resyncAt > untilLocal;
-            if (checkpoints != null) {
-                checkpoints.atPassStart(now, end == untilLocal);
-            }
-            mirror.startWindow();
-            windows++;
-            long before = bytes;
-            double reached = end;
-            int stopper = -1;
-            int stopDisc = -1;
-            long windowStart = System.nanoTime();
-            for (Reply r : askAll("window", d -> rt -> new Window(end, last, rt))) {
-                WindowDone w = (WindowDone) r;
-                slept |= w.sleepers();
-                mirror.windowReport(w.domain(), w.changed(), w.segments());
-                if (w.stopTime() < reached) {
-                    reached = w.stopTime();
-                    stopper = w.domain();
-                    stopDisc = w.stopDisc();
-                }
-            }
-            windowNanos += System.nanoTime() - windowStart;
-            double violation = mirror.verify(now, reached);
-            boolean contact = violation <= reached;
-            double tStar = contact ? violation : reached;
-            if (contact || stopper >= 0) {
-                rollbacks++;
-                for (Reply r : askAll("undo", d -> rt -> new Undo(tStar, contact ? mirror.keepDisc(d) : -1,
-                        contact ? mirror.keepEntry(d) : -2, rt))) {
-                    mirror.importStates(((Undone) r).changed());
-                }
-            } else {
-                commits++;
-            }
-            windowBytes += bytes - before;
-            mirror.predictChanged(tStar);
-            if (contact) {
-                collide(mirror.violationX(), mirror.violationY(), tStar);
-            } else if (stopper >= 0) {
-                migrate(stopDisc, tStar);
-            } else if (end == h && h <= untilLocal && mirror.topStillValid(top)) {
-                int p = mirror.crossPartner(top);
-                if (p < 0) {
-                    migrate(top, h);
-                } else {
-                    collide(top, p, h);
-                }
-            } else if (last) {
-                return;
-            }
-            now = tStar;
-            if (windows % checkpointWindows == 0) {
-                resync(now);
-                now = 0;
-                takeCheckpoint();
-            }
-            if (windows % PROGRESS_WINDOWS == 0) {
-                options.progress().simulatedTime(mirror.epoch() + now);
+    @Override
+    public double epoch() {
+        return mirror.epoch();
+    }
+
+    @Override
+    public double untilLocal() {
+        return mirror.untilLocal();
+    }
+
+    @Override
+    public void noteSleepers() {
+        if (!sleepersNoted && (slept || mirror.restCounts()[0] > 0)) {
+            sleepersNoted = true;
+            tellSleepers();
+        }
+    }
+
+    /** A cluster run is split throughout: every slab in a node of its own. */
+    @Override
+    public boolean merged() {
+        return false;
+    }
+
+    @Override
+    public double runMerged(double end, boolean inclusive) {
+        throw new UnsupportedOperationException("a cluster run has no merged phase");
+    }
+
+    @Override
+    public CrossEvents crossEvents() {
+        return mirror.crossEvents();
+    }
+
+    /** A {@link Window} to every node; their reports go into the mirror (the messages count as the window's bytes). */
+    @Override
+    public double runWindow(double end, boolean inclusive) {
+        mirror.startWindow();
+        long before = bytes;
+        double stop = INF;
+        stopDisc = -1;
+        for (Reply r : askAll("window", d -> rt -> new Window(end, inclusive, rt))) {
+            WindowDone w = (WindowDone) r;
+            slept |= w.sleepers();
+            mirror.windowReport(w.domain(), w.changed(), w.segments());
+            if (w.stopTime() < stop) {
+                stop = w.stopTime();
+                stopDisc = w.stopDisc();
             }
         }
+        windowBytes += bytes - before;
+        return stop;
+    }
+
+    @Override
+    public int stopDisc() {
+        return stopDisc;
+    }
+
+    @Override
+    public WindowCheck check() {
+        return mirror.verifier();
+    }
+
+    /** An {@link Undo} to every node; the restored records go into the mirror (the window's bytes too). */
+    @Override
+    public void undo(double tStar, boolean contact) {
+        long before = bytes;
+        WindowVerifier v = mirror.verifier();
+        for (Reply r : askAll("undo", d -> rt -> new Undo(tStar, contact ? v.keepDisc(d) : -1,
+                contact ? v.keepEntry(d) : -2, rt))) {
+            mirror.importStates(((Undone) r).changed());
+        }
+        windowBytes += bytes - before;
+    }
+
+    @Override
+    public void predictChanged(double now) {
+        mirror.predictChanged(now);
+    }
+
+    /**
+     * Every {@link #CHECKPOINT_WINDOWS} windows, a checkpoint to recover a lost worker from, at a fresh
+     * time frame (the run re-anchors time there first).
+     */
+    @Override
+    public double afterWindow(double now) {
+        if (coordinator.counts().windows % checkpointWindows != 0) {
+            return now;
+        }
+        coordinator.resync(now);
+        takeCheckpoint();
+        return 0;
+    }
+
+    @Override
+    public void progress(double time) {
+        options.progress().simulatedTime(time);
+    }
+
+    @Override
+    public byte[] save(double now) {
+        return ClusterCheckpoint.save(this, now);
     }
 
     /**
@@ -461,8 +475,8 @@ final class ClusterRun {
     }
 
     /** Contact of discs a and b of two slabs at local {@code now}: computed here, installed at both owners. */
-    private void collide(int a, int b, double now) {
-        crossDomainEvents++;
+    @Override
+    public void collide(int a, int b, double now) {
         long before = bytes;
         StateBatch both = mirror.collide(a, b, now);
         int da = mirror.ownerOf(a);
@@ -477,8 +491,8 @@ final class ClusterRun {
     }
 
     /** Disc i crosses into a foreign slab at local {@code now}: its owner lets it go, the new owner takes it. */
-    private void migrate(int i, double now) {
-        migrations++;
+    @Override
+    public void migrate(int i, double now) {
         long before = bytes;
         mirror.migrationEvent(i, now);
         int from = mirror.ownerOf(i);
@@ -491,39 +505,38 @@ final class ClusterRun {
     }
 
     /**
-     * The sample due now, between windows: every slab's discs at its time, from the nodes' records
-     * (which stay as they are). Events at exactly a sample's time come after it.
+     * Every slab's discs at local {@code local}, between windows, from the nodes' records (which stay as
+     * they are); returns the pair virial sum so far.
      */
-    private void sample() {
-        double local = samples.next() - mirror.epoch();
-        Discs state = samples.state();
+    @Override
+    public double sampleInto(Discs into, double local) {
         double[] virialSum = {mirror.virial.total()};
         for (double b : virialBase) {
             virialSum[0] += b;
         }
         askInParts("sample", (part, parts, rt) -> new SampleAt(local, part, parts, rt), (r, part) -> {
             Sampled s = (Sampled) r;
-            s.states().copyXyvInto(state, local);
+            s.states().copyXyvInto(into, local);
             if (part == 0) {
                 virialSum[0] += s.virial();
             }
         });
-        samples.emit(virialSum[0]);
-        sampleLocal = samples.next() - mirror.epoch();
+        return virialSum[0];
     }
 
-    /** Re-anchors local time at {@code now} everywhere and rebuilds the calendars. */
-    private void resync(double now) {
-        if (now > 0) {
-            resyncs++;
-            mirror.rebase(now);
-            sampleLocal = samples.next() - mirror.epoch();
-        }
+    @Override
+    public void rebase(double now) {
+        mirror.rebase(now);
+    }
+
+    /** Every node re-anchors local time at {@code shift} (none if 0) and rebuilds its calendar; returns the longest span. */
+    @Override
+    public double replan(double shift) {
         double span = 0;
-        for (Reply r : askAll("replan", d -> rt -> new Replan(now, rt))) {
+        for (Reply r : askAll("replan", d -> rt -> new Replan(shift, rt))) {
             span = Math.max(span, ((Replanned) r).span());
         }
-        resyncAt = DiscTable.RESYNC_SPANS * span;
+        return span;
     }
 
     private void tell(int d, String type, NodeCommand m) {

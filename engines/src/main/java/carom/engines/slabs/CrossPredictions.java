@@ -13,17 +13,19 @@ import carom.engines.kernel.DiscTable;
  * are cross events. They are predicted for every mobile disc in an edge cell ({@link #predict}),
  * into a {@link CrossHeap} keyed by time; a prediction against disc j is valid while j's collision
  * counter is unchanged, exactly as in the kernel. The heap's earliest valid event bounds the next
- * window ({@link SlabsRun}).
+ * window ({@link WindowCoordinator}).
  */
-final class CrossPredictions {
+final class CrossPredictions implements CrossEvents {
     /** Partner code: the disc's next event is its migration into a foreign cell. */
-    static final int MIGRATE = Integer.MIN_VALUE + 1;
+    private static final int MIGRATE = Integer.MIN_VALUE + 1;
     private static final int NONE = Integer.MIN_VALUE;
     private static final double INF = Double.POSITIVE_INFINITY;
 
     private final DiscTable table;
     private final DomainGrid grid;
     private final Domain[] domains;
+    /** Which discs changed in the window under way. */
+    private final DiscMarks marks;
     /** Reads records into {@link #xpair} (it uses no scratch of its own). */
     private final DiscMotion reader;
     private final Flight flight;
@@ -38,10 +40,11 @@ final class CrossPredictions {
     /** Cross predictions made (counter {@code crossPredictions}). */
     long predictions;
 
-    CrossPredictions(DiscTable table, DomainGrid grid, Domain[] domains) {
+    CrossPredictions(DiscTable table, DomainGrid grid, Domain[] domains, DiscMarks marks) {
         this.table = table;
         this.grid = grid;
         this.domains = domains;
+        this.marks = marks;
         this.reader = domains[0].motion;
         this.flight = table.flight;
         this.boundary = table.boundary;
@@ -62,7 +65,8 @@ final class CrossPredictions {
     }
 
     /** The heap's earliest event after re-predicting stale ones: its disc, or -1 if there is none. */
-    int validTop(double now) {
+    @Override
+    public int validTop(double now) {
         while (!heap.isEmpty()) {
             int i = heap.top();
             if (valid(i)) {
@@ -73,14 +77,20 @@ final class CrossPredictions {
         return -1;
     }
 
-    /** Local time of disc i's cross event (while it has one). */
-    double time(int i) {
+    @Override
+    public double time(int i) {
         return heap.time(i);
     }
 
-    /** Disc i's cross event partner: a disc, or {@link #MIGRATE}. */
-    int partner(int i) {
-        return heap.partner(i);
+    @Override
+    public int partnerOrMigration(int i) {
+        int p = heap.partner(i);
+        return p == MIGRATE ? -1 : p;
+    }
+
+    @Override
+    public boolean dueAfterWindow(int i) {
+        return !marks.changedThisWindow(i) && valid(i);
     }
 
     /** Whether disc i's cross prediction still holds, given that i itself has not changed since. */

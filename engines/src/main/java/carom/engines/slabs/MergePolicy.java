@@ -10,9 +10,9 @@ import carom.core.engine.Tunable;
  * rollback also throws away every event after the violating contact. Both are paid per cross-slab
  * contact, so where discs touch across a slab edge all the time (a settling pile, a Galton board's
  * floor: gravity and inelastic collisions keep neighbours in contact) windows hold a handful of
- * events and undo hundreds (issue 22: settling-stack to t = 4 ran 2,910 rollbacks undoing 1.9 million
- * events for 67,101 collisions, 20 times slower than {@code fast}). Then the run is better off as
- * one domain on one thread, which is {@code fast}'s loop.
+ * events and undo hundreds, and the run is many times slower than {@code fast} (lab note
+ * {@code slabs-granular}). Then the run is better off as one domain on one thread, which is
+ * {@code fast}'s loop.
  *
  * <p>The judgement is on counts, never on time, so that a run is the same on any machine and under
  * any load. Merged, a phase counts the events that would have been cross-slab ones; a window ends at
@@ -20,18 +20,17 @@ import carom.core.engine.Tunable;
  * stays merged ({@link #worthTrying}). Split, every {@link #BLOCK_WINDOWS} windows, the events they
  * kept, less twice the events they undid, must reach half of {@code windowEvents} per window;
  * otherwise the run merges for a budget of events. Half: the two thresholds leave a band in which
- * the run stays in the phase it is in, since window lengths scatter. A gas of 2e5 discs keeps about
- * 525 events a window; judged on 16 windows against the full threshold, every run of GasBench's gas
- * merged once, for a fifth of its events (were window lengths exponential, a block's mean would fall
- * below 256 once in 150 blocks); on 32 against half, once in 10^10 blocks. A failed try doubles the next budget (up to
+ * the run stays in the phase it is in, since window lengths scatter: a large gas whose windows keep
+ * about twice the threshold, judged on fewer windows against the full threshold, merged now and then
+ * for nothing (were window lengths exponential, judged on 32 against half it would once in 10^10
+ * blocks). A failed try doubles the next budget (up to
  * {@link #MAX_DOUBLINGS} doublings), a block that pays resets it, so a scene that never pays spends a
  * vanishing share of its events in tries, and one whose activity moves (a gas that piles up, a pile
  * that empties) follows it.
  *
- * <p>Where the threshold lies: at N = 1e6 and 2 cores, windows of about 1,200 events run 1.7 times
- * as fast as {@code fast} (lab note {@code slabs-speedup}), so a window costs about 100 events'
- * time whatever it holds, and windows of about 200 events break even; smaller scenes have cheaper
- * events and so dearer windows. Measurements: lab note {@code slabs-granular}.
+ * <p>Where the threshold lies: a window costs the time of some hundred events whatever it holds, so
+ * windows of a few hundred events break even; smaller scenes have cheaper events and so dearer
+ * windows. Measurements: lab notes {@code slabs-speedup} and {@code slabs-granular}.
  */
 final class MergePolicy {
     static final Tunable.Whole WINDOW_EVENTS = new Tunable.Whole("windowEvents", 256, 0, 1 << 30, "events",

@@ -3,29 +3,26 @@ package carom.engines.slabs;
 import carom.core.engine.ProgressListener;
 import carom.core.engine.StallGuard;
 import carom.core.observe.VirialAccumulator;
-import carom.core.physics.Boundary;
-import carom.core.physics.Flight;
 import carom.core.scene.Scene;
-import carom.core.state.Discs;
 import carom.engines.kernel.DiscMotion;
 import carom.engines.kernel.DiscTable;
 import carom.engines.kernel.SavedStates;
 import carom.engines.kernel.TableState;
 
 /**
- * The coordinator's side of the {@code cluster} engine's slabs: what {@link SlabsRun} does between
- * windows, on a table of the coordinator's own that mirrors only the edge cells. The slabs run
+ * The coordinator's side of the {@code cluster} engine's slabs: what the slabs' threads adapter
+ * ({@link SlabsRun}) does between windows for the {@link WindowCoordinator}, on a table of the
+ * coordinator's own that mirrors only the edge cells. The slabs run
  * in other JVMs ({@link SlabNode}) and send, after each window, the current records and logged
  * edge-cell segments of the discs that changed in an edge cell; nothing else.
  *
  * <p>Invariant: the mirror's records of every disc in an edge cell are the owners' current ones
  * (every disc that enters, leaves or changes in an edge cell is reported); the records of other
  * discs are stale and never read. On it this class predicts the cross events ({@link CrossPredictions},
- * as slabs does), verifies a window against the reported segments (as {@link WindowVerifier} does
- * against the logs), and carries out cross-domain collisions, whose outcome goes back to the owners.
+ * as slabs does), verifies a window against the reported segments (the slabs' {@link WindowVerifier}
+ * over {@link ReportedSegments}), and carries out cross-domain collisions, whose outcome goes back to the owners.
  */
 public final class SlabMirror {
-    private static final double INF = Double.POSITIVE_INFINITY;
 
     private final DiscTable table;
     private final DomainGrid grid;
@@ -35,22 +32,12 @@ public final class SlabMirror {
     private final CrossPredictions cross;
     private final SavedStates scratch;
     private final int doublesPer;
-    private final Flight flight;
-    private final Boundary boundary;
-    private final Discs seg = new Discs(2);
     private final StallGuard stall;
     /** The pair virial of the cross-domain collisions (the slabs keep their own). */
     public final VirialAccumulator virial;
-    /** Per domain, the last window's report: changed discs' records, their segments (also as slots of a book). */
-    private final StateBatch[] records;
-    private final StateBatch[] segments;
-    private final SavedStates[] book;
-    private final int[][] segmentsFrom;
-    /** The earliest violation found by {@link #verify}: time, discs, nodes, the nodes' log entry codes. */
-    private final EarliestViolation<Integer> violation = new EarliestViolation<>();
-    /** Scratch: the foreign cells next to a segment's cell, and their distinct owners. */
-    private final int[] near = new int[8];
-    private final int[] nearOwners = new int[8];
+    /** The last window's reports, and the check of the window against them. */
+    private final ReportedSegments reports;
+    private final WindowVerifier verifier;
     public long crossPairCollisions;
 
     /**
@@ -69,23 +56,13 @@ public final class SlabMirror {
             views[d] = new Domain(d, table, grid, marks, clock, task, null, ProgressListener.NONE, scene);
         }
         this.motion = views[0].motion;
-        this.cross = k > 1 ? new CrossPredictions(table, grid, views) : null;
+        this.cross = k > 1 ? new CrossPredictions(table, grid, views, marks) : null;
         this.scratch = new SavedStates(motion, 4);
         this.doublesPer = scratch.doublesPerState();
-        this.flight = table.flight;
-        this.boundary = table.boundary;
         this.stall = new StallGuard(scene, table::sceneId);
         this.virial = VirialAccumulator.forRun(until);
-        this.records = new StateBatch[k];
-        this.segments = new StateBatch[k];
-        this.book = new SavedStates[k];
-        this.segmentsFrom = new int[k][];
-        for (int d = 0; d < k; d++) {
-            records[d] = StateBatch.EMPTY;
-            segments[d] = StateBatch.EMPTY;
-            book[d] = new SavedStates(motion, 16);
-            segmentsFrom[d] = new int[1];
-        }
+        this.reports = new ReportedSegments(motion, k);
+        this.verifier = new WindowVerifier(table, grid, marks, motion, reports);
     }
 
     /** Slabs the box is cut into (every node builds the same cut). */
@@ -136,140 +113,28 @@ public final class SlabMirror {
     /** A window begins: no disc has changed in it yet, no report is in. */
     public void startWindow() {
         marks.startWindow();
-        for (int d = 0; d < records.length; d++) {
-            records[d] = StateBatch.EMPTY;
-            segments[d] = StateBatch.EMPTY;
-            segmentsFrom[d] = new int[1];
-        }
+        reports.clear();
     }
 
     /** Domain d's window report: its changed discs' current records and their segments ({@link SlabNode}). */
     public void windowReport(int d, StateBatch changed, StateBatch segs) {
-        records[d] = changed;
-        segments[d] = segs;
         importStates(changed);
-        int[] from = new int[changed.size() + 1];
-        int s = 0;
         for (int q = 0; q < changed.size(); q++) {
             marks.markChanged(changed.ids()[q]);
-            from[q] = s;
-            while (s < segs.size() && segs.ids()[s] == changed.ids()[q]) {
-                s++;
-            }
         }
-        from[changed.size()] = s;
-        segmentsFrom[d] = from;
-        for (int e = 0; e < segs.size(); e++) {
-            book[d].copyIn(e, segs.doubles(), e * doublesPer, segs.ints(), e * SavedStates.intsPerState());
-        }
+        reports.report(d, changed, segs);
     }
 
-    /**
-     * The earliest contact before {@code limit} between a disc that changed in the window (which
-     * began at local {@code start}) and a foreign disc, on the segments the discs really followed;
-     * its time, +Infinity if none.
-     */
-    public double verify(double start, double limit) {
-        violation.reset();
-        for (int a = 0; a < records.length; a++) {
-            StateBatch changed = records[a];
-            for (int q = 0; q < changed.size(); q++) {
-                int x = changed.ids()[q];
-                // Mobile in the scene, awake or asleep (a disc that fell asleep in the window has a zero
-                // inverse mass now, and awake foreign discs can still hit its segments or its rest).
-                if (!table.mobile(x)) {
-                    continue;
-                }
-                checkSegment(a, x, -1, table.colOfDisc(x), table.rowOfDisc(x), Math.max(start, table.clock(x)), limit,
-                        start, limit);
-                for (int s = segmentsFrom[a][q]; s < segmentsFrom[a][q + 1]; s++) {
-                    checkSegment(a, x, s, book[a].col(s), book[a].row(s), Math.max(start, book[a].clock(s)),
-                            segments[a].ends()[s], start, limit);
-                }
-            }
-        }
-        return violation.time();
-    }
-
-    /** x's segment s of domain a (-1: its record) over [from, to] against the foreign discs next to its cell. */
-    private void checkSegment(int a, int x, int s, int col, int row, double from, double to, double start, double limit) {
-        if (from > limit) {
-            return;
-        }
-        to = Math.min(to, limit);
-        if (!grid.isEdge(col, row)) {
-            return;
-        }
-        int entryX = load(0, a, x, s);
-        int m = grid.foreignNeighbours(col, row, a, near);
-        for (int k = 0; k < m; k++) {
-            int b = grid.ownerOfCell(near[k]);
-            for (int y = table.firstInCell(near[k]); y != DiscTable.NIL; y = table.nextInCell(y)) {
-                if (!marks.changedThisWindow(y)) {
-                    motion.load(seg, y, 1);
-                    contact(a, x, entryX, b, y, WindowVerifier.UNTOUCHED, from, to);
-                }
-            }
-        }
-        int owners = grid.ownersOf(near, m, nearOwners);
-        for (int o = 0; o < owners; o++) {
-            int b = nearOwners[o];
-            StateBatch changedB = records[b];
-            for (int q = 0; q < changedB.size(); q++) {
-                int y = changedB.ids()[q];
-                int entryY = load(1, b, y, -1);
-                contact(a, x, entryX, b, y, entryY, Math.max(from, Math.max(start, table.clock(y))), to);
-                for (int e = segmentsFrom[b][q]; e < segmentsFrom[b][q + 1]; e++) {
-                    entryY = load(1, b, y, e);
-                    contact(a, x, entryX, b, y, entryY, Math.max(from, Math.max(start, book[b].clock(e))),
-                            Math.min(to, segments[b].ends()[e]));
-                }
-            }
-        }
-    }
-
-    /** Loads disc i's segment s of domain d (-1: its record) into slot {@code slot}; returns the node's entry code. */
-    private int load(int slot, int d, int i, int s) {
-        if (s < 0) {
-            motion.load(seg, i, slot);
-            return WindowVerifier.RECORD;
-        }
-        book[d].load(seg, slot, s, i);
-        return segments[d].entries()[s];
-    }
-
-    private void contact(int a, int x, int ex, int b, int y, int ey, double from, double to) {
-        if (!(from <= to)) {
-            return;
-        }
-        double t = from + flight.timeToContact(seg, 0, 1, from, to, boundary);
-        violation.offer(t, to, a, x, ex, b, y, ey);
-    }
-
-    /** The violating discs of the last {@link #verify}. */
-    public int violationX() {
-        return violation.x();
-    }
-
-    public int violationY() {
-        return violation.y();
-    }
-
-    /** The violating disc of domain d, if it holds one (its creating event must stand), else -1. */
-    public int keepDisc(int d) {
-        return violation.discOf(d);
-    }
-
-    /** That disc's segment as domain d's log names it. */
-    public int keepEntry(int d) {
-        return violation.entryOf(d, WindowVerifier.UNTOUCHED);
+    /** The check of the window against the reports ({@link #windowReport}). */
+    public WindowVerifier verifier() {
+        return verifier;
     }
 
     /** Changed edge discs of every domain (records as now imported) get new cross predictions from {@code now}. */
     public void predictChanged(double now) {
-        for (StateBatch changed : records) {
-            for (int q = 0; q < changed.size(); q++) {
-                cross.predict(changed.ids()[q], now);
+        for (int d = 0; d < grid.domains; d++) {
+            for (int q = 0; q < reports.changedCount(d); q++) {
+                cross.predict(reports.changed(d, q), now);
             }
         }
     }
@@ -281,24 +146,9 @@ public final class SlabMirror {
         }
     }
 
-    /** The earliest valid cross event's disc from local {@code now}, or -1. */
-    public int validTop(double now) {
-        return cross == null ? -1 : cross.validTop(now);
-    }
-
-    public double crossTime(int i) {
-        return cross.time(i);
-    }
-
-    /** Disc i's cross partner: a disc, or negative for a migration. */
-    public int crossPartner(int i) {
-        int p = cross.partner(i);
-        return p == CrossPredictions.MIGRATE ? -1 : p;
-    }
-
-    /** Whether the top event may be processed now: neither disc changed in the window, the prediction holds. */
-    public boolean topStillValid(int i) {
-        return !marks.changedThisWindow(i) && cross.valid(i);
+    /** The cross events predicted on the mirror ({@link CrossEvents#NONE} with one slab). */
+    public CrossEvents crossEvents() {
+        return cross == null ? CrossEvents.NONE : cross;
     }
 
     public long crossPredictions() {

@@ -1,13 +1,11 @@
 package carom.engines.slabs;
 
-import carom.core.engine.Checkpoints;
-import carom.core.engine.PassCheckpoints;
 import carom.core.engine.StateBytes;
 import carom.engines.kernel.TableState;
 
 /**
- * A slabs run's state at the start of a pass of its loop ({@link SlabsRun}), every domain idle, for a
- * checkpoint: the shared records and cell lists, every domain's calendar and counters (the merged
+ * A slabs run's state at the start of a pass of its loop ({@link WindowCoordinator}), every domain idle,
+ * for a checkpoint (when to take one is the coordinator's {@link carom.core.engine.PassCheckpoints}): the shared records and cell lists, every domain's calendar and counters (the merged
  * phases' domain too), the cross events and disc marks, the merge policy's judgement and budget, the
  * phase, clocks and counters. What decides results is all there; what only decides timing (the spin
  * policy, the threads' start) is not. A state is resumed only by a run of the same scene, settings and
@@ -16,34 +14,13 @@ import carom.engines.kernel.TableState;
 final class SlabsCheckpoint {
     private static final String TAG = "slabs/1";
 
-    private final SlabsRun run;
-    /** When to save: the schedule every engine that saves at pass starts shares. */
-    private final PassCheckpoints schedule;
-
-    SlabsCheckpoint(SlabsRun run, Checkpoints sink) {
-        this.run = run;
-        this.schedule = new PassCheckpoints(sink);
-    }
-
-    /** A resumed run takes up the periodic checkpoints after absolute {@code time}. */
-    void resumedAt(double time) {
-        schedule.resumedAt(time);
-    }
-
-    /** At the start of a pass at local {@code now} ({@link PassCheckpoints#atPassStart}). */
-    void atPassStart(double now, boolean mayEnd) {
-        schedule.atPassStart(run.clock.epoch + now, mayEnd, () -> save(run, now));
-    }
-
-    /** The end's checkpoint: the start of the pass that reached until. */
-    void atEnd() {
-        schedule.atEnd();
+    private SlabsCheckpoint() {
     }
 
     /** The state at local {@code now}, the start of a pass. */
     static byte[] save(SlabsRun run, double now) {
         StateBytes.Out out = new StateBytes.Out(TAG).putInt(run.domainCount).putDouble(run.until)
-                .putDouble(now).putDouble(run.clock.epoch).putDouble(run.resyncAt).putBoolean(run.merged)
+                .putDouble(now).putDouble(run.clock.epoch).putDouble(run.coordinator.resyncAt()).putBoolean(run.merged)
                 .putLong(run.phaseEvents).putLong(run.phaseCrossSlabEvents).putLong(run.samples.index())
                 .putDouble(run.energyStart).putDouble(run.momentumStart[0]).putDouble(run.momentumStart[1])
                 .putDoubles(run.serialVirial.blockSums()).putDouble(run.serialVirial.total())
@@ -77,7 +54,7 @@ final class SlabsCheckpoint {
             throw new IllegalArgumentException("the checkpoint is at t = " + (run.clock.epoch + now) + ", after until = "
                     + run.until);
         }
-        run.resyncAt = in.getDouble();
+        run.coordinator.resyncAt(in.getDouble());
         run.merged = in.getBoolean();
         run.phaseEvents = in.getLong();
         run.phaseCrossSlabEvents = in.getLong();

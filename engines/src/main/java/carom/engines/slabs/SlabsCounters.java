@@ -28,41 +28,36 @@ import java.util.Map;
 final class SlabsCounters {
     private static final ThreadMXBean CPU = ManagementFactory.getThreadMXBean();
 
-
-    long resyncs;
+    /** The window protocol's counts ({@link WindowCoordinator}). */
+    final WindowCounts window;
     long merges;
-    long windows;
-    long commits;
-    long rollbacks;
-    long crossDomainEvents;
-    long migrations;
     long crossPairCollisions;
-    long serialNanos;
-    long windowNanos;
     /** Wall time of the constructor (table and domains), of the first predictions, of the final state. */
     long setupNanos;
     long startNanos;
     long finalNanos;
-    /** CPU time of the coordinator in serial phases (robust to a loaded machine, unlike wall time). */
-    long serialCpuNanos;
     /** Sum over windows of the slowest domain's CPU time: the windows' wall time on dedicated cores. */
     long criticalCpuNanos;
 
+    SlabsCounters(WindowCounts window) {
+        this.window = window;
+    }
+
     /** The counts (not the times), for a checkpoint. */
     void save(carom.core.engine.StateBytes.Out out) {
-        out.putLongs(new long[] {resyncs, merges, windows, commits, rollbacks, crossDomainEvents, migrations,
-            crossPairCollisions});
+        out.putLongs(new long[] {window.resyncs, merges, window.windows, window.commits, window.rollbacks,
+            window.crossDomainEvents, window.migrations, crossPairCollisions});
     }
 
     void restore(carom.core.engine.StateBytes.In in) {
         long[] c = in.getLongs(8);
-        resyncs = c[0];
+        window.resyncs = c[0];
         merges = c[1];
-        windows = c[2];
-        commits = c[3];
-        rollbacks = c[4];
-        crossDomainEvents = c[5];
-        migrations = c[6];
+        window.windows = c[2];
+        window.commits = c[3];
+        window.rollbacks = c[4];
+        window.crossDomainEvents = c[5];
+        window.migrations = c[6];
         crossPairCollisions = c[7];
     }
 
@@ -90,7 +85,7 @@ final class SlabsCounters {
 
     /** Events: the serial ones (cross-domain contacts, migrations) and every domain's. */
     long events(Domain[] domains) {
-        long events = crossDomainEvents + migrations;
+        long events = window.crossDomainEvents + window.migrations;
         for (Domain d : domains) {
             events += d.events;
         }
@@ -108,7 +103,7 @@ final class SlabsCounters {
 
     /** Every counter the run reports, by its key. */
     Map<String, Long> toMap(Domain[] domains, int slabs, int domainRows, long crossPredictions, int spins, boolean gravity) {
-        long crossings = migrations;
+        long crossings = window.migrations;
         long stale = 0;
         long predictions = 0;
         long undoneEvents = 0;
@@ -125,20 +120,20 @@ final class SlabsCounters {
         counters.put(Counter.CELL_CROSSINGS.key, crossings);
         counters.put(Counter.STALE_EVENTS.key, stale);
         counters.put(Counter.PREDICTIONS.key, predictions);
-        counters.put(Counter.RESYNCS.key, resyncs);
-        counters.put(Counter.WINDOWS.key, windows);
-        counters.put(Counter.COMMITS.key, commits);
-        counters.put(Counter.ROLLBACKS.key, rollbacks);
+        counters.put(Counter.RESYNCS.key, window.resyncs);
+        counters.put(Counter.WINDOWS.key, window.windows);
+        counters.put(Counter.COMMITS.key, window.commits);
+        counters.put(Counter.ROLLBACKS.key, window.rollbacks);
         counters.put(Counter.UNDONE_EVENTS.key, undoneEvents);
-        counters.put(Counter.CROSS_DOMAIN_EVENTS.key, crossDomainEvents);
-        counters.put(Counter.MIGRATIONS.key, migrations);
+        counters.put(Counter.CROSS_DOMAIN_EVENTS.key, window.crossDomainEvents);
+        counters.put(Counter.MIGRATIONS.key, window.migrations);
         counters.put(Counter.CROSS_PREDICTIONS.key, crossPredictions);
-        counters.put(Counter.SERIAL_NANOS.key, serialNanos);
-        counters.put(Counter.WINDOW_NANOS.key, windowNanos);
+        counters.put(Counter.SERIAL_NANOS.key, window.serialNanos);
+        counters.put(Counter.WINDOW_NANOS.key, window.windowNanos);
         counters.put(Counter.SETUP_NANOS.key, setupNanos);
         counters.put(Counter.START_NANOS.key, startNanos);
         counters.put(Counter.FINAL_NANOS.key, finalNanos);
-        counters.put(Counter.SERIAL_CPU_NANOS.key, serialCpuNanos);
+        counters.put(Counter.SERIAL_CPU_NANOS.key, window.serialCpuNanos);
         counters.put(Counter.CRITICAL_CPU_NANOS.key, criticalCpuNanos);
         long windowCpu = 0;
         for (int k = 0; k < slabs; k++) {

@@ -19,18 +19,20 @@ import java.util.Arrays;
 
 /**
  * One run of the slabs engine: the box cut into domains ({@link DomainGrid}), each a thread running
- * the kernel's event loop over its own discs ({@link Domain}), and this class, the coordinator, which
- * runs the windows and the serial phases between them, or, while windows do not pay, merged phases.
+ * the kernel's event loop over its own discs ({@link Domain}), and the threads adapter of the window
+ * protocol ({@link WindowDomains}): the {@link WindowCoordinator}, on the calling thread, runs the
+ * windows and the serial phases between them through this class, or, while windows do not pay,
+ * merged phases.
  *
  * <h2>Phases</h2>
- * A run is split (the windows below) or merged: one domain over every disc, {@code fast}'s loop on
- * the coordinator's thread, no window, no log, no verification. A window's cost (barrier, verification,
+ * A run is split (windows) or merged: one domain over every disc, {@code fast}'s loop on the
+ * coordinator's thread, no window, no log, no verification. A window's cost (barrier, verification,
  * serial phase, and on a rollback every event after the violating contact) is paid per cross-slab
  * contact; where discs touch across a slab edge all the time, a settling pile or a Galton board's
- * floor, windows held a handful of events and undid hundreds, and the run was 20 times slower than
- * {@code fast} (issue 22). So the run starts merged for a few thousand events (a small scene never
- * splits and never starts a thread). A merged phase counts the events that would have been
- * cross-slab ones; a window ends at one of those at the latest, so when they are too frequent for
+ * floor, windows held a handful of events and undid hundreds, and the run was many times slower than
+ * {@code fast} (lab note {@code slabs-granular}). So the run starts merged for a few thousand events (a
+ * small scene never splits and never starts a thread). A merged phase counts the events that would have
+ * been cross-slab ones; a window ends at one of those at the latest, so when they are too frequent for
  * windows to pay the phase just goes on, and otherwise the run splits and {@link MergePolicy} judges
  * the windows by their kept and undone events: when they do not pay, the run merges for a budget of
  * events that doubles with each failed try. The judgement is on counts, so a run is the same
@@ -42,31 +44,25 @@ import java.util.Arrays;
  * rebuilds the calendars it uses; one pass over the discs, paid for by the budget of several events
  * per disc.
  *
- * <h2>Windows</h2>
- * With H the earliest cross event ({@link CrossPredictions}), every domain processes its own events
- * before H in parallel, logging each touched disc's record before the event ({@link UndoLog}; the
- * saved records are also the disc's trajectory segments). A domain whose next event is a migration (a
- * trajectory changed within the window) stops there. After the barrier ({@link SpinParkBarrier}),
- * the {@link WindowVerifier} checks, with the real segments, every pair of an edge disc that changed
- * in the window and a foreign disc near it: the earliest contact (or stop) t* before the time all
- * domains reached is a violation, and every domain undoes its events at or after t*; then the
- * violating event is processed serially. Otherwise the window is committed and the cross event at H
- * is processed serially. Either way the changed edge discs are re-predicted into the cross heap.
- * With one domain there are no edges and the run is merged throughout: the loop is {@code fast}'s.
- *
- * <p>Why it is exact: a domain's events before t* read only its own discs, and no foreign disc touched
- * one of them before t* (contacts between two discs unchanged in the window are after H by the heap's
- * invariant; the others are checked on their segments), so they are the events the serial order has.
+ * <h2>Windows on threads</h2>
+ * The cross events are predicted serially ({@link CrossPredictions}). In a window every domain
+ * processes its own events on its thread, logging each touched disc's record before the event
+ * ({@link UndoLog}; the saved records are also the disc's trajectory segments), while the coordinator
+ * runs domain 0 and then waits at the barrier ({@link SpinParkBarrier}); the {@link WindowVerifier}
+ * then checks the window on the logs ({@link LoggedSegments}). With one domain there are no edges and
+ * the run is merged throughout: the loop is {@code fast}'s.
  *
  * <p>Checkpoints ({@link SlabsCheckpoint}) are taken at the start of a pass of the loop (a window or a
- * stretch of a merged phase); the one at the end of a run is the start of the pass clipped at until.
+ * stretch of a merged phase).
  *
  * <p>Counters: {@link SlabsCounters}.
  */
-final class SlabsRun {
+final class SlabsRun implements WindowDomains {
     static final Tunable.Flag SEQUENTIAL = new Tunable.Flag("sequential", false,
             "measurement mode: every domain's window runs on the calling thread, one after another (same bits)");
     private static final double INF = Double.POSITIVE_INFINITY;
+    /** Windows between progress reports. */
+    private static final int PROGRESS_WINDOWS = 1024;
 
     private final Scene scene;
     private final int n;
@@ -112,17 +108,19 @@ final class SlabsRun {
     private boolean threaded;
     /** Spins before a waiting thread parks ({@link SpinPolicy}). */
     private final int spins;
-    final SlabsCounters counters = new SlabsCounters();
+    /** The window protocol, run through this class. */
+    final WindowCoordinator coordinator;
+    final SlabsCounters counters;
     final VirialAccumulator serialVirial;
     private final StallGuard serialStall;
-    double resyncAt;
-    /** Samples asked for ({@code --every}), and the next one's local time (+Infinity if none). */
+    /** Samples asked for ({@code --every}). */
     final SampleSchedule samples;
-    private double sampleLocal;
     /** Collisions before the checkpoint a resumed run started from. */
     long collisionsBefore;
-    /** The run's checkpoints, or null without. */
-    private final SlabsCheckpoint checkpoints;
+    /** The last window's earliest stop (its migration's disc), and the events kept and undone before it. */
+    private int stopDisc;
+    private long keptBefore;
+    private long undoneBefore;
 
     SlabsRun(Scene scene, RunOptions options) {
         this(scene, options, null);
@@ -173,10 +171,12 @@ final class SlabsRun {
         this.policy = new MergePolicy(options, n);
         this.merged = !many || policy.startsMerged();
         this.workers = new Thread[sequential ? 0 : k - 1];
-        this.cross = many ? new CrossPredictions(table, grid, domains) : null;
-        this.verifier = many ? new WindowVerifier(table, grid, domains, marks) : null;
+        this.cross = many ? new CrossPredictions(table, grid, domains, marks) : null;
+        this.verifier = many ? new WindowVerifier(table, grid, marks, domains[0].motion, new LoggedSegments(domains, marks))
+                : null;
         this.samples = SampleSchedule.of(scene, options);
-        this.checkpoints = options.checkpoints() == null ? null : new SlabsCheckpoint(this, options.checkpoints());
+        this.coordinator = new WindowCoordinator(this, samples, until, options.checkpoints(), PROGRESS_WINDOWS);
+        this.counters = new SlabsCounters(coordinator.counts());
         whole.stopPoll = options.checkpoints();
         counters.setupNanos = System.nanoTime() - constructing;
     }
@@ -186,7 +186,8 @@ final class SlabsRun {
      * re-predicts in full after a crossing ({@link carom.engines.kernel.CellPredictor#sleepersMayBeNear});
      * told here, between windows and phases, so that the run does not depend on thread timing.
      */
-    private void noteSleepers() {
+    @Override
+    public void noteSleepers() {
         if (sleepersNoted) {
             return;
         }
@@ -223,21 +224,19 @@ final class SlabsRun {
             double now = 0;
             if (saved != null) {
                 now = SlabsCheckpoint.restore(this, saved);
-                if (checkpoints != null) {
-                    checkpoints.resumedAt(clock.epoch + now);
-                }
+                coordinator.resumedAt(clock.epoch + now);
                 if (!merged) {
                     startWorkers();
                 }
             } else if (merged && domainCount > 1) {
                 // A merged start: fast's first predictions and calendar, no thread until the first split.
                 table.predictFirstEvents(i -> whole.predictFull(i, 0));
-                replan(0);
+                coordinator.replan(0);
                 startMergedPhase(policy.startBudget());
             } else {
                 startWorkers();
                 everyDomain(DomainTask.PREDICT);
-                replan(0);
+                coordinator.replan(0);
                 if (domainCount > 1) {
                     for (int i = 0; i < n; i++) {
                         if (table.invMass(i) > 0) {
@@ -247,14 +246,7 @@ final class SlabsRun {
                 }
             }
             counters.startNanos = System.nanoTime() - started;
-            sampleLocal = samples.next() - clock.epoch;
-            loop(now);
-            while (samples.next() <= until) {
-                sample();
-            }
-            if (checkpoints != null) {
-                checkpoints.atEnd();
-            }
+            coordinator.run(now);
             long looped = System.nanoTime();
             seconds = (looped - started) * 1e-9;
             out = finalState();
@@ -285,135 +277,122 @@ final class SlabsRun {
                 SlabsCounters.energyPutToRest(counted));
     }
 
-    private void loop(double now) {
-        long progressMark = 0;
-        while (true) {
-            if (now >= sampleLocal) {
-                sample();
-                continue;
-            }
-            if (now >= resyncAt) {
-                resync(now);
-                now = 0;
-            }
-            noteSleepers();
-            if (merged) {
-                // Up to the next resync, sample or the end, or until the phase's budget of events is spent.
-                double end = Math.min(Math.min(resyncAt, sampleLocal), clock.untilLocal);
-                boolean last = end == clock.untilLocal && resyncAt > clock.untilLocal;
-                if (checkpoints != null) {
-                    checkpoints.atPassStart(now, end == clock.untilLocal);
-                }
-                whole.stopTime = INF;
-                whole.runWindow(end, last);
-                if (whole.stopTime < INF) {
-                    now = whole.stopTime;
-                    if (whole.stopPoll != null && whole.stopPoll.stopRequested()) {
-                        continue; // the pass start saves and stops
-                    }
-                    if (policy.worthTrying(whole.events - phaseEvents, whole.crossSlabEvents - phaseCrossSlabEvents)) {
-                        split(now);
-                    } else {
-                        startMergedPhase(policy.recheckBudget());
-                    }
-                    continue;
-                }
-                if (last) {
-                    return;
-                }
-                now = end;
-                continue;
-            }
-            // The earliest valid cross event bounds the window, and so does the next sample.
-            int top = cross.validTop(now);
-            double h = top >= 0 ? cross.time(top) : INF;
-            double end = Math.min(Math.min(Math.min(h, resyncAt), sampleLocal), clock.untilLocal);
-            boolean last = end == clock.untilLocal && h > clock.untilLocal && resyncAt > clock.untilLocal;
-            if (checkpoints != null) {
-                checkpoints.atPassStart(now, end == clock.untilLocal);
-            }
-            long keptBefore = slabEvents();
-            long undoneBefore = undoneEvents();
-            long t0 = System.nanoTime();
-            marks.startWindow();
-            counters.windows++;
-            for (Domain d : domains) {
-                d.startWindow();
-            }
-            task.windowEnd = end;
-            task.windowInclusive = last;
-            everyDomain(DomainTask.WINDOW);
-            long t1 = System.nanoTime();
-            long c1 = SlabsCounters.cpuNanos();
-            counters.windowNanos += t1 - t0;
-            long slowest = 0;
-            for (Domain d : domains) {
-                slowest = Math.max(slowest, d.lastWindowCpu);
-            }
-            counters.criticalCpuNanos += slowest;
-            // Verify: the earliest contact with a changed edge disc, or the earliest stop.
-            double reached = end;
-            Domain stopper = null;
-            for (Domain d : domains) {
-                if (d.stopTime < reached) {
-                    reached = d.stopTime;
-                    stopper = d;
-                }
-            }
-            verifier.verify(now, reached);
-            double tStar = reached;
-            boolean contact = false;
-            if (verifier.violationTime() <= reached) {
-                tStar = verifier.violationTime();
-                contact = true;
-            }
-            boolean violated = contact || stopper != null;
-            if (violated) {
-                counters.rollbacks++;
-                for (Domain d : domains) {
-                    d.undo(tStar, contact ? verifier.segmentCreator(d) : -1, marks);
-                }
+    @Override
+    public double epoch() {
+        return clock.epoch;
+    }
+
+    @Override
+    public double untilLocal() {
+        return clock.untilLocal;
+    }
+
+    @Override
+    public boolean merged() {
+        return merged;
+    }
+
+    /**
+     * A stretch of a merged phase, up to {@code end} or until the phase's budget of events is spent;
+     * then, unless a stop was asked for (the next pass start saves and stops), the run splits if the
+     * phase says windows could pay, else a merged phase goes on.
+     */
+    @Override
+    public double runMerged(double end, boolean inclusive) {
+        whole.stopTime = INF;
+        whole.runWindow(end, inclusive);
+        double stop = whole.stopTime;
+        if (stop < INF && (whole.stopPoll == null || !whole.stopPoll.stopRequested())) {
+            if (policy.worthTrying(whole.events - phaseEvents, whole.crossSlabEvents - phaseCrossSlabEvents)) {
+                split(stop);
             } else {
-                counters.commits++;
+                startMergedPhase(policy.recheckBudget());
             }
-            // Changed edge discs (records restored if undone) get new cross predictions.
-            for (Domain d : domains) {
-                for (int q = 0; q < d.log.changedCount(); q++) {
-                    cross.predict(d.log.changed(q), tStar);
-                }
+        }
+        return stop;
+    }
+
+    @Override
+    public CrossEvents crossEvents() {
+        return cross == null ? CrossEvents.NONE : cross;
+    }
+
+    @Override
+    public double runWindow(double end, boolean inclusive) {
+        keptBefore = slabEvents();
+        undoneBefore = undoneEvents();
+        marks.startWindow();
+        for (Domain d : domains) {
+            d.startWindow();
+        }
+        task.windowEnd = end;
+        task.windowInclusive = inclusive;
+        everyDomain(DomainTask.WINDOW);
+        long slowest = 0;
+        double stop = INF;
+        stopDisc = -1;
+        for (Domain d : domains) {
+            slowest = Math.max(slowest, d.lastWindowCpu);
+            if (d.stopTime < stop) {
+                stop = d.stopTime;
+                stopDisc = d.stopDisc;
             }
-            if (contact) {
-                serialCollide(verifier.violationX(), verifier.violationY(), tStar);
-            } else if (stopper != null) {
-                migrate(stopper.stopDisc, tStar);
-            } else if (end == h && h <= clock.untilLocal && !marks.changedThisWindow(top) && cross.valid(top)) {
-                // (A top whose disc or partner changed in the window is not processed: the next window,
-                // from here, re-predicts it.)
-                processCrossTop(top, h);
-            } else if (last) {
-                counters.serialNanos += System.nanoTime() - t1;
-                counters.serialCpuNanos += SlabsCounters.cpuNanos() - c1;
-                return;
-            }
-            now = tStar;
-            if (audit != null) {
-                audit.check(domains[0].motion.snapshot(now), table.flight, now, clock.epoch + now);
-            }
-            counters.serialNanos += System.nanoTime() - t1;
-            counters.serialCpuNanos += SlabsCounters.cpuNanos() - c1;
-            if (counters.windows - progressMark >= 1024) {
-                progressMark = counters.windows;
-                progress.progress(clock.epoch + now, counters.pairCollisions(counted) + counters.wallCollisions(counted));
-            }
-            if (policy.mergeAfter(slabEvents() - keptBefore, undoneEvents() - undoneBefore)) {
-                merge(now);
+        }
+        counters.criticalCpuNanos += slowest;
+        return stop;
+    }
+
+    @Override
+    public int stopDisc() {
+        return stopDisc;
+    }
+
+    @Override
+    public WindowCheck check() {
+        return verifier;
+    }
+
+    @Override
+    public void undo(double tStar, boolean contact) {
+        for (Domain d : domains) {
+            d.undo(tStar, contact ? d.log.creatorOf(verifier.keepDisc(d.id), verifier.keepEntry(d.id)) : -1, marks);
+        }
+    }
+
+    @Override
+    public void predictChanged(double now) {
+        for (Domain d : domains) {
+            for (int q = 0; q < d.log.changedCount(); q++) {
+                cross.predict(d.log.changed(q), now);
             }
         }
     }
 
+    /** The energy audit (if asked for), then the merge policy's judgement of the window. */
+    @Override
+    public double afterWindow(double now) {
+        if (audit != null) {
+            audit.check(domains[0].motion.snapshot(now), table.flight, now, clock.epoch + now);
+        }
+        if (policy.mergeAfter(slabEvents() - keptBefore, undoneEvents() - undoneBefore)) {
+            merge(now);
+        }
+        return now;
+    }
+
+    @Override
+    public void progress(double time) {
+        progress.progress(time, counters.pairCollisions(counted) + counters.wallCollisions(counted));
+    }
+
+    @Override
+    public byte[] save(double now) {
+        return SlabsCheckpoint.save(this, now);
+    }
+
     /** Events kept by the slabs and the serial phases between their windows, so far. */
     private long slabEvents() {
-        long events = counters.crossDomainEvents + counters.migrations;
+        long events = counters.window.crossDomainEvents + counters.window.migrations;
         for (Domain d : domains) {
             events += d.events;
         }
@@ -527,18 +506,9 @@ final class SlabsRun {
         throw new IllegalStateException(f);
     }
 
-    private void processCrossTop(int i, double t) {
-        int p = cross.partner(i);
-        if (p == CrossPredictions.MIGRATE) {
-            migrate(i, t);
-        } else {
-            serialCollide(i, p, t);
-        }
-    }
-
     /** Contact of discs a and b (different domains) at local time {@code now}, processed serially. */
-    private void serialCollide(int a, int b, double now) {
-        counters.crossDomainEvents++;
+    @Override
+    public void collide(int a, int b, double now) {
         Domain da = ownerOf(a);
         Domain db = ownerOf(b);
         double abs = clock.epoch + now;
@@ -561,8 +531,8 @@ final class SlabsRun {
     }
 
     /** Disc i crosses into a foreign cell at local {@code now}: it changes domain. */
-    private void migrate(int i, double now) {
-        counters.migrations++;
+    @Override
+    public void migrate(int i, double now) {
         Domain from = ownerOf(i);
         byte k = table.kind(i);
         serialStall.event(clock.epoch + now, i, StallGuard.CELL_SIDE);
@@ -575,47 +545,40 @@ final class SlabsRun {
         cross.predict(i, now);
     }
 
-    /**
-     * Re-anchors time at local {@code now}: every disc advanced, clocks and event times shifted (each
-     * domain its own discs, in parallel), calendars rebuilt.
-     */
-    private void resync(double now) {
-        if (now > 0) {
-            counters.resyncs++;
-            if (cross != null) {
-                cross.rebase(now);
-            }
-            clock.shift(now);
-            table.shiftGrowthAnchor(now);
-            sampleLocal = samples.next() - clock.epoch;
+    /** The cross events, the run's clock and the growth anchor move so that local {@code now} becomes 0. */
+    @Override
+    public void rebase(double now) {
+        if (cross != null) {
+            cross.rebase(now);
         }
-        replan(now);
+        clock.shift(now);
+        table.shiftGrowthAnchor(now);
     }
 
     /**
-     * The sample due now (between windows, every domain idle): every disc at its time, computed from
-     * the shared records without moving them. Events at exactly a sample's time come after it.
+     * Every disc at local {@code local}, computed from the shared records without moving them; returns
+     * the pair virial sum of every domain and the serial phases.
      */
-    private void sample() {
+    @Override
+    public double sampleInto(Discs into, double local) {
         double virialSum = serialVirial.total();
         for (Domain d : counted) {
             virialSum += d.virial.total();
         }
-        domains[0].motion.stateAt(samples.state(), 0, n, samples.next() - clock.epoch);
-        samples.emit(virialSum);
-        sampleLocal = samples.next() - clock.epoch;
+        domains[0].motion.stateAt(into, 0, n, local);
+        return virialSum;
     }
 
     /**
      * Every domain moves its clocks so that local {@code shift} becomes 0 (none if 0), then sizes its
-     * calendar from its mean event delay (trimmed of outliers) and rebuilds it; the next resync is
-     * {@link DiscTable#RESYNC_SPANS} of the longest span away.
+     * calendar from its mean event delay (trimmed of outliers) and rebuilds it, in parallel (merged: the
+     * one domain); returns the longest span.
      */
-    private void replan(double shift) {
+    @Override
+    public double replan(double shift) {
         if (merged && domainCount > 1) {
             whole.replanOwn(shift);
-            resyncAt = DiscTable.RESYNC_SPANS * whole.span;
-            return;
+            return whole.span;
         }
         task.shift = shift;
         everyDomain(DomainTask.REPLAN);
@@ -623,7 +586,7 @@ final class SlabsRun {
         for (Domain d : domains) {
             spanMax = Math.max(spanMax, d.span);
         }
-        resyncAt = DiscTable.RESYNC_SPANS * spanMax;
+        return spanMax;
     }
 
     /** Every disc at {@code until}, in original id order (each domain a range of internal ids). */

@@ -34,7 +34,7 @@ final class SpinPolicy {
      * if given, else long spins for a large scene with an idle processor per thread, short ones
      * otherwise. Idle: the processors less the machine's load average (rounded; a negative load, where
      * the system has none, counts as 0). On a shared machine a spinning slab takes a core another
-     * process wants and the run gets slower, not faster (issue 22: 39 s against 23 s at N = 1e6).
+     * process wants and the run gets slower, not faster (lab note {@code slabs-speedup}).
      */
     static int spinsOf(RunOptions options, int n, int processors, double loadAverage) {
         long busy = Math.round(Math.max(0, loadAverage));

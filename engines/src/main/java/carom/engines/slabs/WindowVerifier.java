@@ -7,25 +7,29 @@ import carom.engines.kernel.DiscMotion;
 import carom.engines.kernel.DiscTable;
 
 /**
- * Verification of a window against the logged segments (serial, after the barrier).
+ * Verification of a window against the segments the discs really followed (serial, after every
+ * domain has run the window).
  *
  * <p>During a window each domain ran its own events without looking at foreign discs. Every pair of
  * an edge disc that changed in the window and a foreign disc near it is now checked with the
- * segments the discs really followed (the {@link UndoLog} entries and the current records): the
- * earliest contact before the time all domains reached is a violation, back to which every domain
- * undoes its events ({@link SlabsRun}). Pairs of two discs unchanged in the window need no check:
- * their contacts are after the window's end by the cross heap's invariant.
+ * segments the discs really followed (those kept by a {@link SegmentSource}, and the current records):
+ * the earliest contact before the time all domains reached is a violation, back to which every domain
+ * undoes its events ({@link WindowCoordinator}). Pairs of two discs unchanged in the window need no
+ * check: their contacts are after the window's end by the cross heap's invariant.
+ *
+ * <p>One algorithm for both storages of the segments: a slabs run's logs ({@link LoggedSegments}) and
+ * the cluster coordinator's copy of the nodes' reports ({@link ReportedSegments}); the current records
+ * are read from {@code table} (the shared records, or the coordinator's mirror of the edge cells).
  */
-final class WindowVerifier {
+public final class WindowVerifier implements WindowCheck {
     /** Log entry codes of a segment: the disc's current record, or a disc without an event in the window. */
     static final int RECORD = -1;
     static final int UNTOUCHED = -2;
-    private static final double INF = Double.POSITIVE_INFINITY;
 
     private final DiscTable table;
     private final DomainGrid grid;
-    private final Domain[] domains;
     private final DiscMarks marks;
+    private final SegmentSource segments;
     /** Reads current records (it uses no scratch of its own). */
     private final DiscMotion reader;
     private final Flight flight;
@@ -34,45 +38,50 @@ final class WindowVerifier {
     private final Discs seg = new Discs(2);
 
     /** The earliest violation found: its time (+Infinity if none), its discs, their domains and log entries. */
-    private final EarliestViolation<Domain> violation = new EarliestViolation<>();
+    private final EarliestViolation violation = new EarliestViolation();
     /** Scratch: the foreign cells next to a segment's cell, and their distinct owners. */
     private final int[] near = new int[8];
     private final int[] nearOwners = new int[8];
 
-    WindowVerifier(DiscTable table, DomainGrid grid, Domain[] domains, DiscMarks marks) {
+    WindowVerifier(DiscTable table, DomainGrid grid, DiscMarks marks, DiscMotion reader, SegmentSource segments) {
         this.table = table;
         this.grid = grid;
-        this.domains = domains;
         this.marks = marks;
-        this.reader = domains[0].motion;
+        this.reader = reader;
+        this.segments = segments;
         this.flight = table.flight;
         this.boundary = table.boundary;
     }
 
-    /** The earliest violation's time, +Infinity if none; its two discs. */
-    double violationTime() {
-        return violation.time();
-    }
-
-    int violationX() {
+    @Override
+    public int violationX() {
         return violation.x();
     }
 
-    int violationY() {
+    @Override
+    public int violationY() {
         return violation.y();
     }
 
-    /**
-     * Finds the earliest contact before {@code limit} between a disc that changed in the window
-     * (which began at local {@code start}) and a foreign disc, with the segments the discs really
-     * followed.
-     */
-    void verify(double start, double limit) {
+    /** The violating disc of domain d, if it holds one (its creating event must stand), else -1. */
+    public int keepDisc(int d) {
+        return violation.discOf(d);
+    }
+
+    /** That disc's segment as domain d's log names it ({@link #UNTOUCHED} if d holds neither disc). */
+    public int keepEntry(int d) {
+        return violation.entryOf(d, UNTOUCHED);
+    }
+
+    /** Also keeps the contact's discs, their domains and segments for {@link #keepDisc} and {@link #keepEntry}. */
+    @Override
+    public double verify(double start, double limit) {
         violation.reset();
-        for (Domain a : domains) {
-            UndoLog log = a.log;
-            for (int q = 0; q < log.changedCount(); q++) {
-                int x = log.changed(q);
+        for (int a = 0; a < grid.domains; a++) {
+            for (int q = 0; q < segments.changedCount(a); q++) {
+                int x = segments.changed(a, q);
+                // Mobile in the scene, awake or asleep (a disc that fell asleep in the window has a zero
+                // inverse mass now, and awake foreign discs can still hit its segments or its rest).
                 if (!table.mobile(x)) {
                     continue;
                 }
@@ -80,21 +89,21 @@ final class WindowVerifier {
                 // the disc to its time) on, then each logged edge-cell state up to its event.
                 checkSegment(a, x, RECORD, table.colOfDisc(x), table.rowOfDisc(x), Math.max(start, table.clock(x)),
                         limit, start, limit);
-                for (int e = marks.lastEntry(x); e >= 0; e = log.previousEdgeEntry(e)) {
-                    checkSegment(a, x, e, log.segmentCol(e), log.segmentRow(e), Math.max(start, log.segmentStart(e)),
-                            log.segmentEnd(e), start, limit);
+                for (int s = segments.firstSegment(a, q); s >= 0; s = segments.nextSegment(a, q, s)) {
+                    checkSegment(a, x, s, segments.segmentCol(a, s), segments.segmentRow(a, s),
+                            Math.max(start, segments.segmentStart(a, s)), segments.segmentEnd(a, s), start, limit);
                 }
             }
         }
+        return violation.time();
     }
 
     /**
-     * Checks disc x's segment (its record if {@code entry} is {@link #RECORD}, else the state saved in
-     * log entry {@code entry} of domain a), in cell (col, row) over [from, to], against the foreign
-     * discs in the columns next to that cell: unchanged ones on their records, changed ones on all
-     * their segments.
+     * Checks disc x's segment (its record if {@code s} is {@link #RECORD}, else segment s of domain a),
+     * in cell (col, row) over [from, to], against the foreign discs in the cells next to that cell:
+     * unchanged ones on their records, changed ones on all their segments.
      */
-    private void checkSegment(Domain a, int x, int entry, int col, int row, double from, double to, double start,
+    private void checkSegment(int a, int x, int s, int col, int row, double from, double to, double start,
                               double limit) {
         if (from > limit) {
             return;
@@ -103,66 +112,55 @@ final class WindowVerifier {
         if (!grid.isEdge(col, row)) {
             return;
         }
-        loadSegment(0, a, x, entry);
-        int m = grid.foreignNeighbours(col, row, a.id, near);
+        int entryX = load(0, a, x, s);
+        int m = grid.foreignNeighbours(col, row, a, near);
         for (int k = 0; k < m; k++) {
-            Domain b = domains[grid.ownerOfCell(near[k])];
+            int b = grid.ownerOfCell(near[k]);
             for (int y = table.firstInCell(near[k]); y != DiscTable.NIL; y = table.nextInCell(y)) {
                 // In an edge cell now and not changed: no event in this window.
                 if (!marks.changedThisWindow(y)) {
-                    loadSegment(1, b, y, RECORD);
-                    contact(a, x, entry, b, y, UNTOUCHED, from, to);
+                    reader.load(seg, y, 1);
+                    contact(a, x, entryX, b, y, UNTOUCHED, from, to);
                 }
             }
         }
         // Changed discs of each foreign domain next to the cell: wherever they were, on every segment.
         int owners = grid.ownersOf(near, m, nearOwners);
         for (int o = 0; o < owners; o++) {
-            Domain b = domains[nearOwners[o]];
-            UndoLog logB = b.log;
-            for (int q = 0; q < logB.changedCount(); q++) {
-                int y = logB.changed(q);
-                loadSegment(1, b, y, RECORD);
-                contact(a, x, entry, b, y, RECORD, Math.max(from, Math.max(start, table.clock(y))), to);
-                for (int e = marks.lastEntry(y); e >= 0; e = logB.previousEdgeEntry(e)) {
-                    loadSegment(1, b, y, e);
-                    contact(a, x, entry, b, y, e, Math.max(from, Math.max(start, logB.segmentStart(e))),
-                            Math.min(to, logB.segmentEnd(e)));
+            int b = nearOwners[o];
+            for (int q = 0; q < segments.changedCount(b); q++) {
+                int y = segments.changed(b, q);
+                int entryY = load(1, b, y, RECORD);
+                contact(a, x, entryX, b, y, entryY, Math.max(from, Math.max(start, table.clock(y))), to);
+                for (int e = segments.firstSegment(b, q); e >= 0; e = segments.nextSegment(b, q, e)) {
+                    entryY = load(1, b, y, e);
+                    contact(a, x, entryX, b, y, entryY, Math.max(from, Math.max(start, segments.segmentStart(b, e))),
+                            Math.min(to, segments.segmentEnd(b, e)));
                 }
             }
         }
     }
 
-    private void loadSegment(int slot, Domain dom, int i, int entry) {
-        if (entry < 0) {
+    /** Loads disc i's segment s of domain d ({@link #RECORD}: its record) into slot {@code slot}; returns its log entry code. */
+    private int load(int slot, int d, int i, int s) {
+        if (s == RECORD) {
             reader.load(seg, i, slot);
-        } else {
-            dom.log.loadSegment(seg, slot, entry, i);
+            return RECORD;
         }
+        segments.loadSegment(seg, slot, d, s, i);
+        return segments.logEntry(d, s);
     }
 
     /**
      * Contact of the two loaded segments (x's, entry ex of domain a; y's, entry ey of domain b) within
      * [from, to], lowering the violation's time.
      */
-    private void contact(Domain a, int x, int ex, Domain b, int y, int ey, double from, double to) {
+    private void contact(int a, int x, int ex, int b, int y, int ey, double from, double to) {
         if (!(from <= to)) {
             return;
         }
         double t = from + (table.growing ? table.growingContactTime(seg, 0, 1, from)
                 : flight.timeToContact(seg, 0, 1, from, to, boundary));
         violation.offer(t, to, a, x, ex, b, y, ey);
-    }
-
-    /**
-     * The index, in domain d's log, of the event that started the violating disc's segment, or -1 if
-     * d holds neither violating disc or the segment began before the window. That event must survive the
-     * rollback even when it happened at t* itself (a chain of simultaneous contacts crossing the slab
-     * edge, as in Newton's cradle): undoing it would remove the very segment that violates, and the
-     * window would be redone and rolled back forever.
-     */
-    int segmentCreator(Domain d) {
-        int disc = violation.discOf(d);
-        return disc < 0 ? -1 : d.log.creatorOf(disc, violation.entryOf(d, UNTOUCHED));
     }
 }
