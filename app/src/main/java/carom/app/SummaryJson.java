@@ -15,10 +15,11 @@ import java.util.TreeMap;
 
 /**
  * SUMMARY.json: the keys every summary holds ({@code engine, exact, particles, until, collisions,
- * kineticEnergy, energy, momentum, wallSeconds}) plus what a benchmark needs to compare runs: the scene, the threads the engine
- * really used, events, throughput, the drift of the total energy ({@link Energy}), causality violations,
- * the pressure (from the collision virial; see {@link carom.core.observe.VirialAccumulator} for what it
- * means in a walled box), the engine's counters and the machine it ran on. Numbers that are not defined
+ * kineticEnergy, energy, momentum, wallSeconds}) plus what a benchmark needs to compare runs: the scene,
+ * the threads the engine really used, events, throughput, the drift of the total energy ({@link Energy}),
+ * causality violations, the pressure (from the collision virial; see
+ * {@link carom.core.observe.VirialAccumulator} for what it means in a walled box), the engine's counters
+ * and the machine it ran on. Numbers that are not defined
  * (the energy under gravity in a periodic box, an error bar from too few blocks) are null.
  */
 final class SummaryJson {
