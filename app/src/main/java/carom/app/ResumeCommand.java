@@ -35,7 +35,10 @@ final class ResumeCommand implements Callable<Integer> {
     FinalOutputOptions finals;
 
     @Mixin
-    SampleOutputOptions samples;
+    TrajectoryOption trajectory;
+
+    @Mixin
+    ReportOption report;
 
     @Mixin
     CheckpointOptions checkpoints;

@@ -75,8 +75,9 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
 
     /** The files the run writes, each null when not asked for. */
     record Outputs(Path out, Path summary, Path trajectory, Path report, Path jfr, Path checkpoint) {
-        Outputs(FinalOutputOptions finals, SampleOutputOptions samples, Path jfr, CheckpointOptions checkpoints) {
-            this(finals.out, finals.summary, samples.trajectory, samples.report, jfr, checkpoints.file);
+        Outputs(FinalOutputOptions finals, TrajectoryOption trajectory, ReportOption report, Path jfr,
+                CheckpointOptions checkpoints) {
+            this(finals.out, finals.summary, trajectory.file, report.folder, jfr, checkpoints.file);
         }
 
         /** Whether only the readable summary on stdout is asked for, no file of the final state or summary. */
@@ -129,7 +130,7 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
         Tunables.check(engine.name(), engine.tunables(), command.tunables);
         checkSampling(engine, command);
         command.checkpoints.check(engine);
-        Outputs outputs = new Outputs(command.finals, command.samples, command.jfr, command.checkpoints);
+        Outputs outputs = new Outputs(command.finals, command.trajectory, command.report, command.jfr, command.checkpoints);
         outputs.check();
 
         Scene fromFile = file.about(() -> {
@@ -166,7 +167,7 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
     /** {@code resume}'s request: its options, then the checkpoint they apply to, and the run it holds. */
     static RunRequest resume(ResumeCommand command) {
         Double until = command.until.checked();
-        Outputs outputs = new Outputs(command.finals, command.samples, null, command.checkpoints);
+        Outputs outputs = new Outputs(command.finals, command.trajectory, command.report, null, command.checkpoints);
         outputs.check();
         SceneFile file = new SceneFile(command.checkpointFile);
         CheckpointFile saved = file.about(() -> CheckpointFile.read(file.path()));
@@ -201,12 +202,12 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
 
     /** --every and what samples need: a positive finite interval, and an engine that can stop at given times. */
     private static void checkSampling(Engine engine, SimulateCommand command) {
-        if ((command.observe == null) != (command.samples.report == null)) {
+        if ((command.observe == null) != (command.report.folder == null)) {
             throw new BadInputException(command.observe == null ? "--report needs --observe LIST (what to put in it)"
                     : "--observe needs --report DIR (where its tables and plots go)");
         }
         if (command.every == null) {
-            if (command.samples.trajectory != null) {
+            if (command.trajectory.file != null) {
                 throw new BadInputException("--trajectory needs --every DT (the time between frames)");
             }
             if (command.observe != null) {

@@ -69,7 +69,10 @@ final class SimulateCommand implements Callable<Integer> {
     String observe;
 
     @Mixin
-    SampleOutputOptions samples;
+    ReportOption report;
+
+    @Mixin
+    TrajectoryOption trajectory;
 
     @Option(names = "--jfr", paramLabel = "FILE.jfr",
             description = "Record the run with Java Flight Recorder (carom's events, execution samples, GC, CPU load) "
