@@ -130,7 +130,8 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
         Tunables.check(engine.name(), engine.tunables(), command.tunables);
         checkSampling(engine, command);
         command.checkpoints.check(engine);
-        Outputs outputs = new Outputs(command.finals, command.trajectory, command.report, command.jfr, command.checkpoints);
+        Outputs outputs = new Outputs(command.finals, command.trajectory, command.report, command.jfr,
+                command.checkpoints);
         outputs.check();
 
         Scene fromFile = file.about(() -> {
