@@ -2,7 +2,6 @@ package carom.app;
 
 import carom.core.BadInputException;
 import carom.core.Quoted;
-import carom.core.engine.Energy;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.observe.StateChecks;
@@ -72,11 +71,9 @@ final class CompressCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
-        if (!(toPressure > 0) || Double.isInfinite(toPressure)) {
-            throw new BadInputException("--to-pressure: must be a finite number > 0, got " + toPressure);
-        }
-        if (every != null && (!(every > 0) || Double.isInfinite(every))) {
-            throw new BadInputException("--every: must be a finite number > 0, got " + every);
+        OptionChecks.positiveFinite("--to-pressure", toPressure);
+        if (every != null) {
+            OptionChecks.positiveFinite("--every", every);
         }
         if (out != null && summary != null && out.toAbsolutePath().normalize().equals(summary.toAbsolutePath().normalize())) {
             throw new BadInputException("--out and --summary name the same file " + Quoted.fileName(out.toString()));
@@ -118,8 +115,7 @@ final class CompressCommand implements Callable<Integer> {
                 files.stage(out, w -> writePacking(result.finalState(), w));
             }
             if (summary != null) {
-                ObjectNode json = SummaryJson.toJson(scene.name(), scene.size(), 1, result, Energy.of(scene, result),
-                        FinalChecks.of(scene, result.finalState()));
+                ObjectNode json = SummaryJson.toJson(FinishedRun.of(scene, 1, result));
                 packing.addTo(json.putObject("compression"));
                 files.stage(summary, w -> SummaryJson.write(json, w));
             }

@@ -7,7 +7,7 @@ import carom.core.state.Discs;
 /**
  * What the summary says of a run's final state ({@link StateChecks}): the deepest overlap as a fraction
  * of a contact distance, and the discs outside a walled box. Rounding for exact engines; the cost of
- * relaxation for the others (issue 23: relaxed engines heat the gas and, rarely, leave overlaps).
+ * relaxation for the others (relaxed engines heat the gas and, rarely, leave overlaps).
  */
 record FinalChecks(double deepestOverlap, int escapes) {
     static FinalChecks of(Scene scene, Discs finalState) {

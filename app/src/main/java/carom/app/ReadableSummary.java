@@ -25,15 +25,17 @@ final class ReadableSummary {
     private ReadableSummary() {
     }
 
-    static void print(String sceneName, int particles, int threads, RunResult r, Energy energy, FinalChecks checks,
-                      PrintWriter out, Charset charset) {
+    static void print(FinishedRun run, PrintWriter out, Charset charset) {
+        RunResult r = run.result();
+        Energy energy = run.energy();
+        FinalChecks checks = run.checks();
         String plusMinus = charset.newEncoder().canEncode('\u00b1') ? " \u00b1 " : " +/- ";
         // The name comes from the scene file: no control characters reach the terminal.
-        line(out, "scene", Quoted.bare(sceneName, NAME_CHARS));
+        line(out, "scene", Quoted.bare(run.sceneName(), NAME_CHARS));
         line(out, "engine", r.engine() + (r.exact() ? " (exact)" : " (relaxed)"));
-        line(out, "discs", Integer.toString(particles));
+        line(out, "discs", Integer.toString(run.discs()));
         line(out, "until", Double.toString(r.until()));
-        line(out, "threads", Integer.toString(threads));
+        line(out, "threads", Integer.toString(run.threads()));
         line(out, "pair collisions", Long.toString(r.pairCollisions()));
         line(out, "wall collisions", Long.toString(r.wallCollisions()));
         line(out, "events", Long.toString(r.events()));

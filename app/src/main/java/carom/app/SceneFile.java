@@ -7,8 +7,8 @@ import java.nio.file.Path;
 import java.util.function.Supplier;
 
 /**
- * The scene file a command was given, and the SPEC's rule that bad input found while handling it names
- * the file: {@code error: FILE: what is wrong}. Shared by every command that reads a scene.
+ * The scene file a command was given, and the rule that bad input found while handling it names the
+ * file: {@code error: FILE: what is wrong}. Shared by every command that reads a scene.
  */
 public record SceneFile(String name) {
     /** The file as a path; a name the file system cannot take is bad input. */

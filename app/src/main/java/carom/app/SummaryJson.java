@@ -14,11 +14,12 @@ import java.util.Map;
 import java.util.TreeMap;
 
 /**
- * SUMMARY.json: SPEC's keys ({@code engine, exact, particles, until, collisions, kineticEnergy, energy,
- * momentum, wallSeconds}) plus what a benchmark needs to compare runs: the scene, the threads the engine
- * really used, events, throughput, the drift of the total energy ({@link Energy}), causality violations,
- * the pressure (from the collision virial; see {@link carom.core.observe.VirialAccumulator} for what it
- * means in a walled box), the engine's counters and the machine it ran on. Numbers that are not defined
+ * SUMMARY.json: the keys every summary holds ({@code engine, exact, particles, until, collisions,
+ * kineticEnergy, energy, momentum, wallSeconds}) plus what a benchmark needs to compare runs: the scene,
+ * the threads the engine really used, events, throughput, the drift of the total energy ({@link Energy}),
+ * causality violations, the pressure (from the collision virial; see
+ * {@link carom.core.observe.VirialAccumulator} for what it means in a walled box), the engine's counters
+ * and the machine it ran on. Numbers that are not defined
  * (the energy under gravity in a periodic box, an error bar from too few blocks) are null.
  */
 final class SummaryJson {
@@ -27,14 +28,17 @@ final class SummaryJson {
     private SummaryJson() {
     }
 
-    static ObjectNode toJson(String sceneName, int particles, int threads, RunResult r, Energy total, FinalChecks checks) {
+    static ObjectNode toJson(FinishedRun run) {
+        RunResult r = run.result();
+        Energy total = run.energy();
+        FinalChecks checks = run.checks();
         ObjectNode root = MAPPER.createObjectNode();
-        root.put("scene", sceneName);
+        root.put("scene", run.sceneName());
         root.put("engine", r.engine());
         root.put("exact", r.exact());
-        root.put("particles", particles);
+        root.put("particles", run.discs());
         number(root, "until", r.until());
-        root.put("threads", threads);
+        root.put("threads", run.threads());
 
         ObjectNode collisions = root.putObject("collisions");
         collisions.put("pair", r.pairCollisions());

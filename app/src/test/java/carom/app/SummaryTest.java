@@ -31,7 +31,7 @@ class SummaryTest {
     @Test
     void jsonCarriesEveryField() throws IOException {
         StringWriter w = new StringWriter();
-        SummaryJson.write(SummaryJson.toJson("gas", 3, 8, result(new Pressure(1.25, 0.01, 0.4, 0.003, 12)), KINETIC_ONLY, NO_OVERLAP), w);
+        SummaryJson.write(SummaryJson.toJson(new FinishedRun("gas", 3, 8, result(new Pressure(1.25, 0.01, 0.4, 0.003, 12)), KINETIC_ONLY, NO_OVERLAP)), w);
         JsonNode s = new ObjectMapper().readTree(w.toString());
 
         assertThat(s.get("engine").asText()).isEqualTo("fast");
@@ -64,7 +64,7 @@ class SummaryTest {
     @Test
     void nonFiniteNumbersBecomeNullSoTheJsonStaysValid() throws IOException {
         StringWriter w = new StringWriter();
-        SummaryJson.write(SummaryJson.toJson("gas", 3, 1, result(new Pressure(1.25, Double.NaN, 0.4, Double.NaN, 1)), KINETIC_ONLY, NO_OVERLAP), w);
+        SummaryJson.write(SummaryJson.toJson(new FinishedRun("gas", 3, 1, result(new Pressure(1.25, Double.NaN, 0.4, Double.NaN, 1)), KINETIC_ONLY, NO_OVERLAP)), w);
         JsonNode s = new ObjectMapper().readTree(w.toString());
         assertThat(s.at("/pressure/Zerror").isNull()).isTrue();
         assertThat(s.at("/pressure/Z").asDouble()).isEqualTo(1.25);
@@ -73,7 +73,7 @@ class SummaryTest {
     @Test
     void readableSummaryShowsPressureAndCounters() {
         StringWriter w = new StringWriter();
-        ReadableSummary.print("gas", 3, 8, result(new Pressure(1.25, 0.01, 0.4, 0.003, 12)), KINETIC_ONLY, NO_OVERLAP, new PrintWriter(w),
+        ReadableSummary.print(new FinishedRun("gas", 3, 8, result(new Pressure(1.25, 0.01, 0.4, 0.003, 12)), KINETIC_ONLY, NO_OVERLAP), new PrintWriter(w),
                 StandardCharsets.UTF_8);
         assertThat(w.toString()).containsPattern("(?m)^engine +fast \\(relaxed\\)$")
                 .containsPattern("(?m)^pressure Z +1\\.25000 \u00b1 0\\.010 ")
@@ -87,7 +87,7 @@ class SummaryTest {
     @Test
     void readableSummaryAvoidsCharactersTheConsoleCannotShow() {
         StringWriter w = new StringWriter();
-        ReadableSummary.print("gas", 3, 8, result(new Pressure(1.25, 0.01, 0.4, 0.003, 12)), KINETIC_ONLY, NO_OVERLAP, new PrintWriter(w),
+        ReadableSummary.print(new FinishedRun("gas", 3, 8, result(new Pressure(1.25, 0.01, 0.4, 0.003, 12)), KINETIC_ONLY, NO_OVERLAP), new PrintWriter(w),
                 StandardCharsets.US_ASCII);
         assertThat(w.toString()).contains("1.25000 +/- 0.010").doesNotContain("\u00b1");
     }
@@ -97,7 +97,7 @@ class SummaryTest {
         // Kinetic energy fell from 3 to 2.7 while the total stayed at 10: nothing was lost.
         Energy total = new Energy(10.0, 10.0);
         StringWriter w = new StringWriter();
-        SummaryJson.write(SummaryJson.toJson("pile", 3, 1, result(null), total, NO_OVERLAP), w);
+        SummaryJson.write(SummaryJson.toJson(new FinishedRun("pile", 3, 1, result(null), total, NO_OVERLAP)), w);
         JsonNode s = new ObjectMapper().readTree(w.toString());
         assertThat(s.at("/energy/initial").asDouble()).isEqualTo(10.0);
         assertThat(s.at("/energy/final").asDouble()).isEqualTo(10.0);
@@ -105,7 +105,7 @@ class SummaryTest {
         assertThat(s.get("energyDrift").asDouble()).isZero();
 
         StringWriter text = new StringWriter();
-        ReadableSummary.print("pile", 3, 1, result(null), total, NO_OVERLAP, new PrintWriter(text), StandardCharsets.UTF_8);
+        ReadableSummary.print(new FinishedRun("pile", 3, 1, result(null), total, NO_OVERLAP), new PrintWriter(text), StandardCharsets.UTF_8);
         assertThat(text.toString()).containsPattern("(?m)^energy initial +10\\.0  \\(kinetic 3\\.0\\)$")
                 .containsPattern("(?m)^energy final +10\\.0  \\(kinetic 2\\.7\\)$")
                 .containsPattern("(?m)^energy drift +0\\.000e\\+00$");
@@ -115,19 +115,19 @@ class SummaryTest {
     void anUndefinedEnergyIsNullAndSaysWhy() throws IOException {
         Energy undefined = new Energy(Double.NaN, Double.NaN);
         StringWriter w = new StringWriter();
-        SummaryJson.write(SummaryJson.toJson("falling gas", 3, 1, result(null), undefined, NO_OVERLAP), w);
+        SummaryJson.write(SummaryJson.toJson(new FinishedRun("falling gas", 3, 1, result(null), undefined, NO_OVERLAP)), w);
         JsonNode s = new ObjectMapper().readTree(w.toString());
         assertThat(s.at("/energy/initial").isNull()).isTrue();
         assertThat(s.get("energyDrift").isNull()).isTrue();
         StringWriter text = new StringWriter();
-        ReadableSummary.print("falling gas", 3, 1, result(null), undefined, NO_OVERLAP, new PrintWriter(text), StandardCharsets.UTF_8);
+        ReadableSummary.print(new FinishedRun("falling gas", 3, 1, result(null), undefined, NO_OVERLAP), new PrintWriter(text), StandardCharsets.UTF_8);
         assertThat(text.toString()).containsPattern("(?m)^energy drift +undefined \\(gravity in a periodic box\\)$");
     }
 
     @Test
     void aSceneNameCannotWriteControlCharactersToTheTerminal() {
         StringWriter text = new StringWriter();
-        ReadableSummary.print("gas\n\u001b[2J", 3, 1, result(null), KINETIC_ONLY, NO_OVERLAP, new PrintWriter(text),
+        ReadableSummary.print(new FinishedRun("gas\n\u001b[2J", 3, 1, result(null), KINETIC_ONLY, NO_OVERLAP), new PrintWriter(text),
                 StandardCharsets.UTF_8);
         assertThat(text.toString()).contains("gas\\n\\u001b[2J" + System.lineSeparator()).doesNotContain("\u001b");
     }
