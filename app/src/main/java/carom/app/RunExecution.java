@@ -99,7 +99,8 @@ final class RunExecution {
 
     /**
      * The engine's options: the run's settings, its samples (the trajectory's frames, if {@code frames} is
-     * not null, and the observables) and its checkpoints, each if there are any.
+     * not null, and the observables), the observables' collision observers and its checkpoints, each if
+     * there are any.
      */
     private static RunOptions options(RunRequest request, ProgressBar bar, Writer frames) {
         RunRequest.Settings settings = request.settings();
@@ -113,6 +114,9 @@ final class RunExecution {
         }
         if (sampler != null) {
             options = options.withSamples(sampling.every(), sampler);
+        }
+        if (observing != null) {
+            options = options.withCollisions(observing.collisions());
         }
         return request.checkpoints() == null ? options : options.withCheckpoints(request.checkpoints());
     }
