@@ -210,7 +210,7 @@ public final class GrowthRun {
         agenda.setStageEnd(plan.end(table));
         stages++;
         table.predictFirstEvents(i -> predictor.predictFull(i, 0));
-        agenda.rebased(at, plan(until - at));
+        agenda.rebased(at, planCalendar(until - at));
     }
 
     /**
@@ -329,11 +329,11 @@ public final class GrowthRun {
         motion.rebase(now, null, n);
         double epoch = agenda.epoch() + now;
         table.shiftGrowthAnchor(now);
-        agenda.rebased(epoch, plan(until - epoch));
+        agenda.rebased(epoch, planCalendar(until - epoch));
     }
 
     /** Sizes the calendar and rebuilds it at local 0, {@code untilLocal} ahead; returns the local time of the next resync. */
-    private double plan(double untilLocal) {
+    private double planCalendar(double untilLocal) {
         return RESYNC_SPANS * table.planCalendar(queue, null, n, 0, untilLocal);
     }
 
