@@ -49,7 +49,8 @@ import java.util.Map;
  *   <li>Every disc stays within {@code slack} of its binned position until the step end.</li>
  *   <li>The queue holds exactly the potentials, within the step, of each disc's current trajectory
  *       against its neighbourhood (eager removal; no stale events).</li>
- *   <li>Events are processed in nondecreasing time; ties in any order (SPEC).</li>
+ *   <li>Events are processed in nondecreasing time; ties in any order (the scene contract leaves the
+ *       order of simultaneous events open).</li>
  * </ul>
  *
  * <h2>Checkpoints</h2>
