@@ -242,6 +242,7 @@ public final class GrowthRun {
             }
             long events = step.events();
             if (RunAgenda.pollDue(events)) {
+                // Progress only: growth runs take no checkpoints, so no stop is ever requested.
                 agenda.poll(events, agenda.epoch() + now, step.pairCollisions() + step.wallCollisions());
             }
         }
