@@ -3,13 +3,9 @@ package carom.engines.fast;
 import carom.core.engine.Tunables;
 import carom.core.engine.Counter;
 import carom.engines.kernel.KernelTunables;
-import static carom.engines.kernel.DiscTable.EXPIRE;
-import static carom.engines.kernel.DiscTable.HIT;
-import static carom.engines.kernel.DiscTable.RECHECK;
 import static carom.engines.kernel.DiscTable.RESYNC_SPANS;
 
 import carom.core.engine.Checkpoints;
-import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.engine.RunStopped;
@@ -28,7 +24,9 @@ import carom.engines.kernel.CalendarQueue;
 import carom.engines.kernel.CellPredictor;
 import carom.engines.kernel.DiscMotion;
 import carom.engines.kernel.DiscTable;
+import carom.engines.kernel.EventStep;
 import carom.engines.kernel.ListPredictor;
+import carom.engines.kernel.RunAgenda;
 import carom.engines.kernel.TableState;
 import java.util.HashMap;
 import java.util.Map;
@@ -39,8 +37,9 @@ import java.util.Map;
  * their invariants are described). The records, the grid and the Morton order are a
  * {@link DiscTable}; advance, collisions on the records and cell moves are a {@link DiscMotion};
  * crossing, contact and wall times, the neighbourhood scan and scheduling are a
- * {@link CellPredictor}. This class is the event loop, the collision bookkeeping, the observables
- * and the clocks: disc clocks and event times count from {@code epoch}, and every
+ * {@link CellPredictor}; each event is one {@link EventStep}. This class is the event loop over the
+ * run's scheduled work ({@link RunAgenda}: samples, resyncs, checkpoints, stop polls), the observables
+ * and the state: disc clocks and event times count from the agenda's epoch, and every
  * {@link DiscTable#RESYNC_SPANS} calendar spans all discs are advanced, clocks restart at 0 and the
  * queue is rebuilt with a re-estimated slice width, so clocks stay small and keep their precision.
  *
@@ -62,37 +61,25 @@ final class FastRun {
     /** Neighbour lists ({@code --option skin}), predicting in place of {@link #p}; null: cell scans. */
     private final ListPredictor lists;
     private final Flight flight;
-    private final EnergyAudit audit;
     private final VirialAccumulator virial;
-    private final ProgressListener progress;
-    private final StallGuard stallGuard;
     private double energyStart;
     private double[] momentumStart;
 
     /** Events: each disc's event time is in its record, the queue links too. */
     private final CalendarQueue queue;
+    /** One event, with the event counts. */
+    private final EventStep step;
+    /** Samples, resyncs, checkpoints and polls, and the epoch (absolute time of local 0). */
+    private final RunAgenda agenda;
 
-    private double epoch;
-    private double untilLocal;
-    private double resyncAt;
-    /** Samples asked for ({@code --every}), and the next one's local time (+Infinity if none). */
+    /** Samples asked for ({@code --every}). */
     private final SampleSchedule samples;
-    private double sampleLocal;
-    private long pairCollisions;
-    private long wallCollisions;
-    private long events;
-    private long crossings;
-    private long staleEvents;
     private long resyncs;
-    /** Where checkpoints go (null: none), the next periodic one's index and local time. */
+    /** Where checkpoints go (null: none). */
     private final Checkpoints checkpoints;
-    private long checkpointIndex;
-    private double checkpointLocal;
     private static final String STATE_TAG = "fast/1";
     /** A run with neighbour lists saves them too. */
     private static final String LISTS_STATE_TAG = "fast/lists/1";
-    /** A stop request is read every 4096 events: a volatile read, a few microseconds apart. */
-    private static final long STOP_POLL_MASK = (1 << 12) - 1;
 
     FastRun(Scene scene, RunOptions options) {
         this.scene = scene;
@@ -104,29 +91,29 @@ final class FastRun {
                 skin > 0 ? KernelTunables.listCellFactor(options, skin) : KernelTunables.cellFactor(options, scene));
         this.n = table.n;
         table.prefetchHints(KernelTunables.PREFETCH.of(options));
-        this.motion = new DiscMotion(table);
+        this.motion = new DiscMotion(table, options.collisions());
         this.p = new CellPredictor(motion);
         // By default, lists only where the box allows them (4 cells along each periodic axis); asked for, or nothing.
         boolean lists = skin > 0 && (table.listsAllowed() || KernelTunables.skinGiven(options));
         double largestDiameter = 2 * src.maxRadius();
         this.lists = lists ? new ListPredictor(motion, skin * largestDiameter, largestDiameter) : null;
         this.flight = table.flight;
-        this.audit = Tunables.AUDIT_ENERGY.of(options) ? EnergyAudit.forScene(scene) : null;
+        EnergyAudit audit = Tunables.AUDIT_ENERGY.of(options) ? EnergyAudit.forScene(scene) : null;
         this.virial = VirialAccumulator.forRun(until);
-        this.progress = options.progress();
-        this.stallGuard = new StallGuard(scene, table::sceneId);
+        StallGuard stallGuard = new StallGuard(scene, table::sceneId);
         this.energyStart = Observables.kineticEnergy(src);
         this.momentumStart = Observables.momentum(src);
         this.queue = table.newCalendar(n);
+        this.step = new EventStep(table, motion, p, this.lists, queue, stallGuard, virial, audit);
         this.samples = SampleSchedule.of(scene, options);
         this.checkpoints = options.checkpoints();
-        this.checkpointIndex = checkpoints == null ? Long.MAX_VALUE : Checkpoints.nextIndexAfter(0, checkpoints.every());
+        this.agenda = RunAgenda.inline(until, samples, checkpoints, options.progress());
     }
 
     RunResult run() {
         long started = System.nanoTime();
-        table.predictFirstEvents(i -> predictFull(i, 0));
-        replan(0);
+        table.predictFirstEvents(i -> step.predictFull(i, 0));
+        replan();
         return finish(started);
     }
 
@@ -144,14 +131,15 @@ final class FastRun {
         if (!(until >= time)) {
             throw new IllegalArgumentException("the checkpoint is at t = " + time + ", after until = " + until);
         }
-        epoch = in.getDouble();
-        resyncAt = in.getDouble();
+        double epoch = in.getDouble();
+        double resyncAt = in.getDouble();
         samples.resumeAt(in.getLong());
-        pairCollisions = in.getLong();
-        wallCollisions = in.getLong();
-        events = in.getLong();
-        crossings = in.getLong();
-        staleEvents = in.getLong();
+        long pairCollisions = in.getLong();
+        long wallCollisions = in.getLong();
+        long events = in.getLong();
+        long crossings = in.getLong();
+        long staleEvents = in.getLong();
+        step.setCounts(events, pairCollisions, wallCollisions, crossings, staleEvents);
         resyncs = in.getLong();
         long predictionsMade = in.getLong();
         p.resumeCount(predictionsMade);
@@ -166,18 +154,17 @@ final class FastRun {
         queue.restore(in);
         motion.restoreRestCounts(in);
         in.end();
-        if (checkpoints != null) {
-            checkpointIndex = Checkpoints.nextIndexAfter(time, checkpoints.every());
-        }
+        agenda.resumeAt(time, epoch, resyncAt);
         long before = pairCollisions + wallCollisions;
         return finish(started).resumedAfter(before);
     }
 
     /** The state between two events, continuing from absolute {@code time}: see the class comment. */
     private void save(double time) {
-        StateBytes.Out out = new StateBytes.Out(lists == null ? STATE_TAG : LISTS_STATE_TAG).putDouble(until).putDouble(time).putDouble(epoch)
-                .putDouble(resyncAt).putLong(samples.index()).putLong(pairCollisions).putLong(wallCollisions)
-                .putLong(events).putLong(crossings).putLong(staleEvents).putLong(resyncs).putLong(predictions())
+        StateBytes.Out out = new StateBytes.Out(lists == null ? STATE_TAG : LISTS_STATE_TAG).putDouble(until).putDouble(time)
+                .putDouble(agenda.epoch()).putDouble(agenda.resyncLocal()).putLong(samples.index())
+                .putLong(step.pairCollisions()).putLong(step.wallCollisions()).putLong(step.events())
+                .putLong(step.crossings()).putLong(step.staleEvents()).putLong(resyncs).putLong(step.predictions())
                 .putDouble(energyStart).putDouble(momentumStart[0]).putDouble(momentumStart[1])
                 .putDoubles(virial.blockSums()).putDouble(virial.total());
         TableState.save(table, out);
@@ -190,15 +177,8 @@ final class FastRun {
         checkpoints.save(time, out.bytes());
     }
 
-    /** The next periodic checkpoint's local time, +Infinity if none is left. */
-    private double nextCheckpointLocal() {
-        return Checkpoints.timeOf(checkpointIndex, checkpoints == null ? 0 : checkpoints.every()) - epoch;
-    }
-
     /** Runs the loop from the current state to until, then the final samples, checkpoint and result. */
     private RunResult finish(long started) {
-        sampleLocal = samples.next() - epoch;
-        checkpointLocal = nextCheckpointLocal();
         loop();
         while (samples.next() <= until) {
             sample();
@@ -211,10 +191,10 @@ final class FastRun {
         double energyEnd = Observables.kineticEnergy(out);
         Pressure pressure = VirialAccumulator.pressureOf(virial, scene, out, energyStart, energyEnd);
         Map<String, Long> counters = new HashMap<>();
-        counters.put(Counter.EVENTS.key, events);
-        counters.put(Counter.CELL_CROSSINGS.key, crossings);
-        counters.put(Counter.STALE_EVENTS.key, staleEvents);
-        counters.put(Counter.PREDICTIONS.key, predictions());
+        counters.put(Counter.EVENTS.key, step.events());
+        counters.put(Counter.CELL_CROSSINGS.key, step.crossings());
+        counters.put(Counter.STALE_EVENTS.key, step.staleEvents());
+        counters.put(Counter.PREDICTIONS.key, step.predictions());
         if (lists != null) {
             counters.put(Counter.LIST_REBUILDS.key, lists.rebuilds());
         }
@@ -225,7 +205,7 @@ final class FastRun {
             counters.put(Counter.SLEEPS.key, motion.sleeps());
             counters.put(Counter.WAKES.key, motion.wakes());
         }
-        return new RunResult("fast", true, out, until, pairCollisions, wallCollisions, events,
+        return new RunResult("fast", true, out, until, step.pairCollisions(), step.wallCollisions(), step.events(),
                 energyStart, energyEnd, momentumStart, Observables.momentum(out), pressure, 0, seconds,
                 Map.copyOf(counters), motion.energyPutToRest());
     }
@@ -235,112 +215,51 @@ final class FastRun {
         return table.bytes() + queue.bytes() + (lists == null ? 0 : lists.bytes());
     }
 
-    private long predictions() {
-        return lists == null ? p.predictions() : lists.predictions();
-    }
-
-    private void advance(int i, double time) {
-        motion.advance(i, time);
-    }
-
-    private double predictFull(int i, double now) {
-        return lists == null ? p.predictFull(i, now) : lists.predictFull(i, now);
-    }
-
+    /**
+     * Events in time order to until, with the scheduled work between them (see {@link RunAgenda#inline});
+     * a stop request saves between two events and stops the run.
+     */
     private void loop() {
-        untilLocal = until - epoch;
-        long progressMark = 0;
+        double due = agenda.due();
         while (true) {
             int i = queue.peek();
             if (i < 0) {
                 return;
             }
             double now = queue.time(i);
-            if (now > untilLocal) {
-                return;
-            }
-            if (now >= sampleLocal) {
-                sample();
-                continue;
-            }
-            if (now >= resyncAt) {
-                resync(now);
-                continue;
-            }
-            if (now >= checkpointLocal) {
-                save(Checkpoints.timeOf(checkpointIndex, checkpoints.every()));
-                checkpointIndex = Checkpoints.nextIndexAfter(epoch + now, checkpoints.every());
-                checkpointLocal = nextCheckpointLocal();
-                continue;
-            }
-            queue.pollTop();
-            events++;
-            int other = table.partner(i);
-            byte k = table.kind(i);
-            stallGuard.event(epoch + now, i, k != HIT ? StallGuard.CELL_SIDE : other);
-            if (k == RECHECK) {
-                advance(i, now);
-                queue.insert(i, predictFull(i, now));
-            } else if (k == EXPIRE) {
-                queue.insert(i, lists.expireAndPredict(i, now));
-            } else if (k != HIT) {
-                crossCell(i, now, k);
-            } else {
-                int p = other;
-                if (p >= 0) {
-                    if (table.predictionStale(i, p)) {
-                        staleEvents++;
-                        advance(i, now);
-                        queue.insert(i, predictFull(i, now));
-                    } else {
-                        collidePair(i, p, now);
-                    }
-                } else {
-                    collideWall(i, DiscTable.wallOf(p), now);
+            if (now >= due) {
+                int work = agenda.whatIsDue(now);
+                if (work == RunAgenda.END) {
+                    return;
+                }
+                if (work != RunAgenda.NOTHING) {
+                    runScheduled(work, now);
+                    due = agenda.due();
+                    continue;
                 }
             }
-            if (events - progressMark >= (1 << 16)) {
-                progressMark = events;
-                progress.progress(epoch + now, pairCollisions + wallCollisions);
-            }
-            if ((events & STOP_POLL_MASK) == 0 && checkpoints != null && checkpoints.stopRequested()) {
+            step.run(i, now, agenda.epoch());
+            long events = step.events();
+            if (RunAgenda.pollDue(events) && agenda.poll(events, agenda.epoch() + now, step.pairCollisions() + step.wallCollisions())) {
                 // Between two events: the next one is still queued, so the checkpoint continues from here.
-                save(epoch + now);
-                throw new RunStopped(epoch + now);
+                double at = agenda.epoch() + now;
+                save(at);
+                throw new RunStopped(at);
             }
         }
     }
 
-    private void collidePair(int a, int b, double now) {
-        double abs = epoch + now;
-        double w = motion.collidePair(a, b, now, abs, stallGuard);
-        pairCollisions++;
-        virial.add(abs, w);
-        if (audit != null) {
-            audit.check(motion.snapshot(now), flight, now, abs);
+    /** The scheduled work {@code work} ({@link RunAgenda}) due before the event at local {@code now}. */
+    private void runScheduled(int work, double now) {
+        switch (work) {
+            case RunAgenda.SAMPLE -> sample();
+            case RunAgenda.RESYNC -> resync(now);
+            case RunAgenda.CHECKPOINT -> {
+                save(agenda.checkpointTime());
+                agenda.checkpointed(agenda.epoch() + now);
+            }
+            default -> throw new IllegalStateException("scheduled work " + work);
         }
-        queue.insert(a, predictFull(a, now));
-        // Mobile in the scene (awake or asleep): b may have woken or fallen asleep.
-        if (table.mobile(b)) {
-            queue.remove(b);
-            queue.insert(b, predictFull(b, now));
-        }
-    }
-
-    private void collideWall(int i, int wall, double now) {
-        double abs = epoch + now;
-        motion.collideWall(i, wall, now, abs, stallGuard);
-        wallCollisions++;
-        if (audit != null) {
-            audit.check(motion.snapshot(now), flight, now, abs);
-        }
-        queue.insert(i, predictFull(i, now));
-    }
-
-    /** Moves disc i into the neighbouring cell through side {@code k} and re-predicts it. */
-    private void crossCell(int i, double now, byte k) {
-        crossings++;
-        queue.insert(i, p.crossAndPredict(i, now, k));
     }
 
     /**
@@ -351,12 +270,9 @@ final class FastRun {
         if (now > 0) {
             resyncs++;
             motion.rebase(now, null, n);
-            epoch += now;
-            untilLocal = until - epoch;
-            sampleLocal = samples.next() - epoch;
-            checkpointLocal = nextCheckpointLocal();
+            agenda.rebased(agenda.epoch() + now, agenda.resyncLocal());
         }
-        replan(0);
+        replan();
     }
 
     /**
@@ -364,21 +280,21 @@ final class FastRun {
      * Events at exactly a sample's time come after it; the sample at {@code until} is the final state.
      */
     private void sample() {
-        motion.stateAt(samples.state(), 0, n, samples.next() - epoch);
+        motion.stateAt(samples.state(), 0, n, samples.next() - agenda.epoch());
         samples.emit(virial.total());
-        sampleLocal = samples.next() - epoch;
+        agenda.sampled();
     }
 
-    /** Sizes the calendar from the mean event delay (trimmed of far outliers) and rebuilds it. */
-    private void replan(double now) {
+    /** Sizes the calendar from the mean event delay (trimmed of far outliers) and rebuilds it at local 0. */
+    private void replan() {
         Object rebuild = EngineEvents.rebuildStarted();
-        double span = table.planCalendar(queue, null, n, now, untilLocal);
-        resyncAt = now + RESYNC_SPANS * span;
+        double span = table.planCalendar(queue, null, n, 0, until - agenda.epoch());
+        agenda.resyncAt(RESYNC_SPANS * span);
         EngineEvents.rebuildFinished(rebuild, "fast", n, queue.size());
     }
 
     /** Every disc at {@code until}, in original id order, periodic positions wrapped into the box. */
     private Discs finalState() {
-        return motion.finalState(untilLocal, until);
+        return motion.finalState(until - agenda.epoch(), until);
     }
 }

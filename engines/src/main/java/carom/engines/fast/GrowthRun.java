@@ -1,15 +1,13 @@
 package carom.engines.fast;
 
-import static carom.engines.kernel.DiscTable.HIT;
-import static carom.engines.kernel.DiscTable.RECHECK;
 import static carom.engines.kernel.DiscTable.RESYNC_SPANS;
 
 import carom.core.engine.Counter;
-import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.engine.SampleSchedule;
 import carom.core.engine.StallGuard;
+import carom.core.observe.CollisionObserver;
 import carom.core.observe.Observables;
 import carom.core.observe.Pressure;
 import carom.core.observe.VirialAccumulator;
@@ -19,15 +17,18 @@ import carom.engines.kernel.CalendarQueue;
 import carom.engines.kernel.CellPredictor;
 import carom.engines.kernel.DiscMotion;
 import carom.engines.kernel.DiscTable;
+import carom.engines.kernel.EventStep;
 import carom.engines.kernel.GrowthStages;
 import carom.engines.kernel.KernelTunables;
+import carom.engines.kernel.RunAgenda;
 import java.util.HashMap;
 import java.util.Map;
 
 /**
  * A run of the fast engine with the growth effect (the Lubachevsky-Stillinger protocol): radii
  * R(0)(1 + G t) at absolute time t, contacts and collisions of growing discs in the kernel
- * ({@link DiscTable#growing}), the same one-event-per-disc loop as {@link FastRun}.
+ * ({@link DiscTable#growing}), the same one-event-per-disc {@link EventStep} as {@link FastRun}, over a
+ * {@link RunAgenda#stops} agenda (the loop ends at every sample, stage end and until).
  *
  * <p>What growth adds to that loop, and where:
  * <ul>
@@ -65,8 +66,11 @@ public final class GrowthRun {
     private final GrowthStages plan;
     private final double stopPressure;
     private final double energyCap;
-    private final ProgressListener progress;
     private final SampleSchedule samples;
+    /** Stops (until, samples, stage ends), resyncs and progress, and the epoch (absolute time of local 0). */
+    private final RunAgenda agenda;
+    /** Told every collision (null: none). */
+    private final CollisionObserver collisions;
     private final VirialAccumulator virial;
     private final StallGuard stallGuard;
     private final double energyStart;
@@ -82,11 +86,7 @@ public final class GrowthRun {
     private DiscMotion motion;
     private CellPredictor predictor;
     private CalendarQueue queue;
-    private double epoch;
-    /** Absolute time at which this stage's cells stop holding the largest disc. */
-    private double stageEnd;
-    /** Local time of the next re-anchoring of clocks. */
-    private double resyncAt;
+    private EventStep step;
 
     // The energy account and the pressure interval under way.
     private double kinetic;
@@ -100,11 +100,7 @@ public final class GrowthRun {
     private double lastCompressibility = Double.NaN;
     private boolean capReached;
 
-    private long pairCollisions;
-    private long wallCollisions;
-    private long events;
-    private long crossings;
-    private long staleEvents;
+    /** Predictions of the stages before the one under way. */
     private long predictions;
     private long stages;
     private long rescalings;
@@ -129,8 +125,9 @@ public final class GrowthRun {
         this.energyStart = Observables.kineticEnergy(state);
         this.momentumStart = Observables.momentum(state);
         this.energyCap = energyStart > 0 ? energyCap : Double.POSITIVE_INFINITY;
-        this.progress = options.progress();
         this.samples = SampleSchedule.of(scene, options);
+        this.agenda = RunAgenda.stops(until, samples, options.progress());
+        this.collisions = options.collisions();
         this.virial = VirialAccumulator.forRun(until);
         this.stallGuard = new StallGuard(scene, i -> table.sceneId(i));
     }
@@ -155,13 +152,13 @@ public final class GrowthRun {
         // No run-long pressure: the density changes all along; Z is per thermostat interval (compress).
         Pressure pressure = null;
         Map<String, Long> counters = new HashMap<>();
-        counters.put(Counter.EVENTS.key, events);
-        counters.put(Counter.CELL_CROSSINGS.key, crossings);
-        counters.put(Counter.STALE_EVENTS.key, staleEvents);
+        counters.put(Counter.EVENTS.key, step.events());
+        counters.put(Counter.CELL_CROSSINGS.key, step.crossings());
+        counters.put(Counter.STALE_EVENTS.key, step.staleEvents());
         counters.put(Counter.PREDICTIONS.key, predictions);
         counters.put(Counter.GROWTH_STAGES.key, stages);
         counters.put(Counter.RESCALINGS.key, rescalings);
-        return new RunResult("fast", true, out, stoppedAt, pairCollisions, wallCollisions, events, energyStart,
+        return new RunResult("fast", true, out, stoppedAt, step.pairCollisions(), step.wallCollisions(), step.events(), energyStart,
                 energyEnd, momentumStart, Observables.momentum(out), pressure, 0, seconds, Map.copyOf(counters));
     }
 
@@ -190,22 +187,30 @@ public final class GrowthRun {
         return rescalings;
     }
 
-    /** Builds the stage that starts at absolute {@code at} from {@link #state}, every mobile disc predicted. */
+    /**
+     * Builds the stage that starts at absolute {@code at} from {@link #state}, every mobile disc predicted;
+     * its event step takes up the counts of the stage before.
+     */
     private void build(double at) {
         if (motion != null) {
             energyAddedEarlierStages += motion.energyAdded();
             predictions += predictor.predictions();
         }
-        epoch = at;
         table = plan.table(state, at);
         table.prefetchHints(prefetch);
-        motion = new DiscMotion(table);
+        motion = new DiscMotion(table, collisions);
         predictor = new CellPredictor(motion);
         queue = table.newCalendar(n);
-        stageEnd = plan.end(table);
+        EventStep previous = step;
+        step = new EventStep(table, motion, predictor, null, queue, stallGuard, virial, null);
+        if (previous != null) {
+            step.setCounts(previous.events(), previous.pairCollisions(), previous.wallCollisions(),
+                    previous.crossings(), previous.staleEvents());
+        }
+        agenda.setStageEnd(plan.end(table));
         stages++;
         table.predictFirstEvents(i -> predictor.predictFull(i, 0));
-        replan(0);
+        agenda.rebased(at, planCalendar(until - at));
     }
 
     /**
@@ -213,64 +218,39 @@ public final class GrowthRun {
      * local time reached. Resyncs happen inside.
      */
     private double loop() {
-        long progressMark = events;
+        double due = agenda.due();
         while (true) {
-            double limit = Math.min(Math.min(until, samples.next()), stageEnd) - epoch;
             int i = queue.peek();
             double now = i < 0 ? Double.POSITIVE_INFINITY : queue.time(i);
-            if (now >= resyncAt && resyncAt < limit) {
-                resync(resyncAt);
-                continue;
+            if (now >= due) {
+                int work = agenda.whatIsDue(now);
+                if (work == RunAgenda.END) {
+                    return agenda.stopLocal();
+                }
+                if (work == RunAgenda.RESYNC) {
+                    resync(agenda.resyncLocal());
+                    due = agenda.due();
+                    continue;
+                }
             }
-            if (now >= limit) {
-                return limit;
-            }
-            queue.pollTop();
-            events++;
-            int other = table.partner(i);
-            byte k = table.kind(i);
-            stallGuard.event(epoch + now, i, k != HIT ? StallGuard.CELL_SIDE : other);
-            if (k == RECHECK) {
-                motion.advance(i, now);
-                queue.insert(i, predictor.predictFull(i, now));
-            } else if (k != HIT) {
-                crossings++;
-                queue.insert(i, predictor.crossAndPredict(i, now, k));
-            } else if (other >= 0 && table.predictionStale(i, other)) {
-                staleEvents++;
-                motion.advance(i, now);
-                queue.insert(i, predictor.predictFull(i, now));
-            } else {
-                collide(i, other, now);
+            int done = step.run(i, now, agenda.epoch());
+            if (done >= EventStep.PAIR) {
+                account(done == EventStep.PAIR ? step.lastVirial() : 0, agenda.epoch() + now);
                 if (capReached) {
                     return now;
                 }
             }
-            if (events - progressMark >= (1 << 16)) {
-                progressMark = events;
-                progress.simulatedTime(epoch + now);
+            long events = step.events();
+            if (RunAgenda.pollDue(events)) {
+                // Progress only: growth runs take no checkpoints, so no stop is ever requested.
+                agenda.poll(events, agenda.epoch() + now, step.pairCollisions() + step.wallCollisions());
             }
         }
     }
 
-    /** Disc i's collision with disc or wall code {@code other} at local {@code now}; re-predicts both. */
-    private void collide(int i, int other, double now) {
-        double abs = epoch + now;
-        if (other >= 0) {
-            double w = motion.collidePair(i, other, now, abs, stallGuard);
-            pairCollisions++;
-            virial.add(abs, w);
-            intervalVirial += w;
-            queue.insert(i, predictor.predictFull(i, now));
-            if (table.invMass(other) > 0) {
-                queue.remove(other);
-                queue.insert(other, predictor.predictFull(other, now));
-            }
-        } else {
-            motion.collideWall(i, DiscTable.wallOf(other), now, abs, stallGuard);
-            wallCollisions++;
-            queue.insert(i, predictor.predictFull(i, now));
-        }
+    /** The energy account and the pressure interval after a collision at absolute {@code abs} with virial {@code w}. */
+    private void account(double w, double abs) {
+        intervalVirial += w;
         double added = motion.lastEnergyAdded();
         kinetic += added;
         intervalAdded += added;
@@ -283,7 +263,7 @@ public final class GrowthRun {
      * the stop tests, and the next stage.
      */
     private void checkpoint(double local) {
-        double at = epoch + local;
+        double at = agenda.epoch() + local;
         motion.finalRange(state, 0, n, local, at);
         boolean sampleDue = samples.next() <= at;
         if (sampleDue) {
@@ -291,6 +271,7 @@ public final class GrowthRun {
             copyInto(state, s);
             grownRadii(s, at);
             samples.emit(virial.total());
+            agenda.sampled();
         }
         if (sampleDue || capReached) {
             endInterval(at);
@@ -347,14 +328,14 @@ public final class GrowthRun {
     /** Re-anchors clocks at local {@code now}, as {@link FastRun} does, and the growth with them. */
     private void resync(double now) {
         motion.rebase(now, null, n);
-        epoch += now;
+        double epoch = agenda.epoch() + now;
         table.shiftGrowthAnchor(now);
-        replan(0);
+        agenda.rebased(epoch, planCalendar(until - epoch));
     }
 
-    private void replan(double now) {
-        double span = table.planCalendar(queue, null, n, now, until - epoch);
-        resyncAt = now + RESYNC_SPANS * span;
+    /** Sizes the calendar and rebuilds it at local 0, {@code untilLocal} ahead; returns the local time of the next resync. */
+    private double planCalendar(double untilLocal) {
+        return RESYNC_SPANS * table.planCalendar(queue, null, n, 0, untilLocal);
     }
 
     /** Radii of {@code d} at absolute {@code at}. */

@@ -20,6 +20,7 @@ import static carom.engines.kernel.DiscTable.X;
 import static carom.engines.kernel.DiscTable.Y;
 
 import carom.core.engine.StallGuard;
+import carom.core.observe.CollisionObserver;
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
 import carom.core.physics.GrowthLaw;
@@ -35,6 +36,10 @@ import carom.core.state.Discs;
  * {@code slabs}). It holds the thread's two-slot {@link #pair} window for core physics that takes
  * {@link Discs}, which its {@link CellPredictor} shares, so each thread needs its own; no allocation
  * per event.
+ *
+ * <p>A {@link CollisionObserver} given at construction is told every pair and wall collision this
+ * thread carries out, in scene ids, from the values the collision was resolved with; without one
+ * (null) a collision costs one null test more.
  */
 public final class DiscMotion {
     final DiscTable table;
@@ -74,11 +79,21 @@ public final class DiscMotion {
     private double energyAdded;
     private double lastEnergyAdded;
 
+    /** Told every collision (null: none). */
+    private final CollisionObserver collisions;
+
     /** Slots 0 and 1: discs copied in for core physics that works on {@link Discs}. */
     final Discs pair = new Discs(2);
 
+    /** Changes to {@code table}'s records that tell no observer. */
     public DiscMotion(DiscTable table) {
+        this(table, null);
+    }
+
+    /** Changes to {@code table}'s records, telling {@code collisions} every collision (null: none). */
+    public DiscMotion(DiscTable table, CollisionObserver collisions) {
         this.table = table;
+        this.collisions = collisions;
         this.scene = table.scene;
         this.rec = table.rec;
         this.stride = table.stride;
@@ -170,6 +185,28 @@ public final class DiscMotion {
      * this is (a sleeping disc predicts its contacts too). Returns the collision's virial.
      */
     public double collidePair(int a, int b, double now, double abs, StallGuard guard) {
+        double w = resolvePair(a, b, now, abs, guard);
+        if (collisions != null) {
+            tellPair(a, b, abs, w);
+        }
+        return w;
+    }
+
+    /**
+     * Tells the observer of the pair collision just resolved, from the records (both discs at the
+     * contact): the impulse is the virial over the distance, 0 for a disc that came to rest on the
+     * contact or a pair that was not approaching after all.
+     */
+    private void tellPair(int a, int b, double abs, double virial) {
+        int at = a * stride;
+        int bt = b * stride;
+        double dx = boundary.separationX(rec[bt + X] - rec[at + X]);
+        double dy = boundary.separationY(rec[bt + Y] - rec[at + Y]);
+        double dist = Math.sqrt(dx * dx + dy * dy);
+        collisions.pair(abs, sceneIds[a], sceneIds[b], dx, dy, dx / dist, dy / dist, virial / dist);
+    }
+
+    private double resolvePair(int a, int b, double now, double abs, StallGuard guard) {
         advance(a, now);
         advance(b, now);
         int at = a * stride;
@@ -243,26 +280,30 @@ public final class DiscMotion {
         advance(i, now);
         double e = restitution.wall(i, abs);
         int at = i * stride;
+        int axis = wall == Boundary.LEFT || wall == Boundary.RIGHT ? VX : VY;
+        double normalBefore = rec[at + axis];
         if (growing) {
             double im = invMass(i);
             double before = kinetic(at, im);
-            int axis = wall == Boundary.LEFT || wall == Boundary.RIGHT ? VX : VY;
-            rec[at + axis] = GrowthLaw.wallBounce(wall, rec[at + axis], radius(i) * table.growthRate, e);
+            rec[at + axis] = GrowthLaw.wallBounce(wall, normalBefore, radius(i) * table.growthRate, e);
             lastEnergyAdded = kinetic(at, im) - before;
             energyAdded += lastEnergyAdded;
             restitution.collided(i, abs);
             ir[i * IS + COUNT]++;
-            return;
-        }
-        if (gravity && guard.restsOnWall(abs, i, wall, rec[at + VX], rec[at + VY])) {
+        } else if (gravity && guard.restsOnWall(abs, i, wall, rec[at + VX], rec[at + VY])) {
             fallAsleep(i, abs);
-            return;
+        } else {
+            load(i, 0);
+            boundary.reflect(pair, 0, wall, e);
+            store(i, 0);
+            restitution.collided(i, abs);
+            ir[i * IS + COUNT]++;
         }
-        load(i, 0);
-        boundary.reflect(pair, 0, wall, e);
-        store(i, 0);
-        restitution.collided(i, abs);
-        ir[i * IS + COUNT]++;
+        if (collisions != null) {
+            // The momentum change along the wall's normal; 0 for a disc that came to rest on it.
+            double im = invMass(i);
+            collisions.wall(abs, sceneIds[i], wall, im > 0 ? Math.abs(rec[at + axis] - normalBefore) / im : 0);
+        }
     }
 
     /**

@@ -276,6 +276,15 @@ public final class DiscTable {
     }
 
     /**
+     * Time from local {@code now} until the discs in slots a and b of {@code d} touch, by this table's
+     * law (growing surfaces, or the scene's flight up to {@code horizon}): the one contact primitive for
+     * code that predicts on copies of records rather than on the records.
+     */
+    public double contactTime(Discs d, int a, int b, double now, double horizon) {
+        return growing ? growingContactTime(d, a, b, now) : flight.timeToContact(d, a, b, now, horizon, boundary);
+    }
+
+    /**
      * With growth: time from local {@code now} until the discs in slots a and b of {@code d} touch
      * ({@link GrowthLaw#timeToContact}), their positions at their own clocks {@code d.t}, their radii
      * R(0), the nearest image; for code that predicts on copies of records rather than on the records

@@ -1,7 +1,8 @@
 /**
  * The one-event-per-disc kernel: the machinery that the {@code fast} engine runs on one thread and
  * the {@code slabs} engine runs on one thread per domain (and a {@code cluster} engine will run per
- * node). Engines build their event loops on it; this package holds no loop of its own.
+ * node). Engines build their event loops on its one event step and one clock of scheduled work; the
+ * loops themselves (what ends them, what a window or a stage adds around each step) are the engines'.
  *
  * <h2>Parts</h2>
  * <ul>
@@ -24,6 +25,11 @@
  *       never a value.</li>
  *   <li>{@link carom.engines.kernel.SavedStates}: disc states saved for an undo log
  *       ({@code slabs} rolls windows back with it).</li>
+ *   <li>{@link carom.engines.kernel.EventStep}: the one event step, the dispatch on the event's kind
+ *       below, with the event counts; {@code fast}, growth runs and every slab domain run it.</li>
+ *   <li>{@link carom.engines.kernel.RunAgenda}: a run's scheduled work as one clock (the end,
+ *       samples, resyncs, checkpoints, progress and stop polls): the loop compares each event's time
+ *       with its one due time.</li>
  * </ul>
  *
  * <h2>Algorithm</h2>

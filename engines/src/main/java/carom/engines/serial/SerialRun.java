@@ -14,6 +14,7 @@ import carom.core.engine.Sleepers;
 import carom.core.engine.StallGuard;
 import carom.core.grid.CellGrid;
 import carom.core.grid.CellLists;
+import carom.core.observe.CollisionObserver;
 import carom.core.observe.EnergyAudit;
 import carom.core.observe.Observables;
 import carom.core.observe.Pressure;
@@ -48,7 +49,8 @@ import java.util.Map;
  *   <li>Every disc stays within {@code slack} of its binned position until the step end.</li>
  *   <li>The queue holds exactly the potentials, within the step, of each disc's current trajectory
  *       against its neighbourhood (eager removal; no stale events).</li>
- *   <li>Events are processed in nondecreasing time; ties in any order (SPEC).</li>
+ *   <li>Events are processed in nondecreasing time; ties in any order (the scene contract leaves the
+ *       order of simultaneous events open).</li>
  * </ul>
  *
  * <h2>Checkpoints</h2>
@@ -82,6 +84,8 @@ final class SerialRun {
     private final Contacts contacts;
     /** Resting contact under gravity (null without gravity). */
     private final Sleepers sleepers;
+    /** Told every collision (null: none). */
+    private final CollisionObserver collisions;
 
     private final Checkpoints checkpoints;
     private static final String STATE_TAG = "serial/1";
@@ -120,6 +124,7 @@ final class SerialRun {
         this.sleepers = acceleration > 0 ? new Sleepers(d) : null;
         this.contacts = new Contacts(flight, boundary, stallGuard, sleepers);
         this.checkpoints = options.checkpoints();
+        this.collisions = options.collisions();
         this.energyStart = Observables.kineticEnergy(d);
         this.momentumStart = Observables.momentum(d);
     }
@@ -288,6 +293,9 @@ final class SerialRun {
         boolean aMobile = aWasMobile || d.invMass[a] > 0;
         boolean bMobile = bWasMobile || d.invMass[b] > 0;
         pairCollisions++;
+        if (collisions != null) {
+            tellPair(epoch + now, a, b, w);
+        }
         if (aMobile) {
             restitution.collided(a, epoch + now);
         }
@@ -311,11 +319,41 @@ final class SerialRun {
     }
 
     private void collideWall(double epoch, double now, int i, int wall) {
-        contacts.wall(d, restitution, i, wall, now, epoch + now, i);
+        if (collisions == null) {
+            contacts.wall(d, restitution, i, wall, now, epoch + now, i);
+        } else {
+            collideWallTold(epoch + now, now, i, wall);
+        }
         restitution.collided(i, epoch + now);
         wallCollisions++;
         queue.removeAllOf(i);
         afterVelocityChange(i, now);
+    }
+
+    /**
+     * Tells the observer of the pair collision just resolved (both discs at the contact): the impulse
+     * is the virial over the distance, 0 for a disc that came to rest on the contact.
+     */
+    private void tellPair(double time, int a, int b, double virial) {
+        double dx = boundary.separationX(d.x[b] - d.x[a]);
+        double dy = boundary.separationY(d.y[b] - d.y[a]);
+        double dist = Math.sqrt(dx * dx + dy * dy);
+        collisions.pair(time, a, b, dx, dy, dx / dist, dy / dist, virial / dist);
+    }
+
+    /**
+     * The wall collision, and the observer told its impulse: the momentum change along the wall's
+     * normal (0 for a disc that came to rest on it). The disc is advanced to the contact first, to read
+     * its velocity there; the collision's own advance to the same time then changes nothing.
+     */
+    private void collideWallTold(double time, double now, int i, int wall) {
+        flight.advance(d, i, now);
+        boolean alongX = wall == Boundary.LEFT || wall == Boundary.RIGHT;
+        double before = alongX ? d.vx[i] : d.vy[i];
+        contacts.wall(d, restitution, i, wall, now, time, i);
+        double after = alongX ? d.vx[i] : d.vy[i];
+        double im = d.invMass[i];
+        collisions.wall(time, i, wall, im > 0 ? Math.abs(after - before) / im : 0);
     }
 
     /** Keeps the grid guarantee for disc i's new velocity, then re-predicts its potentials. */

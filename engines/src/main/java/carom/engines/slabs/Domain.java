@@ -1,7 +1,6 @@
 package carom.engines.slabs;
 
 import static carom.engines.kernel.DiscTable.HIT;
-import static carom.engines.kernel.DiscTable.RECHECK;
 
 import carom.core.engine.ProgressListener;
 import carom.core.engine.StallGuard;
@@ -12,10 +11,13 @@ import carom.engines.kernel.CalendarQueue;
 import carom.engines.kernel.CellPredictor;
 import carom.engines.kernel.DiscMotion;
 import carom.engines.kernel.DiscTable;
+import carom.engines.kernel.EventStep;
+import carom.engines.kernel.RunAgenda;
 
 /**
- * One slab: {@code fast}'s event loop, on the kernel, over the discs of its cells, with an
- * {@link UndoLog} while windows can be rolled back. Its methods run on its own thread during a
+ * One slab: {@code fast}'s event loop, on the kernel's {@link EventStep}, over the discs of its cells,
+ * with an {@link UndoLog} while windows can be rolled back (the log's entries are made around each
+ * step: the discs an event will change saved before it, edge discs marked after it). Its methods run on its own thread during a
  * window and the other per-domain tasks, and on the coordinator's in serial phases (the owner then
  * waits at the barrier). Domain 0 is the coordinator's own. The run's merged phases use one more
  * domain, over a single slab of every column: no log, no filter, {@code fast}'s loop.
@@ -35,13 +37,13 @@ final class Domain {
     /** Only with several domains (then windows can be rolled back); else null. */
     final UndoLog log;
     private final boolean logging;
-    private final StallGuard stallGuard;
     final VirialAccumulator virial;
-    /** Energy audit after every collision (single domain only; with several, the run audits at barriers). */
-    private final EnergyAudit audit;
+    /** One event; its counts are this domain's while a window runs ({@link #runWindow}). */
+    private final EventStep step;
     private final ProgressListener progress;
     private final int n;
 
+    /** This domain's counts, between windows (the step's, taken at each window's end). */
     long events;
     long pairCollisions;
     long wallCollisions;
@@ -88,9 +90,10 @@ final class Domain {
         this.motion = new DiscMotion(table);
         this.pred = logging ? new CellPredictor(motion, grid.filterFor(id)) : new CellPredictor(motion);
         this.log = logging ? new UndoLog(motion, grid, marks) : null;
-        this.stallGuard = new StallGuard(scene, table::sceneId);
         this.virial = VirialAccumulator.forRun(clock.until);
-        this.audit = audit;
+        // Energy audit after every collision on a single domain only; with several, the run audits at barriers.
+        this.step = new EventStep(table, motion, pred, null, queue, new StallGuard(scene, table::sceneId), virial,
+                logging ? null : audit);
         this.progress = progress;
     }
 
@@ -232,7 +235,19 @@ final class Domain {
      * reached ({@link #stopTime} then says where).
      */
     void runWindow(double end, boolean inclusive) {
-        long progressMark = events;
+        step.setCounts(events, pairCollisions, wallCollisions, crossings, staleEvents);
+        try {
+            runEvents(end, inclusive);
+        } finally {
+            events = step.events();
+            pairCollisions = step.pairCollisions();
+            wallCollisions = step.wallCollisions();
+            crossings = step.crossings();
+            staleEvents = step.staleEvents();
+        }
+    }
+
+    private void runEvents(double end, boolean inclusive) {
         while (true) {
             int i = queue.peek();
             if (i < 0) {
@@ -247,58 +262,53 @@ final class Domain {
                 stopDisc = i;
                 return;
             }
-            if (events >= eventLimit) {
+            long count = step.events();
+            if (count >= eventLimit) {
                 stopTime = now;
                 stopDisc = -1;
                 return;
             }
-            if (logging) {
-                log.beginEvent(now, events, pairCollisions, wallCollisions, crossings, staleEvents);
-                log.save(i);
-            }
-            queue.pollTop();
-            events++;
             int other = table.partner(i);
-            byte k = table.kind(i);
-            stallGuard.event(clock.epoch + now, i, k != HIT ? StallGuard.CELL_SIDE : other);
-            if (k == RECHECK) {
-                advance(i, now);
-                queue.insert(i, predictFull(i, now));
-            } else if (k != HIT) {
-                crossings++;
-                int slabBefore = slabOf != null ? slabOf.ownerOfDisc(i) : 0;
-                queue.insert(i, pred.crossAndPredict(i, now, k));
-                if (slabOf != null && slabOf.ownerOfDisc(i) != slabBefore) {
-                    crossSlabEvents++;
-                }
-            } else {
-                int p = other;
-                if (p >= 0) {
-                    if (table.predictionStale(i, p)) {
-                        staleEvents++;
-                        advance(i, now);
-                        queue.insert(i, predictFull(i, now));
-                    } else {
-                        collidePair(i, p, now);
-                    }
-                } else {
-                    collideWall(i, DiscTable.wallOf(p), now);
+            if (logging) {
+                log.beginEvent(now, count, step.pairCollisions(), step.wallCollisions(), step.crossings(),
+                        step.staleEvents());
+                log.save(i);
+                if (table.kind(i) == HIT && other >= 0 && !table.predictionStale(i, other)) {
+                    log.save(other);
                 }
             }
+            int slabBefore = slabOf != null ? slabOf.ownerOfDisc(i) : 0;
+            int done = step.run(i, now, clock.epoch);
+            if (slabOf != null && crossesSlabs(done, i, other, slabBefore)) {
+                crossSlabEvents++;
+            }
             if (logging) {
+                if (done == EventStep.PAIR) {
+                    log.setVirial(step.lastVirial());
+                    log.markIfEdge(other);
+                }
                 log.markIfEdge(i);
-            } else {
-                if (events - progressMark >= (1 << 16)) {
-                    progressMark = events;
+            } else if (RunAgenda.pollDue(count + 1)) {
+                if (RunAgenda.progressDue(count + 1)) {
                     progress.simulatedTime(clock.epoch + now);
                 }
-                if ((events & 0xFFF) == 0 && stopPoll != null && stopPoll.stopRequested()) {
+                if (stopPoll != null && stopPoll.stopRequested()) {
                     stopTime = now;
                     stopDisc = -1;
                     return;
                 }
             }
         }
+    }
+
+    /**
+     * Whether the event just carried out ({@code done}, of disc i with partner code {@code other}, in
+     * slab {@code slabBefore} of {@link #slabOf} before it) would have been a cross-slab one in the
+     * split run: a disc moving into another slab, or a collision of two slabs' discs.
+     */
+    private boolean crossesSlabs(int done, int i, int other, int slabBefore) {
+        return done == EventStep.CROSSED ? slabOf.ownerOfDisc(i) != slabBefore
+                : done == EventStep.PAIR && slabOf.ownerOfDisc(i) != slabOf.ownerOfDisc(other);
     }
 
     /**
@@ -347,43 +357,5 @@ final class Domain {
 
     double predictFull(int i, double now) {
         return pred.predictFull(i, now);
-    }
-
-    private void collidePair(int a, int b, double now) {
-        double abs = clock.epoch + now;
-        if (logging) {
-            log.save(b);
-        }
-        if (slabOf != null && slabOf.ownerOfDisc(a) != slabOf.ownerOfDisc(b)) {
-            crossSlabEvents++;
-        }
-        double w = motion.collidePair(a, b, now, abs, stallGuard);
-        pairCollisions++;
-        virial.add(abs, w);
-        if (logging) {
-            log.setVirial(w);
-        }
-        if (audit != null && !logging) {
-            audit.check(motion.snapshot(now), table.flight, now, abs);
-        }
-        queue.insert(a, predictFull(a, now));
-        // Mobile in the scene (awake or asleep): b may have woken or fallen asleep.
-        if (table.mobile(b)) {
-            queue.remove(b);
-            queue.insert(b, predictFull(b, now));
-        }
-        if (logging) {
-            log.markIfEdge(b);
-        }
-    }
-
-    private void collideWall(int i, int wall, double now) {
-        double abs = clock.epoch + now;
-        motion.collideWall(i, wall, now, abs, stallGuard);
-        wallCollisions++;
-        if (audit != null && !logging) {
-            audit.check(motion.snapshot(now), table.flight, now, abs);
-        }
-        queue.insert(i, predictFull(i, now));
     }
 }
