@@ -36,8 +36,8 @@ import org.openjdk.jmh.annotations.Warmup;
  * </pre>
  * ({@code ./carom bench ARGS} is {@code java -jar lab/target/carom-lab.jar bench ARGS}, which hands
  * ARGS to JMH, with the JDK 21+ that {@code ./carom} uses and, on JDK 24+,
- * {@code --sun-misc-unsafe-memory-access=allow}.) Its akka rows on the project's 2-core VM (JDK 25,
- * load average about 9 from other work; the other engines' rows cut, see the lab's notes):
+ * {@code --sun-misc-unsafe-memory-access=allow}.) Its output looks like this (akka rows only; the
+ * machine, load and the figures worth quoting are in {@code lab/notes/jmh-thread-sweep/}):
  * <pre>
  * Benchmark                              (cellsPerActor)  (collisionsPerDisc)  (engine)     (n)  (phi)  (threads)  (tunables)   Mode  Cnt       Score         Error  Units
  * GasThroughputBenchmark.run                   perThread                  1.0      akka  100000    0.5          1              thrpt    3       1.142 ±       3.201  ops/s
@@ -49,9 +49,8 @@ import org.openjdk.jmh.annotations.Warmup;
  * measured iterations, with JMH's 99.9% confidence half-width. The {@code run} rows count whole
  * operations (engine runs) per second. With 3 iterations that half-width is 31.6 standard errors,
  * hence the huge errors above: on a shared machine compare the iterations' spread (the JSON's
- * rawData, {@code -rf json}) or run more forks. Here akka, one block of whole rows per thread, did
- * about 136k collisions per second on 1 thread and 60k on 2 (a loaded machine: see the lab's notes). {@link GasBench} runs the same scene and also prints events per collision and bytes per
- * disc.
+ * rawData, {@code -rf json}) or run more forks. {@link GasBench} runs the same scene and also prints
+ * events per collision and bytes per disc.
  */
 @BenchmarkMode(Mode.Throughput)
 @OutputTimeUnit(TimeUnit.SECONDS)

@@ -36,7 +36,7 @@ import org.openjdk.jmh.annotations.Warmup;
 /**
  * Milliseconds of each phase before a run's first event, and of the check after its last, on the
  * thesis's workload ({@link StandardScenes#thesis}) of {@code n} discs: what a user waits for around
- * the event loop (issue 21 compares start-up at N = 1e6 with a C code's 0.56 s). The phases, as a
+ * the event loop (compared with a C code's start-up in {@code lab/notes/startup-phases/}). The phases, as a
  * {@code simulate} command with {@code fast} performs them:
  * <ul>
  *   <li>{@code generate}: the scene generated and checked (a scene file's {@code generate} block);</li>

@@ -32,7 +32,8 @@ import org.openjdk.jmh.annotations.Warmup;
  * ./carom bench ThesisWorkload -p engine=serial,fast -p n=100000,1000000
  * ./carom bench ThesisWorkload -p engine=fast,akka -p n=100000 -p threads=2 -p cellsPerActor=perThread -wi 1 -i 3
  * </pre>
- * The second gave, on the project's 2-core VM (JDK 25, load average about 6 from other work):
+ * The second prints rows like these (the machine, load and the figures worth quoting are in
+ * {@code lab/notes/thesis-experiment/}):
  * <pre>
  * Benchmark                    (cellsPerActor)  (engine)     (n)  (threads)  (tunables)  Mode  Cnt  Score   Error  Units
  * ThesisWorkloadBenchmark.run        perThread      fast  100000          2                ss    3  0.372 ± 0.756   s/op
