@@ -88,7 +88,7 @@ final class ResumeCommand implements Callable<Integer> {
         Engine engine = file.about(() -> EnginesCommand.engineNamed(saved.engine()));
         file.about(() -> {
             CheckpointOptions.check(engine, checkpoint, checkpointEvery);
-            Tunables.check(engine.name(), engine.tunables(), saved.tunables());
+            Tunables.check(engine.name(), engine.spec().tunables(), saved.tunables());
             return null;
         });
         double end = checkedUntil == null ? saved.until() : checkedUntil;
@@ -115,8 +115,7 @@ final class ResumeCommand implements Callable<Integer> {
             RunResult result;
             try (ProgressBar bar = ProgressBar.forRun(err, end);
                  Writer frames = trajectory == null ? null : files.stream(trajectory)) {
-                RunOptions options = RunOutputs.withSamplesAndCheckpoints(new RunOptions(end, saved.threads(), bar,
-                        saved.tunables()), RunOutputs.sampler(scene, frames, observing), saved.every(), sink);
+                RunOptions options = RunOutputs.withSamplesAndCheckpoints(RunOptions.until(end).withThreads(saved.threads()).withProgress(bar).withTunables(saved.tunables()), RunOutputs.sampler(scene, frames, observing), saved.every(), sink);
                 result = engine.resume(scene, options, saved.engineState());
             } catch (IllegalArgumentException e) {
                 throw new BadInputException(Quoted.fileName(checkpointFile) + ": the engine's state does not fit: "

@@ -188,7 +188,7 @@ final class SimulateCommand implements Callable<Integer> {
                     // With growth, --every is also the thermostat's interval: sample for it alone.
                     sampler = (t, state, virialSum) -> { };
                 }
-                RunOptions options = RunOutputs.withSamplesAndCheckpoints(new RunOptions(scene.until(), workers, bar, tunables),
+                RunOptions options = RunOutputs.withSamplesAndCheckpoints(RunOptions.until(scene.until()).withThreads(workers).withProgress(bar).withTunables(tunables),
                         sampler, every == null ? Double.NaN : every, sink);
                 result = new SceneFile(sceneFile).about(() -> engine.run(scene, options));
             } catch (IOException e) {
@@ -227,7 +227,7 @@ final class SimulateCommand implements Callable<Integer> {
 
     /** An option key the engine does not know, or a value that does not parse, is bad input before anything runs. */
     private void checkTunables(Engine engine) {
-        Tunables.check(engine.name(), engine.tunables(), tunables);
+        Tunables.check(engine.name(), engine.spec().tunables(), tunables);
     }
 
     /** --every and what samples need: a positive finite interval, and an engine that can stop at given times. */
@@ -248,10 +248,9 @@ final class SimulateCommand implements Callable<Integer> {
         if (!(every > 0) || Double.isInfinite(every)) {
             throw new BadInputException("--every: must be a finite number > 0, got " + every);
         }
-        if (!engine.samples()) {
+        if (!engine.spec().can(carom.core.engine.Capability.SAMPLES)) {
             throw new BadInputException("--every: engine " + engine.name() + " cannot stop at given times "
-                    + "(engines that can: " + String.join(", ", EngineCatalog.all().stream().filter(Engine::samples)
-                    .map(Engine::name).toList()) + ")");
+                    + "(engines that can: " + EngineCatalog.namesThatCan(carom.core.engine.Capability.SAMPLES) + ")");
         }
     }
 

@@ -27,10 +27,9 @@ public final class CheckpointOptions {
         if (every != null && (!(every > 0) || Double.isInfinite(every))) {
             throw new BadInputException("--checkpoint-every: must be a finite number > 0, got " + every);
         }
-        if (!engine.checkpoints()) {
+        if (!engine.spec().can(carom.core.engine.Capability.CHECKPOINTS)) {
             throw new BadInputException("--checkpoint: engine " + engine.name() + " cannot save and resume a run "
-                    + "(engines that can: " + String.join(", ", EngineCatalog.all().stream().filter(Engine::checkpoints)
-                    .map(Engine::name).toList()) + ")");
+                    + "(engines that can: " + EngineCatalog.namesThatCan(carom.core.engine.Capability.CHECKPOINTS) + ")");
         }
     }
 

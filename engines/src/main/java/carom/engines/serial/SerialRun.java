@@ -1,5 +1,6 @@
 package carom.engines.serial;
 
+import carom.engines.cells.StepGridCounters;
 import carom.core.engine.Tunables;
 import carom.core.engine.Counter;
 import carom.engines.cells.StepGridTunables;
@@ -202,7 +203,7 @@ final class SerialRun {
             d.t[i] = until;
         }
         Map<String, Long> counters = new HashMap<>(Map.of(Counter.STEPS.key, steps, Counter.PREDICTIONS.key,
-                predictions, Counter.EARLY_STEP_ENDS.key, earlyStepEnds));
+                predictions, StepGridCounters.EARLY_STEP_ENDS.key, earlyStepEnds));
         if (sleepers != null) {
             sleepers.wakeAll(d);
             counters.put(Counter.SLEEPS.key, sleepers.sleeps());

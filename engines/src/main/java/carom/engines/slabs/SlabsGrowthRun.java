@@ -65,7 +65,7 @@ final class SlabsGrowthRun {
             double end = Math.min(Math.min(plan.end(table), samples.next()), until);
             double from = epoch;
             ProgressListener progress = t -> options.progress().simulatedTime(from + t);
-            RunOptions stageOptions = new RunOptions(end - epoch, options.threads(), progress, options.tunables());
+            RunOptions stageOptions = RunOptions.until(end - epoch).withThreads(options.threads()).withProgress(progress).withTunables(options.tunables());
             RunResult stage = new SlabsRun(scene.withState(state).withUntil(end - epoch), stageOptions, table).run();
             stages++;
             pairs += stage.pairCollisions();

@@ -107,10 +107,15 @@ final class SteppedRun {
         double seconds = (System.nanoTime() - started) * 1e-9;
         double energyEnd = Observables.kineticEnergy(d);
         Pressure pressure = VirialAccumulator.pressureOf(virial, scene, d, energyStart, energyEnd);
-        return new RunResult("stepped", false, d, until, pairCollisions, wallCollisions, pairCollisions + wallCollisions,
-                energyStart, energyEnd, momentumStart, Observables.momentum(d), pressure, 0, seconds,
-                Map.of(Counter.STEPS.key, steps, SteppedEngine.ESCAPES, escapes,
-                        SteppedEngine.DEEPEST_OVERLAP_PPB, SteppedEngine.overlapPpb(deepestOverlap)));
+        return RunResult.of(SteppedEngine.SPEC.name(), SteppedEngine.SPEC.exact(), d, until)
+                .collisions(pairCollisions, wallCollisions)
+                .kineticEnergy(energyStart, energyEnd)
+                .momentum(momentumStart, Observables.momentum(d))
+                .pressure(pressure)
+                .wallSeconds(seconds)
+                .counters(Map.of(Counter.STEPS.key, steps, SteppedEngine.ESCAPES.key, escapes,
+                        SteppedEngine.DEEPEST_OVERLAP_PPB.key, SteppedEngine.overlapPpb(deepestOverlap)))
+                .build();
     }
 
     /** One step of length h ending at absolute time {@code time}. */

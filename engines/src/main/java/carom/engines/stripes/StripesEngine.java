@@ -1,12 +1,15 @@
 package carom.engines.stripes;
 
+import carom.engines.cells.StepGridCounters;
 import carom.engines.cells.StepGridTunables;
-import carom.core.engine.Tunable;
+import carom.core.engine.Capability;
 import carom.core.engine.Engine;
+import carom.core.engine.EngineSpec;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
 import java.util.List;
+import java.util.stream.Stream;
 
 /**
  * The thesis's non-actor parallel model (Schrock 2016, section 3.8): per step, potentials found in
@@ -20,25 +23,17 @@ import java.util.List;
  * steps, and discs that outrun the grid are counted as overruns).
  */
 public final class StripesEngine implements Engine {
-    @Override
-    public String name() {
-        return "stripes";
-    }
+    /** What this engine is and can do. */
+    public static final EngineSpec SPEC = EngineSpec.relaxed("stripes",
+            "the thesis's fork/join model: rows in three phases (r mod 3), one task per row, left to right; "
+                    + "relaxed, counts causality violations")
+            .withCapabilities(Capability.THREADS)
+            .withTunables(List.of(StepGridTunables.CELL_FACTOR, StepGridTunables.STEP_FACTOR))
+            .withCounters(Stream.concat(StepGridCounters.RELAXED.stream(), Stream.of(StepGridCounters.ROUNDS)).toList());
 
     @Override
-    public boolean exact() {
-        return false;
-    }
-
-    @Override
-    public String description() {
-        return "the thesis's fork/join model: rows in three phases (r mod 3), one task per row, left to right; "
-                + "relaxed, counts causality violations";
-    }
-
-    @Override
-    public List<Tunable<?>> tunables() {
-        return List.of(StepGridTunables.CELL_FACTOR, StepGridTunables.STEP_FACTOR);
+    public EngineSpec spec() {
+        return SPEC;
     }
 
     @Override

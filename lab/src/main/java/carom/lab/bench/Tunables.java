@@ -26,7 +26,7 @@ final class Tunables {
             }
             result = result.withTunable(pair.substring(0, eq).trim(), pair.substring(eq + 1).trim());
         }
-        carom.core.engine.Tunables.check(engine.name(), engine.tunables(), result.tunables());
+        carom.core.engine.Tunables.check(engine.name(), engine.spec().tunables(), result.tunables());
         return result;
     }
 }

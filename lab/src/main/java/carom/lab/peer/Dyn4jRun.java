@@ -1,5 +1,6 @@
 package carom.lab.peer;
 
+import carom.core.engine.Counter;
 import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
@@ -136,10 +137,15 @@ final class Dyn4jRun {
         double seconds = (System.nanoTime() - started) * 1e-9;
         double energyEnd = Observables.kineticEnergy(d);
         Pressure pressure = VirialAccumulator.pressureOf(virial, scene, d, energyStart, energyEnd);
-        return new RunResult("dyn4j", false, d, until, pairCollisions, wallCollisions, pairCollisions + wallCollisions,
-                energyStart, energyEnd, momentumStart, Observables.momentum(d), pressure, 0, seconds,
-                Map.of("steps", steps, SteppedEngine.ESCAPES, escapes,
-                        SteppedEngine.DEEPEST_OVERLAP_PPB, SteppedEngine.overlapPpb(deepestOverlap)));
+        return RunResult.of(Dyn4jPeer.SPEC.name(), Dyn4jPeer.SPEC.exact(), d, until)
+                .collisions(pairCollisions, wallCollisions)
+                .kineticEnergy(energyStart, energyEnd)
+                .momentum(momentumStart, Observables.momentum(d))
+                .pressure(pressure)
+                .wallSeconds(seconds)
+                .counters(Map.of(Counter.STEPS.key, steps, SteppedEngine.ESCAPES.key, escapes,
+                        SteppedEngine.DEEPEST_OVERLAP_PPB.key, SteppedEngine.overlapPpb(deepestOverlap)))
+                .build();
     }
 
     private void countEscapes() {
