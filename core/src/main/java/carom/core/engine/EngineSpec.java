@@ -65,14 +65,17 @@ public record EngineSpec(String name, String description, boolean exact, Set<Cap
         return new EngineSpec(name, description, exact, capabilities, all, tunables, counters);
     }
 
-    /** This spec with these settings, in the order {@code carom engines} lists them (replacing any). */
-    public EngineSpec withTunables(List<? extends Tunable<?>> settings) {
-        return new EngineSpec(name, description, exact, capabilities, effects, List.copyOf(settings), counters);
+    /**
+     * This spec with {@code shared} settings (those of a kernel or family) and then {@code own}, in the
+     * order {@code carom engines} lists them (replacing any).
+     */
+    public EngineSpec withTunables(List<? extends Tunable<?>> shared, Tunable<?>... own) {
+        return new EngineSpec(name, description, exact, capabilities, effects, concat(shared, own), counters);
     }
 
-    /** This spec reporting these counters of its family (replacing any). */
-    public EngineSpec withCounters(List<Counter> own) {
-        return new EngineSpec(name, description, exact, capabilities, effects, tunables, own);
+    /** This spec reporting {@code family}'s counters and then {@code own} (replacing any). */
+    public EngineSpec withCounters(List<Counter> family, Counter... own) {
+        return new EngineSpec(name, description, exact, capabilities, effects, tunables, concat(family, own));
     }
 
     /** Whether the engine can do {@code capability}. */
@@ -114,6 +117,12 @@ public record EngineSpec(String name, String description, boolean exact, Set<Cap
             case TC -> "the TC model of inelastic collisions";
             case GROWTH -> "growing discs";
         };
+    }
+
+    private static <T> List<T> concat(List<? extends T> first, T[] then) {
+        List<T> all = new java.util.ArrayList<>(first);
+        all.addAll(List.of(then));
+        return all;
     }
 
     /** An unmodifiable copy of {@code members} that iterates in declaration order. */

@@ -9,7 +9,6 @@ import carom.core.scene.Scene;
 import carom.engines.actors.ActorCounters;
 import carom.engines.actors.ActorRun;
 import carom.engines.actors.BlockActor;
-import java.util.stream.Stream;
 
 /**
  * The thesis's actor model (Schrock 2016, 3.9) on Akka typed 2.6.21 (the last Apache-2.0 release):
@@ -30,8 +29,8 @@ public final class AkkaEngine implements Engine {
                     + "relaxed, counts causality violations and messages; one actor per cell (the thesis's default) "
                     + "is slow, blocks of cells are much faster: --option cellsPerActor=256")
             .withCapabilities(Capability.THREADS)
-            .withTunables(Stream.concat(ActorRun.TUNABLES.stream(), Stream.of(AkkaRun.THROUGHPUT)).toList())
-            .withCounters(Stream.concat(ActorCounters.EVERY_RUN.stream(), Stream.of(ActorCounters.THROUGHPUT)).toList());
+            .withTunables(ActorRun.TUNABLES, AkkaRun.THROUGHPUT)
+            .withCounters(ActorCounters.EVERY_RUN, ActorCounters.THROUGHPUT);
 
     @Override
     public EngineSpec spec() {

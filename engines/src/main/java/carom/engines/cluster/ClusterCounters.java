@@ -14,10 +14,6 @@ public final class ClusterCounters {
     public static final Counter MESSAGE_BYTES_PER_CROSS_EVENT = new Counter("messageBytesPerCrossEvent",
             "message bytes per cross-domain event (contact or migration), rounded");
 
-    /** What a cluster run reports beyond the protocol's. */
-    public static final java.util.List<Counter> CLUSTER = java.util.List.of(NODES, RECOVERIES, MESSAGE_BYTES,
-            MESSAGES_PER_WINDOW, MESSAGE_BYTES_PER_WINDOW, MESSAGE_BYTES_PER_CROSS_EVENT);
-
     private ClusterCounters() {
     }
 }

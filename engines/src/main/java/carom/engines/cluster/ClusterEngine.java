@@ -11,7 +11,6 @@ import carom.core.scene.Scene;
 import carom.engines.kernel.KernelTunables;
 import carom.engines.slabs.WindowCounters;
 import java.util.List;
-import java.util.stream.Stream;
 
 /**
  * An exact engine over an Akka Cluster: the {@code slabs} protocol (vertical slabs of cell columns,
@@ -50,7 +49,9 @@ public final class ClusterEngine implements Engine {
             .withCapabilities(Capability.SAMPLES, Capability.CHECKPOINTS, Capability.THREADS, Capability.NODES)
             .withTunables(List.of(ClusterRun.NODES, KernelTunables.CELL_FACTOR, DOMAIN_ROWS, ClusterRun.JOIN_SECONDS,
                 ClusterRun.LOST_SECONDS, ClusterRun.REPLY_SECONDS, ClusterRun.CHECKPOINT_WINDOWS))
-            .withCounters(Stream.concat(WindowCounters.PROTOCOL.stream(), ClusterCounters.CLUSTER.stream()).toList());
+            .withCounters(WindowCounters.PROTOCOL, ClusterCounters.NODES, ClusterCounters.RECOVERIES,
+                    ClusterCounters.MESSAGE_BYTES, ClusterCounters.MESSAGES_PER_WINDOW, ClusterCounters.MESSAGE_BYTES_PER_WINDOW,
+                    ClusterCounters.MESSAGE_BYTES_PER_CROSS_EVENT);
 
     @Override
     public EngineSpec spec() {

@@ -1,7 +1,6 @@
 package carom.engines.stepped;
 
 import carom.core.engine.Tunable;
-import carom.core.BadInputException;
 import carom.core.engine.Counter;
 import carom.core.engine.Engine;
 import carom.core.engine.EngineSpec;

@@ -9,7 +9,6 @@ import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
 import java.util.List;
-import java.util.stream.Stream;
 
 /**
  * The thesis's non-actor parallel model (Schrock 2016, section 3.8): per step, potentials found in
@@ -29,7 +28,7 @@ public final class StripesEngine implements Engine {
                     + "relaxed, counts causality violations")
             .withCapabilities(Capability.THREADS)
             .withTunables(List.of(StepGridTunables.CELL_FACTOR, StepGridTunables.STEP_FACTOR))
-            .withCounters(Stream.concat(StepGridCounters.RELAXED.stream(), Stream.of(StepGridCounters.ROUNDS)).toList());
+            .withCounters(StepGridCounters.RELAXED, StepGridCounters.ROUNDS);
 
     @Override
     public EngineSpec spec() {

@@ -6,26 +6,55 @@ import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
+import java.util.List;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.TestInstance;
 import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 
 /**
  * Dense seeded scenes (200-2025 discs, packing fraction 0.3-0.7, walls and periodic, ~50 collisions per
  * disc): energy, momentum, no overlap, inside the box, no NaN ({@link Invariants}), and the engine's
- * own bookkeeping ({@link #checkCounters}).
+ * own bookkeeping ({@link EngineVariant#denseCounters}).
  */
+@TestInstance(TestInstance.Lifecycle.PER_CLASS)
 public abstract class ExactEngineDenseScenesContract {
-    protected abstract Engine engine();
+    /** The variants this contract runs on: the catalog's ({@link EngineVariants}) unless a subclass names its own. */
+    protected Stream<EngineVariant> variants() {
+        return EngineVariants.of(Contract.DENSE_SCENES);
+    }
 
-    /** What the engine's counters must say after a dense run. */
-    protected abstract void checkCounters(RunResult result);
+    /** The variant the running case is on (cases run one at a time, each first naming its variant). */
+    private EngineVariant current;
 
-    @ParameterizedTest(name = "N {0}, phi {1}, periodic {2}, seed {3}")
-    @MethodSource("carom.engines.reference.RandomScenes#denseCases")
-    void conservesEnergyAndMomentumAndNeverOverlaps(int n, double phi, boolean periodic, long seed, double until) {
+    /** Makes {@code variant} the one {@link #engine()} and the hooks below read. */
+    protected void use(EngineVariant variant) {
+        current = variant;
+    }
+
+    /** The variant under test. */
+    protected EngineVariant variant() {
+        return current;
+    }
+
+    /** The engine under test. */
+    protected Engine engine() {
+        return current.engine();
+    }
+
+
+    @ParameterizedTest(name = "{0}, N {1}, phi {2}, periodic {3}, seed {4}")
+    @MethodSource("denseCases")
+    void conservesEnergyAndMomentumAndNeverOverlaps(EngineVariant variant, int n, double phi, boolean periodic, long seed, double until) {
+        use(variant);
         Scene scene = RandomScenes.dense(n, phi, periodic, seed, until);
         RunResult r = Invariants.check(scene, engine().run(scene, RunOptions.until(until)));
         assertThat(2.0 * r.pairCollisions() / n).as("pair collisions per disc").isGreaterThan(35);
-        checkCounters(r);
+        variant().denseCounters().accept(r);
+    }
+
+    Stream<Arguments> denseCases() {
+        return EngineVariants.crossed(variants(), RandomScenes.denseCases().toList());
     }
 }

@@ -9,11 +9,14 @@ import carom.core.engine.RunResult;
 import carom.core.engine.SimulationStuckException;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
+import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.LongStream;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.TestInstance;
 import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 
 /**
@@ -27,19 +30,42 @@ import org.junit.jupiter.params.provider.MethodSource;
  * ({@link carom.core.physics.RestRule}). Should either stop with {@link SimulationStuckException}
  * (endlessly many collisions at one instant), both must, naming the same disc.
  */
+@TestInstance(TestInstance.Lifecycle.PER_CLASS)
 public abstract class ExactEngineEffectsAgainstReferenceContract {
     private static final double SAME = 1e-8;
     private static final Pattern DISC = Pattern.compile("disc (\\d+)");
 
-    protected abstract Engine engine();
+    /** The variants this contract runs on: the catalog's ({@link EngineVariants}) unless a subclass names its own. */
+    protected Stream<EngineVariant> variants() {
+        return EngineVariants.of(Contract.EFFECTS_AGAINST_REFERENCE);
+    }
+
+    /** The variant the running case is on (cases run one at a time, each first naming its variant). */
+    private EngineVariant current;
+
+    /** Makes {@code variant} the one {@link #engine()} and the hooks below read. */
+    protected void use(EngineVariant variant) {
+        current = variant;
+    }
+
+    /** The variant under test. */
+    protected EngineVariant variant() {
+        return current;
+    }
+
+    /** The engine under test. */
+    protected Engine engine() {
+        return current.engine();
+    }
 
     static Stream<Long> seeds() {
         return LongStream.range(1, Long.getLong("effectsSeeds", 121)).boxed();
     }
 
-    @ParameterizedTest(name = "seed {0}")
-    @MethodSource("seeds")
-    void finalStateAndCollisionCountsMatchBruteForce(long seed) {
+    @ParameterizedTest(name = "{0}, seed {1}")
+    @MethodSource("seedCases")
+    void finalStateAndCollisionCountsMatchBruteForce(EngineVariant variant, long seed) {
+        use(variant);
         Scene scene = RandomScenes.effects(seed);
         RunResult actual;
         BruteForceReference.Result reference;
@@ -82,5 +108,9 @@ public abstract class ExactEngineEffectsAgainstReferenceContract {
     private int firstDisc(String message) {
         Matcher m = DISC.matcher(message);
         return m.find() ? Integer.parseInt(m.group(1)) : -1;
+    }
+
+    Stream<Arguments> seedCases() {
+        return EngineVariants.crossed(variants(), seeds().toList());
     }
 }
