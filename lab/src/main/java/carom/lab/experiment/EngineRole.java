@@ -35,9 +35,12 @@ enum EngineRole {
         this.parallel = parallel;
     }
 
-    /** The role of engine {@code name}, empty for an engine the thesis has no counterpart of. */
+    /** The role of engine {@code name}, empty for an engine the thesis has no counterpart of (or none of that name). */
     static Optional<EngineRole> of(String engine) {
-        EngineSpec spec = EngineCatalog.byName(engine).spec();
+        return EngineCatalog.all().stream().filter(e -> e.name().equals(engine)).findFirst().flatMap(e -> of(e.spec()));
+    }
+
+    private static Optional<EngineRole> of(EngineSpec spec) {
         boolean threads = spec.can(Capability.THREADS);
         if (spec.exact()) {
             return threads ? Optional.empty() : Optional.of(SINGLE_THREAD);

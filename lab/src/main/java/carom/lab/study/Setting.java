@@ -40,14 +40,14 @@ record Setting(String engine, int threads, double dtFactor) {
     }
 
     /**
-     * The settings for these engines: a stepping engine once per dt factor, an engine on one thread
-     * once, any other engine (one that runs on {@code --threads}) once per thread count.
+     * The settings for these engines: a stepping engine once per dt factor, any other engine on one
+     * thread once, the rest (those that run on {@code --threads}) once per thread count.
      */
     static List<Setting> expand(List<String> engines, List<Integer> threads, List<Double> dtFactors) {
         List<Setting> settings = new ArrayList<>();
         for (String name : engines) {
             Engine engine = engineNamed(name);
-            if (Tunables.declares(engine.spec().tunables(), SteppedEngine.DT.name())) {
+            if (steps(engine)) {
                 dtFactors.forEach(f -> settings.add(new Setting(name, 1, f)));
             } else if (onOneThread(engine)) {
                 settings.add(new Setting(name, 1, Double.NaN));
@@ -58,8 +58,13 @@ record Setting(String engine, int threads, double dtFactor) {
         return settings;
     }
 
-    /** Whether {@code engine} runs on one thread whatever {@code --threads} asks. */
+    /** Whether {@code engine} advances in time steps ({@code dt}): then its settings are its steps. */
+    private static boolean steps(Engine engine) {
+        return Tunables.declares(engine.spec().tunables(), SteppedEngine.DT.name());
+    }
+
+    /** Whether {@code engine} has no time step and runs on one thread whatever {@code --threads} asks: then it runs once. */
     private static boolean onOneThread(Engine engine) {
-        return !engine.spec().can(Capability.THREADS);
+        return !steps(engine) && !engine.spec().can(Capability.THREADS);
     }
 }
