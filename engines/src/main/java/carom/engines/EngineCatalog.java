@@ -3,7 +3,6 @@ package carom.engines;
 import carom.core.BadInputException;
 import carom.core.engine.Capability;
 import carom.core.engine.Engine;
-import carom.core.engine.EngineDirectory;
 import carom.core.engine.EngineSpec;
 import carom.engines.akka.AkkaEngine;
 import carom.engines.cluster.ClusterEngine;
@@ -72,7 +71,7 @@ public final class EngineCatalog {
     }
 
     /** The catalog's specs for core's messages that name engines, enrolled in {@code META-INF/services}. */
-    public static final class Directory implements EngineDirectory {
+    public static final class Directory implements EngineSpec.Directory {
         @Override
         public List<EngineSpec> specs() {
             return ENGINES.stream().map(Engine::spec).toList();

@@ -132,9 +132,19 @@ public record EngineSpec(String name, String description, boolean exact, Set<Cap
         return Collections.unmodifiableSet(copy);
     }
 
+    /**
+     * The specs of every engine carom ships, for the messages that name engines (which simulate an
+     * effect). The engines module enrols its catalog as the one provider of this service
+     * ({@code META-INF/services}), since core cannot depend on the module above it.
+     */
+    public interface Directory {
+        /** Every shipped engine's spec, in the catalog's order. */
+        List<EngineSpec> specs();
+    }
+
     /** The specs of the shipped engines, from the engines module's catalog (empty without it on the class path). */
     private static List<EngineSpec> shipped() {
-        return ServiceLoader.load(EngineDirectory.class, EngineDirectory.class.getClassLoader()).findFirst()
-                .map(EngineDirectory::specs).orElse(List.of());
+        return ServiceLoader.load(Directory.class, Directory.class.getClassLoader()).findFirst()
+                .map(Directory::specs).orElse(List.of());
     }
 }

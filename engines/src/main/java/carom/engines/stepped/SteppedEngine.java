@@ -10,6 +10,7 @@ import carom.core.scene.Effects;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
 import java.util.List;
+import java.util.Map;
 
 /**
  * What game engines do: advance every disc by a fixed {@code dt}, then find the pairs that overlap and
@@ -92,6 +93,11 @@ public final class SteppedEngine implements Engine {
     public static double deepestOverlap(RunResult result) {
         Long ppb = result.counters() == null ? null : result.counters().get(DEEPEST_OVERLAP_PPB.key);
         return ppb == null ? Double.NaN : ppb * 1e-9;
+    }
+
+    /** The counters of a fixed-step run: its steps, escapes and deepest overlap (a fraction of the contact distance). */
+    public static Map<String, Long> counters(long steps, long escapes, double deepestOverlap) {
+        return Map.of(Counter.STEPS.key, steps, ESCAPES.key, escapes, DEEPEST_OVERLAP_PPB.key, overlapPpb(deepestOverlap));
     }
 
     /** The counter value for a deepest overlap given as a fraction of the contact distance (rounded up). */

@@ -1,6 +1,5 @@
 package carom.engines.stepped;
 
-import carom.core.engine.Counter;
 import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
@@ -16,7 +15,6 @@ import carom.core.physics.Physics;
 import carom.core.physics.Restitution;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
-import java.util.Map;
 
 /**
  * One run of the stepped engine. Per step of length h (every step is dt but the last, which ends at
@@ -113,8 +111,7 @@ final class SteppedRun {
                 .momentum(momentumStart, Observables.momentum(d))
                 .pressure(pressure)
                 .wallSeconds(seconds)
-                .counters(Map.of(Counter.STEPS.key, steps, SteppedEngine.ESCAPES.key, escapes,
-                        SteppedEngine.DEEPEST_OVERLAP_PPB.key, SteppedEngine.overlapPpb(deepestOverlap)))
+                .counters(SteppedEngine.counters(steps, escapes, deepestOverlap))
                 .build();
     }
 

@@ -2,14 +2,12 @@ package carom.engines.reference;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
 import java.util.List;
 import java.util.stream.LongStream;
 import java.util.stream.Stream;
-import org.junit.jupiter.api.TestInstance;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
@@ -20,8 +18,7 @@ import org.junit.jupiter.params.provider.MethodSource;
  * {@code cellFactor} tunable (cells and step or crossing structure change; the physics must not).
  * Every run also passes {@link Invariants}.
  */
-@TestInstance(TestInstance.Lifecycle.PER_CLASS)
-public abstract class ExactEngineAgainstReferenceContract {
+public abstract class ExactEngineAgainstReferenceContract extends VariantContract {
     /**
      * RandomScenes.small runs to t ~ 2.5 with ~7 collisions per disc: hard discs amplify rounding by
      * ~10-20x per collision, so step boundaries alone (cellFactor) spread final states by up to ~4e-9
@@ -31,27 +28,8 @@ public abstract class ExactEngineAgainstReferenceContract {
     /** Light discs among heavy ones collide rarely enough that rounding is not amplified. */
     public static final double SAME = 1e-9;
 
-    /** The variants this contract runs on: the catalog's ({@link EngineVariants}) unless a subclass names its own. */
-    protected Stream<EngineVariant> variants() {
-        return EngineVariants.of(Contract.AGAINST_REFERENCE);
-    }
-
-    /** The variant the running case is on (cases run one at a time, each first naming its variant). */
-    private EngineVariant current;
-
-    /** Makes {@code variant} the one {@link #engine()} and the hooks below read. */
-    protected void use(EngineVariant variant) {
-        current = variant;
-    }
-
-    /** The variant under test. */
-    protected EngineVariant variant() {
-        return current;
-    }
-
-    /** The engine under test. */
-    protected Engine engine() {
-        return current.engine();
+    protected ExactEngineAgainstReferenceContract() {
+        super(Contract.AGAINST_REFERENCE);
     }
 
 

@@ -3,7 +3,6 @@ package carom.engines.reference;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
-import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.BoundaryKind;
@@ -13,7 +12,6 @@ import carom.core.scene.Species;
 import carom.core.state.Discs;
 import java.util.List;
 import java.util.stream.Stream;
-import org.junit.jupiter.api.TestInstance;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
@@ -24,31 +22,11 @@ import org.junit.jupiter.params.provider.MethodSource;
  * next to it; the engine must hit them to 1e-12, and every run also passes {@link Invariants}. Each
  * exact engine's test extends this with {@link #engine()}.
  */
-@TestInstance(TestInstance.Lifecycle.PER_CLASS)
-public abstract class ExactEngineAnalyticContract {
+public abstract class ExactEngineAnalyticContract extends VariantContract {
     private static final double EXACT = 1e-12;
 
-    /** The variants this contract runs on: the catalog's ({@link EngineVariants}) unless a subclass names its own. */
-    protected Stream<EngineVariant> variants() {
-        return EngineVariants.of(Contract.ANALYTIC);
-    }
-
-    /** The variant the running case is on (cases run one at a time, each first naming its variant). */
-    private EngineVariant current;
-
-    /** Makes {@code variant} the one {@link #engine()} and the hooks below read. */
-    protected void use(EngineVariant variant) {
-        current = variant;
-    }
-
-    /** The variant under test. */
-    protected EngineVariant variant() {
-        return current;
-    }
-
-    /** The engine under test. */
-    protected Engine engine() {
-        return current.engine();
+    protected ExactEngineAnalyticContract() {
+        super(Contract.ANALYTIC);
     }
 
     protected RunResult run(Scene scene) {

@@ -2,13 +2,11 @@ package carom.engines.reference;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
 import java.util.List;
 import java.util.stream.Stream;
-import org.junit.jupiter.api.TestInstance;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
@@ -18,29 +16,9 @@ import org.junit.jupiter.params.provider.MethodSource;
  * disc): energy, momentum, no overlap, inside the box, no NaN ({@link Invariants}), and the engine's
  * own bookkeeping ({@link EngineVariant#denseCounters}).
  */
-@TestInstance(TestInstance.Lifecycle.PER_CLASS)
-public abstract class ExactEngineDenseScenesContract {
-    /** The variants this contract runs on: the catalog's ({@link EngineVariants}) unless a subclass names its own. */
-    protected Stream<EngineVariant> variants() {
-        return EngineVariants.of(Contract.DENSE_SCENES);
-    }
-
-    /** The variant the running case is on (cases run one at a time, each first naming its variant). */
-    private EngineVariant current;
-
-    /** Makes {@code variant} the one {@link #engine()} and the hooks below read. */
-    protected void use(EngineVariant variant) {
-        current = variant;
-    }
-
-    /** The variant under test. */
-    protected EngineVariant variant() {
-        return current;
-    }
-
-    /** The engine under test. */
-    protected Engine engine() {
-        return current.engine();
+public abstract class ExactEngineDenseScenesContract extends VariantContract {
+    protected ExactEngineDenseScenesContract() {
+        super(Contract.DENSE_SCENES);
     }
 
 

@@ -3,7 +3,6 @@ package carom.engines.reference;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
-import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.engine.SimulationStuckException;
@@ -14,7 +13,6 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.LongStream;
 import java.util.stream.Stream;
-import org.junit.jupiter.api.TestInstance;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
@@ -30,32 +28,12 @@ import org.junit.jupiter.params.provider.MethodSource;
  * ({@link carom.core.physics.RestRule}). Should either stop with {@link SimulationStuckException}
  * (endlessly many collisions at one instant), both must, naming the same disc.
  */
-@TestInstance(TestInstance.Lifecycle.PER_CLASS)
-public abstract class ExactEngineEffectsAgainstReferenceContract {
+public abstract class ExactEngineEffectsAgainstReferenceContract extends VariantContract {
     private static final double SAME = 1e-8;
     private static final Pattern DISC = Pattern.compile("disc (\\d+)");
 
-    /** The variants this contract runs on: the catalog's ({@link EngineVariants}) unless a subclass names its own. */
-    protected Stream<EngineVariant> variants() {
-        return EngineVariants.of(Contract.EFFECTS_AGAINST_REFERENCE);
-    }
-
-    /** The variant the running case is on (cases run one at a time, each first naming its variant). */
-    private EngineVariant current;
-
-    /** Makes {@code variant} the one {@link #engine()} and the hooks below read. */
-    protected void use(EngineVariant variant) {
-        current = variant;
-    }
-
-    /** The variant under test. */
-    protected EngineVariant variant() {
-        return current;
-    }
-
-    /** The engine under test. */
-    protected Engine engine() {
-        return current.engine();
+    protected ExactEngineEffectsAgainstReferenceContract() {
+        super(Contract.EFFECTS_AGAINST_REFERENCE);
     }
 
     static Stream<Long> seeds() {

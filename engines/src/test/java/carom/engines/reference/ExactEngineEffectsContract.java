@@ -5,7 +5,6 @@ import static org.assertj.core.api.Assertions.assertThatCode;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.within;
 
-import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.engine.SimulationStuckException;
@@ -23,7 +22,6 @@ import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
-import org.junit.jupiter.api.TestInstance;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
@@ -36,31 +34,11 @@ import org.junit.jupiter.params.provider.MethodSource;
  * under the energy audit, random gravity scenes (the audit never fires; elastic ones conserve kinetic
  * plus potential energy), a cooling gas, and a ball that comes to rest without sinking into the floor.
  */
-@TestInstance(TestInstance.Lifecycle.PER_CLASS)
-public abstract class ExactEngineEffectsContract {
+public abstract class ExactEngineEffectsContract extends VariantContract {
     private static final double G = 9.81;
 
-    /** The variants this contract runs on: the catalog's ({@link EngineVariants}) unless a subclass names its own. */
-    protected Stream<EngineVariant> variants() {
-        return EngineVariants.of(Contract.EFFECTS);
-    }
-
-    /** The variant the running case is on (cases run one at a time, each first naming its variant). */
-    private EngineVariant current;
-
-    /** Makes {@code variant} the one {@link #engine()} and the hooks below read. */
-    protected void use(EngineVariant variant) {
-        current = variant;
-    }
-
-    /** The variant under test. */
-    protected EngineVariant variant() {
-        return current;
-    }
-
-    /** The engine under test. */
-    protected Engine engine() {
-        return current.engine();
+    protected ExactEngineEffectsContract() {
+        super(Contract.EFFECTS);
     }
 
     private RunResult run(Scene scene, double until) {

@@ -5,7 +5,6 @@ import static org.assertj.core.api.Assertions.within;
 
 import carom.core.engine.Counter;
 import carom.core.engine.Energy;
-import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.observe.Observables;
@@ -18,7 +17,6 @@ import carom.core.scene.Species;
 import carom.core.state.Discs;
 import java.util.List;
 import java.util.stream.Stream;
-import org.junit.jupiter.api.TestInstance;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
@@ -29,31 +27,11 @@ import org.junit.jupiter.params.provider.MethodSource;
  * run goes on to {@code until}; a disc that is awake hitting it wakes it; the kinetic energy taken out
  * by falling asleep is reported (the energy put to rest), so that the energy balances.
  */
-@TestInstance(TestInstance.Lifecycle.PER_CLASS)
-public abstract class ExactEngineRestingContactContract {
+public abstract class ExactEngineRestingContactContract extends VariantContract {
     private static final double G = 9.81;
 
-    /** The variants this contract runs on: the catalog's ({@link EngineVariants}) unless a subclass names its own. */
-    protected Stream<EngineVariant> variants() {
-        return EngineVariants.of(Contract.RESTING_CONTACT);
-    }
-
-    /** The variant the running case is on (cases run one at a time, each first naming its variant). */
-    private EngineVariant current;
-
-    /** Makes {@code variant} the one {@link #engine()} and the hooks below read. */
-    protected void use(EngineVariant variant) {
-        current = variant;
-    }
-
-    /** The variant under test. */
-    protected EngineVariant variant() {
-        return current;
-    }
-
-    /** The engine under test. */
-    protected Engine engine() {
-        return current.engine();
+    protected ExactEngineRestingContactContract() {
+        super(Contract.RESTING_CONTACT);
     }
 
     private RunResult run(Scene scene, double until) {

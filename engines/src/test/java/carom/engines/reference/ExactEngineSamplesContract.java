@@ -3,7 +3,6 @@ package carom.engines.reference;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
-import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
@@ -12,7 +11,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.stream.LongStream;
 import java.util.stream.Stream;
-import org.junit.jupiter.api.TestInstance;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
@@ -24,32 +22,12 @@ import org.junit.jupiter.params.provider.MethodSource;
  * the same collision counts and the same final state, bit for bit unless the engine says otherwise
  * ({@link EngineVariant#samplingTolerance}).
  */
-@TestInstance(TestInstance.Lifecycle.PER_CLASS)
-public abstract class ExactEngineSamplesContract {
+public abstract class ExactEngineSamplesContract extends VariantContract {
     /** Short runs (see ExactEngineAgainstReferenceContract.SAME_AFTER_CHAOS for why short). */
     private static final double SAME = 1e-9;
 
-    /** The variants this contract runs on: the catalog's ({@link EngineVariants}) unless a subclass names its own. */
-    protected Stream<EngineVariant> variants() {
-        return EngineVariants.of(Contract.SAMPLES);
-    }
-
-    /** The variant the running case is on (cases run one at a time, each first naming its variant). */
-    private EngineVariant current;
-
-    /** Makes {@code variant} the one {@link #engine()} and the hooks below read. */
-    protected void use(EngineVariant variant) {
-        current = variant;
-    }
-
-    /** The variant under test. */
-    protected EngineVariant variant() {
-        return current;
-    }
-
-    /** The engine under test. */
-    protected Engine engine() {
-        return current.engine();
+    protected ExactEngineSamplesContract() {
+        super(Contract.SAMPLES);
     }
 
     /** One sample as the sampler saw it (the engine reuses its buffer, so a copy). */

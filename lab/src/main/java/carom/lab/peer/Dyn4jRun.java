@@ -1,6 +1,5 @@
 package carom.lab.peer;
 
-import carom.core.engine.Counter;
 import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
@@ -13,7 +12,6 @@ import carom.core.physics.Restitution;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
 import carom.engines.stepped.SteppedEngine;
-import java.util.Map;
 import org.dyn4j.dynamics.Body;
 import org.dyn4j.dynamics.BodyFixture;
 import org.dyn4j.dynamics.Settings;
@@ -143,8 +141,7 @@ final class Dyn4jRun {
                 .momentum(momentumStart, Observables.momentum(d))
                 .pressure(pressure)
                 .wallSeconds(seconds)
-                .counters(Map.of(Counter.STEPS.key, steps, SteppedEngine.ESCAPES.key, escapes,
-                        SteppedEngine.DEEPEST_OVERLAP_PPB.key, SteppedEngine.overlapPpb(deepestOverlap)))
+                .counters(SteppedEngine.counters(steps, escapes, deepestOverlap))
                 .build();
     }
 
