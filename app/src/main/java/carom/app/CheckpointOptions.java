@@ -1,6 +1,7 @@
 package carom.app;
 
 import carom.core.BadInputException;
+import carom.core.engine.Capability;
 import carom.core.engine.Engine;
 import carom.engines.EngineCatalog;
 import java.nio.file.Path;
@@ -34,10 +35,9 @@ final class CheckpointOptions {
         if (every != null) {
             OptionChecks.positiveFinite("--checkpoint-every", every);
         }
-        if (!engine.checkpoints()) {
+        if (!engine.spec().can(Capability.CHECKPOINTS)) {
             throw new BadInputException("--checkpoint: engine " + engine.name() + " cannot save and resume a run "
-                    + "(engines that can: " + String.join(", ", EngineCatalog.all().stream().filter(Engine::checkpoints)
-                    .map(Engine::name).toList()) + ")");
+                    + "(engines that can: " + EngineCatalog.namesThatCan(Capability.CHECKPOINTS) + ")");
         }
     }
 

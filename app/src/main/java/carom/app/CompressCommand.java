@@ -94,7 +94,7 @@ final class CompressCommand implements Callable<Integer> {
             GrowthRun run;
             RunResult result;
             try (ProgressBar bar = ProgressBar.forRun(err, scene.until())) {
-                RunOptions options = new RunOptions(scene.until(), 1, bar, Map.of());
+                RunOptions options = RunOptions.until(scene.until()).withThreads(1).withProgress(bar).withTunables(Map.of());
                 if (every != null) {
                     // The samples are the thermostat's times; nothing else is taken from them.
                     options = options.withSamples(every, (t, state, virialSum) -> { });

@@ -2,6 +2,7 @@ package carom.app;
 
 import carom.core.Quoted;
 import carom.core.engine.Engine;
+import carom.core.engine.EngineSpec;
 import carom.core.engine.Tunable;
 import carom.engines.EngineCatalog;
 import java.io.PrintWriter;
@@ -45,12 +46,13 @@ public final class EnginesCommand implements Callable<Integer> {
     public Integer call() {
         PrintWriter out = spec.commandLine().getOut();
         for (Engine e : EngineCatalog.all()) {
+            EngineSpec s = e.spec();
             // Single spaces, so that scripts can split each line into three fields.
-            String settings = e.tunables().isEmpty() ? "" : " (settings: " + String.join(", ",
-                    e.tunables().stream().map(t -> t.name() + "=" + (t.computedDefault() ? "auto" : t.defaultText())).toList()) + ")";
-            out.println(e.name() + " " + (e.exact() ? "exact" : "relaxed") + " " + e.description() + settings);
+            String settings = s.tunables().isEmpty() ? "" : " (settings: " + String.join(", ",
+                    s.tunables().stream().map(t -> t.name() + "=" + (t.computedDefault() ? "auto" : t.defaultText())).toList()) + ")";
+            out.println(s.name() + " " + s.exactness() + " " + s.description() + settings);
             if (tunables) {
-                for (Tunable<?> t : e.tunables()) {
+                for (Tunable<?> t : s.tunables()) {
                     out.println("    " + t.describe());
                 }
             }

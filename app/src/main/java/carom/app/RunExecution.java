@@ -105,7 +105,7 @@ final class RunExecution {
     private static RunOptions options(RunRequest request, ProgressBar bar, Writer frames) {
         RunRequest.Settings settings = request.settings();
         RunRequest.Sampling sampling = request.sampling();
-        RunOptions options = new RunOptions(request.scene().until(), settings.threads(), bar, settings.tunables());
+        RunOptions options = RunOptions.until(request.scene().until()).withThreads(settings.threads()).withProgress(bar).withTunables(settings.tunables());
         Observing observing = sampling.observing();
         Sampler sampler = Observing.both(frames == null ? null : new TrajectoryXyz(request.scene(), frames), observing);
         if (sampler == null && sampling.sampled() && request.scene().effects().grows()) {

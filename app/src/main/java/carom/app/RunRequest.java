@@ -6,6 +6,7 @@ import carom.app.report.Observing;
 import carom.app.report.Provenance;
 import carom.core.BadInputException;
 import carom.core.Quoted;
+import carom.core.engine.Capability;
 import carom.core.engine.Engine;
 import carom.core.engine.Tunables;
 import carom.core.engine.WorkEstimate;
@@ -127,7 +128,7 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
         int threads = named != null ? named : EnginesCommand.defaultThreads(engine);
         ClusterOptions.checkThreads(engine, threads);
         ClusterOptions.putNodes(engine, command.nodes, command.tunables);
-        Tunables.check(engine.name(), engine.tunables(), command.tunables);
+        Tunables.check(engine.name(), engine.spec().tunables(), command.tunables);
         checkSampling(engine, command);
         command.checkpoints.check(engine);
         Outputs outputs = new Outputs(command.finals, command.trajectory, command.report, command.jfr,
@@ -155,6 +156,9 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
         double every = command.every == null ? Double.NaN : command.every;
         Sampling sampling = new Sampling(every, command.observe,
                 command.observe == null ? null : Observing.of(scene, command.observe, every));
+        if (sampling.observing() != null) {
+            sampling.observing().checkCollisionsToldBy(engine.name(), engine.spec().can(Capability.COLLISION_OBSERVERS));
+        }
         RunCheckpoints checkpoints = outputs.checkpoint() == null ? null : new RunCheckpoints(outputs.checkpoint(),
                 new CheckpointFile(command.sceneFile, file.about(() -> sceneText(file.path())), engine.name(), threads,
                         command.tunables, scene.until(), 0, every, command.observe,
@@ -175,7 +179,7 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
         Engine engine = file.about(() -> EnginesCommand.engineNamed(saved.engine()));
         file.about(() -> {
             command.checkpoints.check(engine);
-            Tunables.check(engine.name(), engine.tunables(), saved.tunables());
+            Tunables.check(engine.name(), engine.spec().tunables(), saved.tunables());
             return null;
         });
         double end = until == null ? saved.until() : until;
@@ -217,10 +221,9 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
             return;
         }
         OptionChecks.positiveFinite("--every", command.every);
-        if (!engine.samples()) {
+        if (!engine.spec().can(Capability.SAMPLES)) {
             throw new BadInputException("--every: engine " + engine.name() + " cannot stop at given times "
-                    + "(engines that can: " + String.join(", ", EngineCatalog.all().stream().filter(Engine::samples)
-                    .map(Engine::name).toList()) + ")");
+                    + "(engines that can: " + EngineCatalog.namesThatCan(Capability.SAMPLES) + ")");
         }
     }
 

@@ -23,9 +23,16 @@ class SummaryTest {
     private static final Energy KINETIC_ONLY = new Energy(3.0, 2.7);
 
     private static RunResult result(Pressure pressure) {
-        return new RunResult("fast", false, new Discs(3), 2.0, 40, 10, 55, 3.0, 2.7,
-                new double[] {0.5, -0.25}, new double[] {0.5, -0.25}, pressure, 4, 0.5,
-                Map.of("steps", 20L, "messages", 7L));
+        return RunResult.of("fast", false, new Discs(3), 2.0)
+                .collisions(40, 10)
+                .events(55)
+                .kineticEnergy(3.0, 2.7)
+                .momentum(new double[] {0.5, -0.25}, new double[] {0.5, -0.25})
+                .pressure(pressure)
+                .causalityViolations(4)
+                .wallSeconds(0.5)
+                .counters(Map.of("steps", 20L, "messages", 7L))
+                .build();
     }
 
     @Test

@@ -1,7 +1,9 @@
 package carom.engines;
 
 import carom.core.BadInputException;
+import carom.core.engine.Capability;
 import carom.core.engine.Engine;
+import carom.core.engine.EngineSpec;
 import carom.engines.akka.AkkaEngine;
 import carom.engines.cluster.ClusterEngine;
 import carom.engines.fast.FastEngine;
@@ -11,11 +13,22 @@ import carom.engines.stepped.SteppedEngine;
 import carom.engines.stripes.StripesEngine;
 import carom.engines.vthreads.VThreadsEngine;
 import java.util.List;
+import java.util.function.Predicate;
 
-/** Every engine carom ships, in the order {@code carom engines} lists them. */
+/**
+ * Every engine carom ships, in the order {@code carom engines} lists them: enrolling an engine is one
+ * line here. What each is and can do is its {@link Engine#spec()}; commands and tests choose engines by
+ * spec ({@link #where}), never by name.
+ */
 public final class EngineCatalog {
-    private static final List<Engine> ENGINES = List.of(new SerialEngine(), new FastEngine(), new StripesEngine(),
-            new AkkaEngine(), new VThreadsEngine(), new SteppedEngine(), new SlabsEngine(),
+    private static final List<Engine> ENGINES = List.of(
+            new SerialEngine(),
+            new FastEngine(),
+            new StripesEngine(),
+            new AkkaEngine(),
+            new VThreadsEngine(),
+            new SteppedEngine(),
+            new SlabsEngine(),
             new ClusterEngine());
 
     private EngineCatalog() {
@@ -25,8 +38,18 @@ public final class EngineCatalog {
         return ENGINES;
     }
 
+    /** The engines whose spec passes {@code test}, in the catalog's order. */
+    public static List<Engine> where(Predicate<EngineSpec> test) {
+        return ENGINES.stream().filter(e -> test.test(e.spec())).toList();
+    }
+
+    /** The names of the engines that can do {@code capability}, comma-separated, for messages. */
+    public static String namesThatCan(Capability capability) {
+        return String.join(", ", where(s -> s.can(capability)).stream().map(Engine::name).toList());
+    }
+
     /**
-     * The engine used when none is named: SPEC asks for the exact serial reference. {@code fast} is
+     * The engine used when none is named: the exact serial reference is asked for. {@code fast} is
      * exact and single-threaded, passes every test {@code serial} passes (the shared exact-engine
      * contracts: analytic cases, brute-force judge with and without effects, dense scenes) and gives
      * its final state to rounding, several times faster ({@code lab/notes/single-thread-throughput/});
@@ -45,5 +68,13 @@ public final class EngineCatalog {
         }
         throw new BadInputException("unknown engine " + carom.core.Quoted.of(name) + " (known: "
                 + String.join(", ", ENGINES.stream().map(Engine::name).toList()) + ")");
+    }
+
+    /** The catalog's specs for core's messages that name engines, enrolled in {@code META-INF/services}. */
+    public static final class Directory implements EngineSpec.Directory {
+        @Override
+        public List<EngineSpec> specs() {
+            return ENGINES.stream().map(Engine::spec).toList();
+        }
     }
 }

@@ -140,9 +140,9 @@ public final class AnimateCommand implements Callable<Integer> {
 
     private long fromScene(ColourMode mode, int delay, String comment) {
         Engine engine = new SceneFile(sceneFile).about(() -> EnginesCommand.engineNamed(engineName));
-        if (!engine.samples()) {
+        if (!engine.spec().can(carom.core.engine.Capability.SAMPLES)) {
             throw new BadInputException("--engine: " + engine.name() + " cannot stop at given times (engines that can: "
-                    + String.join(", ", EngineCatalog.all().stream().filter(Engine::samples).map(Engine::name).toList()) + ")");
+                    + EngineCatalog.namesThatCan(carom.core.engine.Capability.SAMPLES) + ")");
         }
         Scene fromFile = new SceneFile(sceneFile).about(() -> SceneReader.read(new SceneFile(sceneFile).path()));
         Scene scene = until == null ? fromFile : fromFile.withUntil(until);

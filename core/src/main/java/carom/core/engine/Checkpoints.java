@@ -2,7 +2,7 @@ package carom.core.engine;
 
 /**
  * Where a run's checkpoints go ({@code simulate --checkpoint}), as an engine that
- * {@link Engine#checkpoints() checkpoints} sees it: the interval of simulated time between them, a
+ * {@link Capability#CHECKPOINTS checkpoints} sees it: the interval of simulated time between them, a
  * stop request (a signal), and the sink for its saved state.
  *
  * <p>The engine calls {@link #save} at consistent points of its own choosing: at the first point at or

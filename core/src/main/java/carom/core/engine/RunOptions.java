@@ -9,6 +9,8 @@ import java.util.Map;
  * time ({@code every} is NaN and {@code sampler} null without one), and optionally where to save
  * {@link Checkpoints} (null without), and optionally a {@link carom.core.observe.CollisionObserver} told
  * every collision (null without: exact engines then pay one null test a collision).
+ *
+ * <p>Built from {@link #until} with the {@code with...} methods, each returning new options.
  */
 public record RunOptions(double until, int threads, ProgressListener progress, Map<String, String> tunables,
                          double every, Sampler sampler, Checkpoints checkpoints,
@@ -23,15 +25,12 @@ public record RunOptions(double until, int threads, ProgressListener progress, M
         }
     }
 
-    /** Options without checkpoints. */
-    public RunOptions(double until, int threads, ProgressListener progress, Map<String, String> tunables,
-                      double every, Sampler sampler) {
-        this(until, threads, progress, tunables, every, sampler, null, null);
-    }
-
-    /** Options without samples. */
-    public RunOptions(double until, int threads, ProgressListener progress, Map<String, String> tunables) {
-        this(until, threads, progress, tunables, Double.NaN, null);
+    /**
+     * Options for a run to {@code until} on one thread, without progress, settings, samples, checkpoints
+     * or observer: add them with the {@code with...} methods.
+     */
+    public static RunOptions until(double until) {
+        return new RunOptions(until, 1, ProgressListener.NONE, Map.of(), Double.NaN, null, null, null);
     }
 
     /** These options with {@code sampler} told the state at every multiple of {@code interval} up to {@code until}. */
@@ -59,21 +58,25 @@ public record RunOptions(double until, int threads, ProgressListener progress, M
         return sampler != null;
     }
 
-    public static RunOptions until(double until) {
-        return new RunOptions(until, 1, ProgressListener.NONE, Map.of());
-    }
-
+    /** These options on {@code newThreads} worker threads. */
     public RunOptions withThreads(int newThreads) {
         return new RunOptions(until, newThreads, progress, tunables, every, sampler, checkpoints, collisions);
     }
 
+    /** These options telling {@code listener} the run's progress (null: none). */
     public RunOptions withProgress(ProgressListener listener) {
         return new RunOptions(until, threads, listener, tunables, every, sampler, checkpoints, collisions);
     }
 
+    /** These options with setting {@code key} at {@code value} (text, as after {@code --option}). */
     public RunOptions withTunable(String key, String value) {
         Map<String, String> m = new java.util.HashMap<>(tunables);
         m.put(key, value);
-        return new RunOptions(until, threads, progress, m, every, sampler, checkpoints, collisions);
+        return withTunables(m);
+    }
+
+    /** These options with exactly {@code settings} (replacing any). */
+    public RunOptions withTunables(Map<String, String> settings) {
+        return new RunOptions(until, threads, progress, settings, every, sampler, checkpoints, collisions);
     }
 }

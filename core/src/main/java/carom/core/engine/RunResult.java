@@ -6,7 +6,8 @@ import java.util.Map;
 
 /**
  * What a run produced: the final state (every disc at {@code until}, clocks synchronised, periodic
- * positions wrapped into the box) and what was measured on the way.
+ * positions wrapped into the box) and what was measured on the way. Engines build it with
+ * {@link #of}, naming each part.
  *
  * @param engine             engine name
  * @param exact              whether the engine is exact
@@ -34,15 +35,104 @@ public record RunResult(String engine, boolean exact, Discs finalState, double u
                         double[] momentumStart, double[] momentumEnd,
                         Pressure pressure, long causalityViolations, double wallSeconds,
                         Map<String, Long> counters, double energyPutToRest) {
-    /** A run in which no disc fell asleep. */
-    public RunResult(String engine, boolean exact, Discs finalState, double until,
-                     long pairCollisions, long wallCollisions, long events,
-                     double kineticEnergyStart, double kineticEnergyEnd,
-                     double[] momentumStart, double[] momentumEnd,
-                     Pressure pressure, long causalityViolations, double wallSeconds,
-                     Map<String, Long> counters) {
-        this(engine, exact, finalState, until, pairCollisions, wallCollisions, events, kineticEnergyStart,
-                kineticEnergyEnd, momentumStart, momentumEnd, pressure, causalityViolations, wallSeconds, counters, 0);
+    /**
+     * Starts the result of a run of {@code engine} (exact or not) that left {@code finalState} at
+     * {@code until}; the other parts are named on the builder, and those not named are 0 (null for
+     * the pressure, no counters, events = collisions).
+     */
+    public static Builder of(String engine, boolean exact, Discs finalState, double until) {
+        return new Builder(engine, exact, finalState, until);
+    }
+
+    /** Names the parts of a {@link RunResult} one by one: each method sets one part and returns the builder. */
+    public static final class Builder {
+        private final String engine;
+        private final boolean exact;
+        private final Discs finalState;
+        private final double until;
+        private long pairCollisions;
+        private long wallCollisions;
+        /** Negative until named: then the collisions. */
+        private long events = -1;
+        private double kineticEnergyStart;
+        private double kineticEnergyEnd;
+        private double[] momentumStart = new double[2];
+        private double[] momentumEnd = new double[2];
+        private Pressure pressure;
+        private long causalityViolations;
+        private double wallSeconds;
+        private Map<String, Long> counters = Map.of();
+        private double energyPutToRest;
+
+        private Builder(String engine, boolean exact, Discs finalState, double until) {
+            this.engine = engine;
+            this.exact = exact;
+            this.finalState = finalState;
+            this.until = until;
+        }
+
+        /** Pair and wall collisions carried out. */
+        public Builder collisions(long pairs, long walls) {
+            pairCollisions = pairs;
+            wallCollisions = walls;
+            return this;
+        }
+
+        /** Events processed, when the engine schedules more than its collisions. */
+        public Builder events(long processed) {
+            events = processed;
+            return this;
+        }
+
+        /** Kinetic energy at t = 0 and at the end. */
+        public Builder kineticEnergy(double start, double end) {
+            kineticEnergyStart = start;
+            kineticEnergyEnd = end;
+            return this;
+        }
+
+        /** Total momentum of the mobile discs at t = 0 and at the end, {px, py} each. */
+        public Builder momentum(double[] start, double[] end) {
+            momentumStart = start;
+            momentumEnd = end;
+            return this;
+        }
+
+        /** The collision-virial pressure with its error bar, or null. */
+        public Builder pressure(Pressure p) {
+            pressure = p;
+            return this;
+        }
+
+        /** Events processed out of causal order (relaxed engines). */
+        public Builder causalityViolations(long violations) {
+            causalityViolations = violations;
+            return this;
+        }
+
+        /** Wall-clock seconds of the run itself. */
+        public Builder wallSeconds(double seconds) {
+            wallSeconds = seconds;
+            return this;
+        }
+
+        /** The engine's counters, by {@link Counter#key}, in the order the summary lists them. */
+        public Builder counters(Map<String, Long> byKey) {
+            counters = byKey;
+            return this;
+        }
+
+        /** Kinetic energy the discs had when they fell asleep, summed over the run. */
+        public Builder energyPutToRest(double energy) {
+            energyPutToRest = energy;
+            return this;
+        }
+
+        public RunResult build() {
+            return new RunResult(engine, exact, finalState, until, pairCollisions, wallCollisions,
+                    events < 0 ? pairCollisions + wallCollisions : events, kineticEnergyStart, kineticEnergyEnd,
+                    momentumStart, momentumEnd, pressure, causalityViolations, wallSeconds, counters, energyPutToRest);
+        }
     }
 
     public long collisions() {

@@ -5,7 +5,7 @@ import carom.core.state.Discs;
 /**
  * Receives a run's state at its sample times t = k·every (k = 0, 1, ..., k·every <= until), in order:
  * what trajectories and on-the-fly observables are built from. Engines that can stop at a given
- * time say so ({@link Engine#samples()}) and call it without disturbing the run: the samples are
+ * time say so ({@link Capability#SAMPLES}) and call it without disturbing the run: the samples are
  * read from the engine's own state, and a run with samples ends in the same bits as one without.
  */
 @FunctionalInterface

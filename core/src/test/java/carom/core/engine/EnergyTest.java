@@ -6,7 +6,6 @@ import static org.assertj.core.api.Assertions.within;
 import carom.core.scene.Scene;
 import carom.core.scene.SceneReader;
 import carom.core.state.Discs;
-import java.util.Map;
 import org.junit.jupiter.api.Test;
 
 /** Total energy from a scene and a run's result, on states written down by hand from the equations of motion. */
@@ -29,8 +28,8 @@ class EnergyTest {
             end.t[i] = 0.5;
         }
         double kineticEnd = 0.5 * 2 * 25;
-        return new RunResult("hand", true, end, 0.5, 0, 0, 0, 0, kineticEnd,
-                new double[] {0, 0}, new double[] {0, -10}, null, 0, 0, Map.of());
+        return RunResult.of("hand", true, end, 0.5).kineticEnergy(0, kineticEnd)
+                .momentum(new double[] {0, 0}, new double[] {0, -10}).build();
     }
 
     @Test
@@ -48,8 +47,7 @@ class EnergyTest {
     @Test
     void withoutGravityItIsTheKineticEnergyTheRunReported() {
         Scene scene = SceneReader.parse(DROP.formatted("walls").replace("\"gravity\": [0, -10]", "\"tc\": 0"));
-        RunResult run = new RunResult("hand", true, scene.newDiscs(), 0.5, 0, 0, 0, 3.25, 3.0,
-                new double[] {0, 0}, new double[] {0, 0}, null, 0, 0, Map.of());
+        RunResult run = RunResult.of("hand", true, scene.newDiscs(), 0.5).kineticEnergy(3.25, 3.0).build();
         Energy e = Energy.of(scene, run);
         assertThat(e).isEqualTo(new Energy(3.25, 3.0));
         assertThat(e.drift()).isEqualTo((3.0 - 3.25) / 3.25);

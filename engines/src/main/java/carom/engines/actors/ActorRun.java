@@ -127,12 +127,12 @@ public abstract class ActorRun implements BlockActor.Outbox {
             total += messages[kind.ordinal()];
         }
         counters.put(Counter.MESSAGES.key, total);
-        counters.put(Counter.ACTORS.key, (long) layout.actors);
-        counters.put(Counter.CELLS_PER_ACTOR.key, (long) layout.blockCols * layout.blockRows);
+        counters.put(ActorCounters.ACTORS.key, (long) layout.actors);
+        counters.put(ActorCounters.CELLS_PER_ACTOR.key, (long) layout.blockCols * layout.blockRows);
         counters.put(Counter.STEPS.key, grid.steps);
-        counters.put(Counter.PROBE_WAVES.key, grid.probeWaves);
+        counters.put(ActorCounters.PROBE_WAVES.key, grid.probeWaves);
         counters.put(Counter.THREADS.key, (long) threads);
-        counters.put(Counter.RELAY_MINIMUMS.key, relayMinimums ? 1L : 0L);
+        counters.put(ActorCounters.RELAY_MINIMUMS.key, relayMinimums ? 1L : 0L);
         return frame.result(engineName, workers, seconds, counters);
     }
 

@@ -1,16 +1,14 @@
 package carom.engines.akka;
 
-import java.util.List;
-import java.util.ArrayList;
-import carom.core.engine.Tunable;
+import carom.core.engine.Capability;
 import carom.core.engine.Engine;
+import carom.core.engine.EngineSpec;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
+import carom.engines.actors.ActorCounters;
 import carom.engines.actors.ActorRun;
 import carom.engines.actors.BlockActor;
-import java.util.HashSet;
-import java.util.Set;
 
 /**
  * The thesis's actor model (Schrock 2016, 3.9) on Akka typed 2.6.21 (the last Apache-2.0 release):
@@ -25,28 +23,18 @@ import java.util.Set;
  * long, default 60).
  */
 public final class AkkaEngine implements Engine {
-    @Override
-    public String name() {
-        return "akka";
-    }
+    /** What this engine is and can do. */
+    public static final EngineSpec SPEC = EngineSpec.relaxed("akka",
+            "the thesis's actor model on Akka typed: a grid actor and cell actors (cellsPerActor per actor); "
+                    + "relaxed, counts causality violations and messages; one actor per cell (the thesis's default) "
+                    + "is slow, blocks of cells are much faster: --option cellsPerActor=256")
+            .withCapabilities(Capability.THREADS)
+            .withTunables(ActorRun.TUNABLES, AkkaRun.THROUGHPUT)
+            .withCounters(ActorCounters.EVERY_RUN, ActorCounters.THROUGHPUT);
 
     @Override
-    public boolean exact() {
-        return false;
-    }
-
-    @Override
-    public String description() {
-        return "the thesis's actor model on Akka typed: a grid actor and cell actors (cellsPerActor per actor); "
-                + "relaxed, counts causality violations and messages; one actor per cell (the thesis's default) "
-                + "is slow, blocks of cells are much faster: --option cellsPerActor=256";
-    }
-
-    @Override
-    public List<Tunable<?>> tunables() {
-        List<Tunable<?>> all = new ArrayList<>(ActorRun.TUNABLES);
-        all.add(AkkaRun.THROUGHPUT);
-        return List.copyOf(all);
+    public EngineSpec spec() {
+        return SPEC;
     }
 
     @Override

@@ -1,5 +1,6 @@
 package carom.engines.akka;
 
+import carom.engines.actors.ActorCounters;
 import carom.core.engine.Counter;
 import carom.core.engine.Tunable;
 import akka.actor.typed.ActorRef;
@@ -152,6 +153,6 @@ final class AkkaRun extends ActorRun {
 
     @Override
     protected Map<String, Long> engineCounters() {
-        return Map.of(Counter.DISPATCHER_THREADS.key, (long) threads, Counter.THROUGHPUT.key, (long) throughput);
+        return Map.of(Counter.DISPATCHER_THREADS.key, (long) threads, ActorCounters.THROUGHPUT.key, (long) throughput);
     }
 }

@@ -162,10 +162,17 @@ public final class StepFrame {
         Pressure pressure = VirialAccumulator.pressureOf(virial, scene, d, energyStart, energyEnd);
         Map<String, Long> counters = new HashMap<>(extraCounters);
         counters.put(Counter.STALE_EVENTS.key, stale);
-        counters.put(Counter.OVERRUNS.key, overruns);
-        counters.put(Counter.PREEMPTED.key, preempted);
+        counters.put(StepGridCounters.OVERRUNS.key, overruns);
+        counters.put(StepGridCounters.PREEMPTED.key, preempted);
         counters.put(Counter.PREDICTIONS.key, predictions);
-        return new RunResult(engine, false, d, until, pairs, wallHits, pairs + wallHits, energyStart, energyEnd,
-                momentumStart, Observables.momentum(d), pressure, violations, seconds, counters);
+        return RunResult.of(engine, false, d, until)
+                .collisions(pairs, wallHits)
+                .kineticEnergy(energyStart, energyEnd)
+                .momentum(momentumStart, Observables.momentum(d))
+                .pressure(pressure)
+                .causalityViolations(violations)
+                .wallSeconds(seconds)
+                .counters(counters)
+                .build();
     }
 }

@@ -1,12 +1,15 @@
 package carom.engines.cluster;
 
 import carom.core.BadInputException;
+import carom.core.engine.Capability;
 import carom.core.engine.Engine;
+import carom.core.engine.EngineSpec;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.engine.Tunable;
 import carom.core.scene.Scene;
 import carom.engines.kernel.KernelTunables;
+import carom.engines.slabs.WindowCounters;
 import java.util.List;
 
 /**
@@ -40,6 +43,21 @@ import java.util.List;
 public final class ClusterEngine implements Engine {
     /** Blocks by default: across many nodes their shorter cuts mean fewer cross events and messages. */
     static final Tunable.Whole DOMAIN_ROWS = carom.engines.slabs.DomainGrid.rowsTunable(0);
+    /** What this engine is and can do. */
+    public static final EngineSpec SPEC = EngineSpec.exact("cluster",
+            "the slabs' exact protocol over an Akka Cluster: --threads domains per JVM (slabs or blocks, whichever cuts less), default 1 (--nodes K starts K-1 workers on 127.0.0.1), windows driven and verified by the coordinator through messages")
+            .withCapabilities(Capability.SAMPLES, Capability.CHECKPOINTS, Capability.THREADS, Capability.NODES)
+            .withTunables(List.of(ClusterRun.NODES, KernelTunables.CELL_FACTOR, DOMAIN_ROWS, ClusterRun.JOIN_SECONDS,
+                ClusterRun.LOST_SECONDS, ClusterRun.REPLY_SECONDS, ClusterRun.CHECKPOINT_WINDOWS))
+            .withCounters(WindowCounters.PROTOCOL, ClusterCounters.NODES, ClusterCounters.RECOVERIES,
+                    ClusterCounters.MESSAGE_BYTES, ClusterCounters.MESSAGES_PER_WINDOW, ClusterCounters.MESSAGE_BYTES_PER_WINDOW,
+                    ClusterCounters.MESSAGE_BYTES_PER_CROSS_EVENT);
+
+    @Override
+    public EngineSpec spec() {
+        return SPEC;
+    }
+
     /** Seed nodes of running workers ("host:port"); empty: each run starts its own workers. */
     private final List<String> seeds;
 
@@ -82,26 +100,6 @@ public final class ClusterEngine implements Engine {
             throw new BadInputException(option + ": expected HOST:PORT, got '" + value + "'");
         }
     }
-    @Override
-    public String name() {
-        return "cluster";
-    }
-
-    @Override
-    public boolean exact() {
-        return true;
-    }
-
-    @Override
-    public String description() {
-        return "the slabs' exact protocol over an Akka Cluster: --threads domains per JVM (slabs or blocks, whichever cuts less), default 1 (--nodes K starts K-1 workers on 127.0.0.1), windows driven and verified by the coordinator through messages";
-    }
-
-    @Override
-    public List<Tunable<?>> tunables() {
-        return List.of(ClusterRun.NODES, KernelTunables.CELL_FACTOR, DOMAIN_ROWS, ClusterRun.JOIN_SECONDS,
-                ClusterRun.LOST_SECONDS, ClusterRun.REPLY_SECONDS, ClusterRun.CHECKPOINT_WINDOWS);
-    }
 
     /** One domain per JVM: the JVMs of a {@code --nodes} run share this machine's cores already. */
     @Override
@@ -110,20 +108,20 @@ public final class ClusterEngine implements Engine {
     }
 
     @Override
-    public boolean samples() {
-        return true;
-    }
-
-    @Override
-    public boolean checkpoints() {
-        return true;
-    }
-
-    @Override
     public RunResult run(Scene scene, RunOptions options) {
         checkSupports(scene);
         checkSlabsPerJvm(options.threads());
         return new ClusterRun(scene, options, seeds).run();
+    }
+
+    @Override
+    public Engine overWorkers(List<String> seeds) {
+        return joining(seeds);
+    }
+
+    @Override
+    public void checkThreads(int threads) {
+        checkSlabsPerJvm(threads);
     }
 
     /** {@code --threads}: the slabs each JVM hosts, 1 to {@link ClusterLife#MAX_SLABS_PER_NODE}. */

@@ -234,10 +234,16 @@ final class ClusterRun implements WindowDomains {
             Pressure pressure = VirialAccumulator.pressureOf(virial, scene, out, energyStart, energyEnd);
             WindowCounts counts = coordinator.counts();
             long events = sums[SlabCounts.EVENTS] + counts.crossDomainEvents + counts.migrations;
-            return new RunResult("cluster", true, out, until, sums[SlabCounts.PAIR_COLLISIONS] + mirror.crossPairCollisions,
-                    sums[SlabCounts.WALL_COLLISIONS], events,
-                    energyStart, energyEnd, momentumStart, Observables.momentum(out), pressure, 0, seconds,
-                    SlabCounts.counters(this, count, sums, scene.effects().hasGravity()), SlabCounts.energyPutToRest(sums));
+            return RunResult.of("cluster", true, out, until)
+                    .collisions(sums[SlabCounts.PAIR_COLLISIONS] + mirror.crossPairCollisions, sums[SlabCounts.WALL_COLLISIONS])
+                    .events(events)
+                    .kineticEnergy(energyStart, energyEnd)
+                    .momentum(momentumStart, Observables.momentum(out))
+                    .pressure(pressure)
+                    .wallSeconds(seconds)
+                    .counters(SlabCounts.counters(this, count, sums, scene.effects().hasGravity()))
+                    .energyPutToRest(SlabCounts.energyPutToRest(sums))
+                    .build();
         }
     }
 

@@ -1,5 +1,6 @@
 package carom.engines.cluster;
 
+import carom.engines.slabs.WindowCounters;
 import carom.core.engine.Counter;
 import carom.engines.slabs.WindowCounts;
 import java.util.LinkedHashMap;
@@ -48,29 +49,29 @@ final class SlabCounts {
     static Map<String, Long> counters(ClusterRun run, int nodes, long[] sums, boolean gravity) {
         WindowCounts counts = run.coordinator.counts();
         Map<String, Long> c = new LinkedHashMap<>();
-        c.put(Counter.NODES.key, (long) nodes);
+        c.put(ClusterCounters.NODES.key, (long) nodes);
         c.put(Counter.DOMAINS.key, (long) run.domains);
-        c.put(Counter.DOMAIN_ROWS.key, (long) run.mirror.domainRows());
-        c.put(Counter.WINDOWS.key, counts.windows);
-        c.put(Counter.COMMITS.key, counts.commits);
-        c.put(Counter.ROLLBACKS.key, counts.rollbacks);
-        c.put(Counter.UNDONE_EVENTS.key, sums[UNDONE]);
-        c.put(Counter.CROSS_DOMAIN_EVENTS.key, counts.crossDomainEvents);
-        c.put(Counter.MIGRATIONS.key, counts.migrations);
-        c.put(Counter.CROSS_PREDICTIONS.key, run.mirror.crossPredictions());
+        c.put(WindowCounters.DOMAIN_ROWS.key, (long) run.mirror.domainRows());
+        c.put(WindowCounters.WINDOWS.key, counts.windows);
+        c.put(WindowCounters.COMMITS.key, counts.commits);
+        c.put(WindowCounters.ROLLBACKS.key, counts.rollbacks);
+        c.put(WindowCounters.UNDONE_EVENTS.key, sums[UNDONE]);
+        c.put(WindowCounters.CROSS_DOMAIN_EVENTS.key, counts.crossDomainEvents);
+        c.put(WindowCounters.MIGRATIONS.key, counts.migrations);
+        c.put(WindowCounters.CROSS_PREDICTIONS.key, run.mirror.crossPredictions());
         c.put(Counter.CELL_CROSSINGS.key, sums[CROSSINGS]);
         c.put(Counter.STALE_EVENTS.key, sums[STALE]);
         c.put(Counter.RESYNCS.key, counts.resyncs);
-        c.put(Counter.RECOVERIES.key, run.recoveries);
-        c.put(Counter.WINDOW_NANOS.key, counts.windowNanos);
-        c.put(Counter.SERIAL_NANOS.key, run.loopNanos - counts.windowNanos);
+        c.put(ClusterCounters.RECOVERIES.key, run.recoveries);
+        c.put(WindowCounters.WINDOW_NANOS.key, counts.windowNanos);
+        c.put(WindowCounters.SERIAL_NANOS.key, run.loopNanos - counts.windowNanos);
         c.put(Counter.MESSAGES.key, run.messageCount);
-        c.put(Counter.MESSAGE_BYTES.key, run.bytes);
+        c.put(ClusterCounters.MESSAGE_BYTES.key, run.bytes);
         long windows = counts.windows;
-        c.put(Counter.MESSAGES_PER_WINDOW.key, windows == 0 ? 0 : Math.round((double) run.messageCount / windows));
-        c.put(Counter.MESSAGE_BYTES_PER_WINDOW.key, windows == 0 ? 0 : Math.round((double) run.windowBytes / windows));
+        c.put(ClusterCounters.MESSAGES_PER_WINDOW.key, windows == 0 ? 0 : Math.round((double) run.messageCount / windows));
+        c.put(ClusterCounters.MESSAGE_BYTES_PER_WINDOW.key, windows == 0 ? 0 : Math.round((double) run.windowBytes / windows));
         long crossEvents = counts.crossDomainEvents + counts.migrations;
-        c.put(Counter.MESSAGE_BYTES_PER_CROSS_EVENT.key,
+        c.put(ClusterCounters.MESSAGE_BYTES_PER_CROSS_EVENT.key,
                 crossEvents == 0 ? 0 : Math.round((double) run.crossEventBytes / crossEvents));
         if (gravity) {
             c.put(Counter.SLEEPS.key, sums[SLEEPS]);

@@ -1,9 +1,11 @@
 package carom.engines.fast;
 
-import carom.core.engine.Tunables;
-import carom.engines.kernel.KernelTunables;
-import carom.core.engine.Tunable;
+import carom.core.engine.Capability;
 import carom.core.engine.Engine;
+import carom.core.engine.EngineSpec;
+import carom.core.engine.Tunables;
+import carom.core.scene.Effect;
+import carom.engines.kernel.KernelTunables;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
@@ -26,44 +28,16 @@ import java.util.List;
  * {@code bytesPerDisc} (the same over N, rounded).
  */
 public final class FastEngine implements Engine {
-    @Override
-    public String name() {
-        return "fast";
-    }
+    /** What this engine is and can do. */
+    public static final EngineSpec SPEC = EngineSpec.exact("fast",
+            "one event per disc, cell crossings as events (in dense scenes of up to 20,000 discs, neighbour lists that expire instead), Paul's O(1) calendar queue, Morton-ordered discs")
+            .withCapabilities(Capability.SAMPLES, Capability.CHECKPOINTS, Capability.COLLISION_OBSERVERS)
+            .withEffects(Effect.GROWTH)
+            .withTunables(List.of(KernelTunables.CELL_FACTOR, KernelTunables.SKIN, KernelTunables.PREFETCH, Tunables.AUDIT_ENERGY));
 
     @Override
-    public boolean exact() {
-        return true;
-    }
-
-    @Override
-    public String description() {
-        return "one event per disc, cell crossings as events (in dense scenes of up to 20,000 discs, neighbour lists that expire instead), Paul's O(1) calendar queue, Morton-ordered discs";
-    }
-
-    @Override
-    public List<Tunable<?>> tunables() {
-        return List.of(KernelTunables.CELL_FACTOR, KernelTunables.SKIN, KernelTunables.PREFETCH, Tunables.AUDIT_ENERGY);
-    }
-
-    @Override
-    public boolean samples() {
-        return true;
-    }
-
-    @Override
-    public int threadsFor(int requested) {
-        return 1;
-    }
-
-    @Override
-    public boolean checkpoints() {
-        return true;
-    }
-
-    @Override
-    public boolean supportsGrowth() {
-        return true;
+    public EngineSpec spec() {
+        return SPEC;
     }
 
     @Override

@@ -205,9 +205,16 @@ final class FastRun {
             counters.put(Counter.SLEEPS.key, motion.sleeps());
             counters.put(Counter.WAKES.key, motion.wakes());
         }
-        return new RunResult("fast", true, out, until, step.pairCollisions(), step.wallCollisions(), step.events(),
-                energyStart, energyEnd, momentumStart, Observables.momentum(out), pressure, 0, seconds,
-                Map.copyOf(counters), motion.energyPutToRest());
+        return RunResult.of("fast", true, out, until)
+                .collisions(step.pairCollisions(), step.wallCollisions())
+                .events(step.events())
+                .kineticEnergy(energyStart, energyEnd)
+                .momentum(momentumStart, Observables.momentum(out))
+                .pressure(pressure)
+                .wallSeconds(seconds)
+                .counters(Map.copyOf(counters))
+                .energyPutToRest(motion.energyPutToRest())
+                .build();
     }
 
     /** Heap held by this run's per-disc and per-cell arrays, in bytes. */

@@ -158,8 +158,15 @@ public final class GrowthRun {
         counters.put(Counter.PREDICTIONS.key, predictions);
         counters.put(Counter.GROWTH_STAGES.key, stages);
         counters.put(Counter.RESCALINGS.key, rescalings);
-        return new RunResult("fast", true, out, stoppedAt, step.pairCollisions(), step.wallCollisions(), step.events(), energyStart,
-                energyEnd, momentumStart, Observables.momentum(out), pressure, 0, seconds, Map.copyOf(counters));
+        return RunResult.of("fast", true, out, stoppedAt)
+                .collisions(step.pairCollisions(), step.wallCollisions())
+                .events(step.events())
+                .kineticEnergy(energyStart, energyEnd)
+                .momentum(momentumStart, Observables.momentum(out))
+                .pressure(pressure)
+                .wallSeconds(seconds)
+                .counters(Map.copyOf(counters))
+                .build();
     }
 
     /** Why the run ended (after {@link #run}). */

@@ -1,9 +1,11 @@
 package carom.engines.serial;
 
-import carom.core.engine.Tunables;
-import carom.engines.cells.StepGridTunables;
-import carom.core.engine.Tunable;
+import carom.core.engine.Capability;
 import carom.core.engine.Engine;
+import carom.core.engine.EngineSpec;
+import carom.core.engine.Tunables;
+import carom.engines.cells.StepGridCounters;
+import carom.engines.cells.StepGridTunables;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
@@ -18,34 +20,16 @@ import java.util.List;
  * {@code auditEnergy} (test mode: check after every event that energy did not grow; O(N) per event).
  */
 public final class SerialEngine implements Engine {
-    @Override
-    public String name() {
-        return "serial";
-    }
+    /** What this engine is and can do. */
+    public static final EngineSpec SPEC = EngineSpec.exact("serial",
+            "the thesis's single-thread time-stepped grid algorithm with its six-linked bucket queue (reference)")
+            .withCapabilities(Capability.CHECKPOINTS, Capability.COLLISION_OBSERVERS)
+            .withTunables(List.of(StepGridTunables.CELL_FACTOR, Tunables.AUDIT_ENERGY))
+            .withCounters(List.of(StepGridCounters.EARLY_STEP_ENDS));
 
     @Override
-    public boolean exact() {
-        return true;
-    }
-
-    @Override
-    public String description() {
-        return "the thesis's single-thread time-stepped grid algorithm with its six-linked bucket queue (reference)";
-    }
-
-    @Override
-    public List<Tunable<?>> tunables() {
-        return List.of(StepGridTunables.CELL_FACTOR, Tunables.AUDIT_ENERGY);
-    }
-
-    @Override
-    public int threadsFor(int requested) {
-        return 1;
-    }
-
-    @Override
-    public boolean checkpoints() {
-        return true;
+    public EngineSpec spec() {
+        return SPEC;
     }
 
     @Override

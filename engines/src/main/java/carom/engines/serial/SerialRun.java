@@ -1,5 +1,6 @@
 package carom.engines.serial;
 
+import carom.engines.cells.StepGridCounters;
 import carom.core.engine.Tunables;
 import carom.core.engine.Counter;
 import carom.engines.cells.StepGridTunables;
@@ -207,7 +208,7 @@ final class SerialRun {
             d.t[i] = until;
         }
         Map<String, Long> counters = new HashMap<>(Map.of(Counter.STEPS.key, steps, Counter.PREDICTIONS.key,
-                predictions, Counter.EARLY_STEP_ENDS.key, earlyStepEnds));
+                predictions, StepGridCounters.EARLY_STEP_ENDS.key, earlyStepEnds));
         if (sleepers != null) {
             sleepers.wakeAll(d);
             counters.put(Counter.SLEEPS.key, sleepers.sleeps());
@@ -216,9 +217,15 @@ final class SerialRun {
         double seconds = (System.nanoTime() - started) * 1e-9;
         double energyEnd = Observables.kineticEnergy(d);
         Pressure pressure = VirialAccumulator.pressureOf(virial, scene, d, energyStart, energyEnd);
-        return new RunResult("serial", true, d, until, pairCollisions, wallCollisions, pairCollisions + wallCollisions,
-                energyStart, energyEnd, momentumStart, Observables.momentum(d), pressure, 0, seconds,
-                Map.copyOf(counters), sleepers == null ? 0 : sleepers.energyPutToRest());
+        return RunResult.of("serial", true, d, until)
+                .collisions(pairCollisions, wallCollisions)
+                .kineticEnergy(energyStart, energyEnd)
+                .momentum(momentumStart, Observables.momentum(d))
+                .pressure(pressure)
+                .wallSeconds(seconds)
+                .counters(Map.copyOf(counters))
+                .energyPutToRest(sleepers == null ? 0 : sleepers.energyPutToRest())
+                .build();
     }
 
     /** Runs one step from local time 0 (absolute {@code epoch}); returns its length. */

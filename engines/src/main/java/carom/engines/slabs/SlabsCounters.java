@@ -115,26 +115,26 @@ final class SlabsCounters {
         }
         Map<String, Long> counters = new HashMap<>();
         counters.put(Counter.DOMAINS.key, (long) slabs);
-        counters.put(Counter.DOMAIN_ROWS.key, (long) domainRows);
+        counters.put(WindowCounters.DOMAIN_ROWS.key, (long) domainRows);
         counters.put(Counter.EVENTS.key, events(domains));
         counters.put(Counter.CELL_CROSSINGS.key, crossings);
         counters.put(Counter.STALE_EVENTS.key, stale);
         counters.put(Counter.PREDICTIONS.key, predictions);
         counters.put(Counter.RESYNCS.key, window.resyncs);
-        counters.put(Counter.WINDOWS.key, window.windows);
-        counters.put(Counter.COMMITS.key, window.commits);
-        counters.put(Counter.ROLLBACKS.key, window.rollbacks);
-        counters.put(Counter.UNDONE_EVENTS.key, undoneEvents);
-        counters.put(Counter.CROSS_DOMAIN_EVENTS.key, window.crossDomainEvents);
-        counters.put(Counter.MIGRATIONS.key, window.migrations);
-        counters.put(Counter.CROSS_PREDICTIONS.key, crossPredictions);
-        counters.put(Counter.SERIAL_NANOS.key, window.serialNanos);
-        counters.put(Counter.WINDOW_NANOS.key, window.windowNanos);
-        counters.put(Counter.SETUP_NANOS.key, setupNanos);
-        counters.put(Counter.START_NANOS.key, startNanos);
-        counters.put(Counter.FINAL_NANOS.key, finalNanos);
-        counters.put(Counter.SERIAL_CPU_NANOS.key, window.serialCpuNanos);
-        counters.put(Counter.CRITICAL_CPU_NANOS.key, criticalCpuNanos);
+        counters.put(WindowCounters.WINDOWS.key, window.windows);
+        counters.put(WindowCounters.COMMITS.key, window.commits);
+        counters.put(WindowCounters.ROLLBACKS.key, window.rollbacks);
+        counters.put(WindowCounters.UNDONE_EVENTS.key, undoneEvents);
+        counters.put(WindowCounters.CROSS_DOMAIN_EVENTS.key, window.crossDomainEvents);
+        counters.put(WindowCounters.MIGRATIONS.key, window.migrations);
+        counters.put(WindowCounters.CROSS_PREDICTIONS.key, crossPredictions);
+        counters.put(WindowCounters.SERIAL_NANOS.key, window.serialNanos);
+        counters.put(WindowCounters.WINDOW_NANOS.key, window.windowNanos);
+        counters.put(WindowCounters.SETUP_NANOS.key, setupNanos);
+        counters.put(WindowCounters.START_NANOS.key, startNanos);
+        counters.put(WindowCounters.FINAL_NANOS.key, finalNanos);
+        counters.put(WindowCounters.SERIAL_CPU_NANOS.key, window.serialCpuNanos);
+        counters.put(WindowCounters.CRITICAL_CPU_NANOS.key, criticalCpuNanos);
         long windowCpu = 0;
         for (int k = 0; k < slabs; k++) {
             Domain d = domains[k];
@@ -142,11 +142,11 @@ final class SlabsCounters {
             if (slabs > 1) {
                 // Per slab, to tell a systematic imbalance (one slab always heavier) from noise.
                 counters.put(Counter.perSlab(d.id, Counter.EVENTS), d.events);
-                counters.put(Counter.perSlab(d.id, Counter.WINDOW_CPU_NANOS), d.windowCpuNanos);
+                counters.put(Counter.perSlab(d.id, WindowCounters.WINDOW_CPU_NANOS), d.windowCpuNanos);
             }
         }
-        counters.put(Counter.WINDOW_CPU_NANOS.key, windowCpu);
-        counters.put(Counter.BARRIER_SPINS.key, (long) spins);
+        counters.put(WindowCounters.WINDOW_CPU_NANOS.key, windowCpu);
+        counters.put(WindowCounters.BARRIER_SPINS.key, (long) spins);
         if (gravity) {
             // Resting contact: every domain's motion (the merged phases' one too) and the serial phases'.
             long sleeps = 0;
@@ -159,9 +159,9 @@ final class SlabsCounters {
             counters.put(Counter.WAKES.key, wakes);
         }
         if (slabs > 1) {
-            counters.put(Counter.MERGES.key, merges);
-            counters.put(Counter.MERGED_EVENTS.key, domains[slabs].events);
-            counters.put(Counter.MERGED_CROSS_SLAB_EVENTS.key, domains[slabs].crossSlabEvents);
+            counters.put(WindowCounters.MERGES.key, merges);
+            counters.put(WindowCounters.MERGED_EVENTS.key, domains[slabs].events);
+            counters.put(WindowCounters.MERGED_CROSS_SLAB_EVENTS.key, domains[slabs].crossSlabEvents);
         }
         return Map.copyOf(counters);
     }

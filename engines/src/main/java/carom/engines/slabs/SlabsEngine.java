@@ -1,9 +1,12 @@
 package carom.engines.slabs;
 
-import carom.core.engine.Tunables;
-import carom.engines.kernel.KernelTunables;
-import carom.core.engine.Tunable;
+import carom.core.engine.Capability;
 import carom.core.engine.Engine;
+import carom.core.engine.EngineSpec;
+import carom.core.engine.Tunable;
+import carom.core.engine.Tunables;
+import carom.core.scene.Effect;
+import carom.engines.kernel.KernelTunables;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
@@ -32,43 +35,20 @@ import java.util.List;
 public final class SlabsEngine implements Engine {
     /** Vertical slabs by default, the layout every measurement of this engine was taken with. */
     static final Tunable.Whole DOMAIN_ROWS = DomainGrid.rowsTunable(1);
-
-    @Override
-    public String name() {
-        return "slabs";
-    }
-
-    @Override
-    public boolean exact() {
-        return true;
-    }
-
-    @Override
-    public String description() {
-        return "vertical slabs, one fast-style event loop per thread, optimistic windows verified at a barrier and rolled back to the first cross-slab contact; merged into one fast loop while windows do not pay";
-    }
-
-    @Override
-    public List<Tunable<?>> tunables() {
-        return List.of(KernelTunables.CELL_FACTOR, KernelTunables.PREFETCH, DOMAIN_ROWS, Tunables.AUDIT_ENERGY, SlabsRun.SEQUENTIAL,
+    /** What this engine is and can do. */
+    public static final EngineSpec SPEC = EngineSpec.exact("slabs",
+            "vertical slabs, one fast-style event loop per thread, optimistic windows verified at a barrier and rolled back to the first cross-slab contact; merged into one fast loop while windows do not pay")
+            .withCapabilities(Capability.SAMPLES, Capability.CHECKPOINTS, Capability.THREADS)
+            .withEffects(Effect.GROWTH)
+            .withTunables(List.of(KernelTunables.CELL_FACTOR, KernelTunables.PREFETCH, DOMAIN_ROWS, Tunables.AUDIT_ENERGY, SlabsRun.SEQUENTIAL,
                 SpinPolicy.SPINS,
                 MergePolicy.WINDOW_EVENTS, MergePolicy.MERGE_EVENTS,
-                MergePolicy.ESTIMATE_WINDOWS);
-    }
+                MergePolicy.ESTIMATE_WINDOWS))
+            .withCounters(WindowCounters.SLABS);
 
     @Override
-    public boolean samples() {
-        return true;
-    }
-
-    @Override
-    public boolean checkpoints() {
-        return true;
-    }
-
-    @Override
-    public boolean supportsGrowth() {
-        return true;
+    public EngineSpec spec() {
+        return SPEC;
     }
 
     @Override

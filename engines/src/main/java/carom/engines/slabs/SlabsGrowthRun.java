@@ -65,7 +65,7 @@ final class SlabsGrowthRun {
             double end = Math.min(Math.min(plan.end(table), samples.next()), until);
             double from = epoch;
             ProgressListener progress = t -> options.progress().simulatedTime(from + t);
-            RunOptions stageOptions = new RunOptions(end - epoch, options.threads(), progress, options.tunables());
+            RunOptions stageOptions = RunOptions.until(end - epoch).withThreads(options.threads()).withProgress(progress).withTunables(options.tunables());
             RunResult stage = new SlabsRun(scene.withState(state).withUntil(end - epoch), stageOptions, table).run();
             stages++;
             pairs += stage.pairCollisions();
@@ -88,9 +88,14 @@ final class SlabsGrowthRun {
         plan.grownRadii(state, out, until);
         counters.put(Counter.GROWTH_STAGES.key, stages);
         counters.put(Counter.RESCALINGS.key, rescalings);
-        return new RunResult("slabs", true, out, until, pairs, walls, events, energyStart,
-                Observables.kineticEnergy(out), momentumStart, Observables.momentum(out), null, 0, seconds,
-                Map.copyOf(counters));
+        return RunResult.of("slabs", true, out, until)
+                .collisions(pairs, walls)
+                .events(events)
+                .kineticEnergy(energyStart, Observables.kineticEnergy(out))
+                .momentum(momentumStart, Observables.momentum(out))
+                .wallSeconds(seconds)
+                .counters(Map.copyOf(counters))
+                .build();
     }
 
     private static void copyInto(Discs from, Discs to) {

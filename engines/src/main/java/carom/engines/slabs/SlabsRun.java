@@ -269,12 +269,17 @@ final class SlabsRun implements WindowDomains {
             virial.addAll(d.virial);
         }
         Pressure pressure = VirialAccumulator.pressureOf(virial, scene, out, energyStart, energyEnd);
-        return new RunResult("slabs", true, out, until, counters.pairCollisions(counted),
-                counters.wallCollisions(counted), counters.events(counted), energyStart, energyEnd, momentumStart,
-                Observables.momentum(out), pressure, 0, seconds,
-                counters.toMap(counted, domainCount, grid.domainRows, cross == null ? 0 : cross.predictions, spins,
-                        table.flight.maxAcceleration() > 0),
-                SlabsCounters.energyPutToRest(counted));
+        return RunResult.of("slabs", true, out, until)
+                .collisions(counters.pairCollisions(counted), counters.wallCollisions(counted))
+                .events(counters.events(counted))
+                .kineticEnergy(energyStart, energyEnd)
+                .momentum(momentumStart, Observables.momentum(out))
+                .pressure(pressure)
+                .wallSeconds(seconds)
+                .counters(counters.toMap(counted, domainCount, grid.domainRows, cross == null ? 0 : cross.predictions,
+                        spins, table.flight.maxAcceleration() > 0))
+                .energyPutToRest(SlabsCounters.energyPutToRest(counted))
+                .build();
     }
 
     @Override

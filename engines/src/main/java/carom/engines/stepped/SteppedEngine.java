@@ -1,14 +1,16 @@
 package carom.engines.stepped;
 
 import carom.core.engine.Tunable;
-import carom.core.BadInputException;
+import carom.core.engine.Counter;
 import carom.core.engine.Engine;
+import carom.core.engine.EngineSpec;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Effects;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
 import java.util.List;
+import java.util.Map;
 
 /**
  * What game engines do: advance every disc by a fixed {@code dt}, then find the pairs that overlap and
@@ -34,34 +36,18 @@ public final class SteppedEngine implements Engine {
             "time step: every disc moves by dt, then overlaps are resolved").computedByDefault(
             "5% of the smallest radius per step at the fastest starting speed plus what a fall across the box adds");
     /** Counter: the deepest overlap seen, in parts per billion of the contact distance. */
-    public static final String DEEPEST_OVERLAP_PPB = carom.core.engine.Counter.DEEPEST_OVERLAP_PPB.key;
+    public static final Counter DEEPEST_OVERLAP_PPB = new Counter("deepestOverlapPpb",
+            "deepest overlap seen, in parts per billion of the contact distance");
     /** Counter: disc-steps in which a disc's centre was found outside a walled box before clamping. */
-    public static final String ESCAPES = carom.core.engine.Counter.ESCAPES.key;
+    public static final Counter ESCAPES = new Counter("escapes", "discs found outside a wall before being clamped back");
+    public static final EngineSpec SPEC = EngineSpec.relaxed("stepped",
+                    "time-stepped like a game engine: fixed dt, overlapping pairs get the collision impulse and are pushed "
+                            + "apart, walls reflect and clamp; relaxed, dt is its accuracy knob")
+            .withTunables(List.of(DT)).withCounters(List.of(ESCAPES, DEEPEST_OVERLAP_PPB));
 
     @Override
-    public String name() {
-        return "stepped";
-    }
-
-    @Override
-    public boolean exact() {
-        return false;
-    }
-
-    @Override
-    public String description() {
-        return "time-stepped like a game engine: fixed dt, overlapping pairs get the collision impulse and are pushed "
-                + "apart, walls reflect and clamp; relaxed, dt is its accuracy knob";
-    }
-
-    @Override
-    public List<Tunable<?>> tunables() {
-        return List.of(DT);
-    }
-
-    @Override
-    public int threadsFor(int requested) {
-        return 1;
+    public EngineSpec spec() {
+        return SPEC;
     }
 
     @Override
@@ -105,8 +91,13 @@ public final class SteppedEngine implements Engine {
      * fraction of the contact distance; NaN if it does not report one.
      */
     public static double deepestOverlap(RunResult result) {
-        Long ppb = result.counters() == null ? null : result.counters().get(DEEPEST_OVERLAP_PPB);
+        Long ppb = result.counters() == null ? null : result.counters().get(DEEPEST_OVERLAP_PPB.key);
         return ppb == null ? Double.NaN : ppb * 1e-9;
+    }
+
+    /** The counters of a fixed-step run: its steps, escapes and deepest overlap (a fraction of the contact distance). */
+    public static Map<String, Long> counters(long steps, long escapes, double deepestOverlap) {
+        return Map.of(Counter.STEPS.key, steps, ESCAPES.key, escapes, DEEPEST_OVERLAP_PPB.key, overlapPpb(deepestOverlap));
     }
 
     /** The counter value for a deepest overlap given as a fraction of the contact distance (rounded up). */

@@ -1,6 +1,5 @@
 package carom.engines.stepped;
 
-import carom.core.engine.Counter;
 import carom.core.engine.ProgressListener;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
@@ -16,7 +15,6 @@ import carom.core.physics.Physics;
 import carom.core.physics.Restitution;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
-import java.util.Map;
 
 /**
  * One run of the stepped engine. Per step of length h (every step is dt but the last, which ends at
@@ -107,10 +105,14 @@ final class SteppedRun {
         double seconds = (System.nanoTime() - started) * 1e-9;
         double energyEnd = Observables.kineticEnergy(d);
         Pressure pressure = VirialAccumulator.pressureOf(virial, scene, d, energyStart, energyEnd);
-        return new RunResult("stepped", false, d, until, pairCollisions, wallCollisions, pairCollisions + wallCollisions,
-                energyStart, energyEnd, momentumStart, Observables.momentum(d), pressure, 0, seconds,
-                Map.of(Counter.STEPS.key, steps, SteppedEngine.ESCAPES, escapes,
-                        SteppedEngine.DEEPEST_OVERLAP_PPB, SteppedEngine.overlapPpb(deepestOverlap)));
+        return RunResult.of(SteppedEngine.SPEC.name(), SteppedEngine.SPEC.exact(), d, until)
+                .collisions(pairCollisions, wallCollisions)
+                .kineticEnergy(energyStart, energyEnd)
+                .momentum(momentumStart, Observables.momentum(d))
+                .pressure(pressure)
+                .wallSeconds(seconds)
+                .counters(SteppedEngine.counters(steps, escapes, deepestOverlap))
+                .build();
     }
 
     /** One step of length h ending at absolute time {@code time}. */

@@ -1,8 +1,10 @@
 package carom.engines.stripes;
 
+import carom.engines.cells.StepGridCounters;
 import carom.engines.cells.StepGridTunables;
-import carom.core.engine.Tunable;
+import carom.core.engine.Capability;
 import carom.core.engine.Engine;
+import carom.core.engine.EngineSpec;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
@@ -20,25 +22,17 @@ import java.util.List;
  * steps, and discs that outrun the grid are counted as overruns).
  */
 public final class StripesEngine implements Engine {
-    @Override
-    public String name() {
-        return "stripes";
-    }
+    /** What this engine is and can do. */
+    public static final EngineSpec SPEC = EngineSpec.relaxed("stripes",
+            "the thesis's fork/join model: rows in three phases (r mod 3), one task per row, left to right; "
+                    + "relaxed, counts causality violations")
+            .withCapabilities(Capability.THREADS)
+            .withTunables(List.of(StepGridTunables.CELL_FACTOR, StepGridTunables.STEP_FACTOR))
+            .withCounters(StepGridCounters.RELAXED, StepGridCounters.ROUNDS);
 
     @Override
-    public boolean exact() {
-        return false;
-    }
-
-    @Override
-    public String description() {
-        return "the thesis's fork/join model: rows in three phases (r mod 3), one task per row, left to right; "
-                + "relaxed, counts causality violations";
-    }
-
-    @Override
-    public List<Tunable<?>> tunables() {
-        return List.of(StepGridTunables.CELL_FACTOR, StepGridTunables.STEP_FACTOR);
+    public EngineSpec spec() {
+        return SPEC;
     }
 
     @Override

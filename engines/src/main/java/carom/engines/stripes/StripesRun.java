@@ -1,5 +1,6 @@
 package carom.engines.stripes;
 
+import carom.engines.cells.StepGridCounters;
 import carom.core.engine.Counter;
 import carom.engines.cells.StepGridTunables;
 import carom.core.engine.ProgressListener;
@@ -109,7 +110,7 @@ final class StripesRun {
             awaitQuietly(pool);
         }
         double seconds = (System.nanoTime() - started) * 1e-9;
-        return work.result("stripes", workers, seconds, Map.of(Counter.STEPS.key, steps, Counter.ROUNDS.key, rounds));
+        return work.result("stripes", workers, seconds, Map.of(Counter.STEPS.key, steps, StepGridCounters.ROUNDS.key, rounds));
     }
 
     /** No worker may outlive the run, also after a failure inside a task. */

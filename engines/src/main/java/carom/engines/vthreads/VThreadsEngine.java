@@ -1,14 +1,14 @@
 package carom.engines.vthreads;
 
-import java.util.List;
-import carom.core.engine.Tunable;
+import carom.core.engine.Capability;
 import carom.core.engine.Engine;
+import carom.core.engine.EngineSpec;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
+import carom.engines.actors.ActorCounters;
 import carom.engines.actors.ActorRun;
 import carom.engines.actors.BlockActor;
-import java.util.Set;
 
 /**
  * The thesis's actor protocol without Akka ({@link carom.engines.actors}): each actor a virtual thread
@@ -20,26 +20,18 @@ import java.util.Set;
  * {@code stallSeconds}, as for the akka engine.
  */
 public final class VThreadsEngine implements Engine {
-    @Override
-    public String name() {
-        return "vthreads";
-    }
+    /** What this engine is and can do. */
+    public static final EngineSpec SPEC = EngineSpec.relaxed("vthreads",
+            "the thesis's actor protocol with one virtual thread per actor (cellsPerActor per actor); "
+                    + "relaxed, counts causality violations and messages; one actor per cell (the thesis's default) "
+                    + "is slow, blocks of cells are much faster: --option cellsPerActor=256")
+            .withCapabilities(Capability.THREADS)
+            .withTunables(ActorRun.TUNABLES)
+            .withCounters(ActorCounters.EVERY_RUN);
 
     @Override
-    public boolean exact() {
-        return false;
-    }
-
-    @Override
-    public String description() {
-        return "the thesis's actor protocol with one virtual thread per actor (cellsPerActor per actor); "
-                + "relaxed, counts causality violations and messages; one actor per cell (the thesis's default) "
-                + "is slow, blocks of cells are much faster: --option cellsPerActor=256";
-    }
-
-    @Override
-    public List<Tunable<?>> tunables() {
-        return ActorRun.TUNABLES;
+    public EngineSpec spec() {
+        return SPEC;
     }
 
     @Override

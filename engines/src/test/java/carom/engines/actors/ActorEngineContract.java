@@ -58,8 +58,8 @@ public abstract class ActorEngineContract {
 
     @Test
     void isRelaxedAndListsItsOptions() {
-        assertThat(engine().exact()).isFalse();
-        assertThat(engine().tunables()).extracting(carom.core.engine.Tunable::name)
+        assertThat(engine().spec().exact()).isFalse();
+        assertThat(engine().spec().tunables()).extracting(carom.core.engine.Tunable::name)
                 .contains("cellsPerActor", "cellFactor", "stepFactor", "stallSeconds", "relayMinimums");
     }
 

@@ -11,13 +11,16 @@ import carom.core.engine.RunStopped;
 import carom.core.engine.Sampler;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
-import carom.engines.reference.ExactEngineCheckpointContract.Kept;
+import carom.engines.reference.EngineVariant;
 import carom.engines.reference.ExactEngineCheckpointContract;
+import carom.engines.reference.ExactEngineCheckpointContract.Kept;
 import carom.engines.reference.RandomScenes;
+import carom.engines.reference.Tuned;
 import carom.engines.slabs.SlabsEngine;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.stream.Stream;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Tag;
@@ -156,25 +159,18 @@ class ClusterCheckpointTest {
     @Nested
     @Tag("physics")
     class Contract extends ExactEngineCheckpointContract {
-        @Override
-        protected Engine engine() {
-            return new ClusterEngine();
-        }
-
-        @Override
-        protected RunOptions options(double until) {
-            return twoNodes(until);
-        }
-
         /** Inelastic collisions under gravity are refused (sleeping discs are not carried across nodes). */
         @Override
-        protected boolean runs(Scene scene) {
-            try {
-                engine().checkSupports(scene);
-                return true;
-            } catch (carom.core.BadInputException e) {
-                return false;
-            }
+        protected Stream<EngineVariant> variants() {
+            Engine twoNodes = Tuned.of(new ClusterEngine(), 0, "nodes", "2");
+            return Stream.of(EngineVariant.of("cluster on 2 nodes", twoNodes).onScenes(scene -> {
+                try {
+                    twoNodes.checkSupports(scene);
+                    return true;
+                } catch (carom.core.BadInputException e) {
+                    return false;
+                }
+            }));
         }
     }
 }

@@ -224,8 +224,7 @@ class ClusterEngineTest {
         Going running = new Going();
         List<double[]> samples = new ArrayList<>();
         Kept kept = new Kept(scene.until() / 4, Long.MAX_VALUE);
-        RunOptions o = new RunOptions(scene.until(), slabsPerJvm, running,
-                Map.of("nodes", "3", "checkpointWindows", checkpointWindows))
+        RunOptions o = RunOptions.until(scene.until()).withThreads(slabsPerJvm).withProgress(running).withTunables(Map.of("nodes", "3", "checkpointWindows", checkpointWindows))
                 .withSamples(every, ClusterCheckpointTest.collect(samples)).withCheckpoints(kept);
         CompletableFuture<RunResult> run = CompletableFuture.supplyAsync(() -> new ClusterEngine().run(scene, o));
         try {
@@ -261,8 +260,7 @@ class ClusterEngineTest {
                     .orElseThrow(() -> new AssertionError("no checkpoint after the recovery: " + kept.saved.size() + " saved"));
             assertThat(ClusterCheckpoint.slabsPerJvmOf(after.state())).isEqualTo(slabsPerJvm);
             List<double[]> resumedSamples = new ArrayList<>();
-            RunResult resumed = workers.engine().resume(scene, new RunOptions(scene.until(), 1, t -> { },
-                    Map.of("nodes", "3", "checkpointWindows", checkpointWindows))
+            RunResult resumed = workers.engine().resume(scene, RunOptions.until(scene.until()).withThreads(1).withProgress(t -> { }).withTunables(Map.of("nodes", "3", "checkpointWindows", checkpointWindows))
                     .withSamples(every, ClusterCheckpointTest.collect(resumedSamples)), after.state());
             String what = "resumed from t = " + after.time() + ", after the recovery";
             ClusterCheckpointTest.assertSameBits(what, resumed, r);
@@ -328,7 +326,7 @@ class ClusterEngineTest {
         try {
             Scene scene = RandomScenes.dense(900, 0.5, true, 5, 0.5);
             Going running = new Going();
-            RunOptions o = new RunOptions(scene.until(), 1, running,
+            RunOptions o = RunOptions.until(scene.until()).withThreads(1).withProgress(running).withTunables(
                     // 2 s unreachable rather than 20 (past the failure detector's 10 s pause): the test's wait.
                     Map.of("nodes", "3", "checkpointWindows", "40", "lostSeconds", "2"));
             CompletableFuture<RunResult> run = CompletableFuture.supplyAsync(

@@ -1,7 +1,8 @@
 package carom.engines.cluster;
 
-import carom.core.engine.Engine;
+import carom.engines.reference.EngineVariant;
 import carom.engines.reference.ExactEngineRestingContactContract;
+import java.util.stream.Stream;
 import org.junit.jupiter.api.extension.RegisterExtension;
 
 /**
@@ -15,7 +16,7 @@ class ClusterRestingContactTest extends ExactEngineRestingContactContract {
     static final RunningWorkers workers = RunningWorkers.forEachClass(1);
 
     @Override
-    protected Engine engine() {
-        return workers.engine();
+    protected Stream<EngineVariant> variants() {
+        return Stream.of(EngineVariant.lazy("cluster over a running worker", workers::engine));
     }
 }

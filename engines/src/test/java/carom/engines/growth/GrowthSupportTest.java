@@ -24,7 +24,7 @@ class GrowthSupportTest {
     @Test
     void enginesWithoutGrowthRefuseItBeforeRunning() {
         for (Engine engine : EngineCatalog.all()) {
-            if (engine.supportsGrowth()) {
+            if (engine.spec().simulates(carom.core.scene.Effect.GROWTH)) {
                 assertThatCode(() -> engine.checkSupports(growing())).doesNotThrowAnyException();
             } else {
                 assertThatThrownBy(() -> engine.checkSupports(growing())).as(engine.name())

@@ -4,9 +4,8 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import carom.core.engine.Checkpoints;
-import carom.core.engine.Engine;
-import carom.core.engine.RunOptions;
 import carom.core.engine.Counter;
+import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.engine.RunStopped;
 import carom.core.scene.Scene;
@@ -16,26 +15,29 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.stream.LongStream;
 import java.util.stream.Stream;
-import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 
 /**
- * What every engine that {@link Engine#checkpoints() checkpoints} promises: checkpoints change nothing
+ * What every engine that {@link carom.core.engine.Capability#CHECKPOINTS checkpoints} promises: checkpoints change nothing
  * of the run, and a run resumed from any of them, also from the end of a shorter run or from a stop,
  * ends in the same bits (final state, collision counts) and hands out the same samples as one run that
  * never stopped.
  */
-public abstract class ExactEngineCheckpointContract {
-    protected abstract Engine engine();
+public abstract class ExactEngineCheckpointContract extends VariantContract {
+    protected ExactEngineCheckpointContract() {
+        super(Contract.CHECKPOINTS);
+    }
 
-    protected RunOptions options(double until) {
+    /** Options to {@code until}: the variant's engine adds its own threads and settings. */
+    private static RunOptions options(double until) {
         return RunOptions.until(until);
     }
 
-    /** Whether the engine runs this scene at all (an engine that refuses some effects says which it skips). */
-    protected boolean runs(Scene scene) {
-        return true;
+    /** Whether the variant runs this scene at all (an engine that refuses some effects skips them). */
+    private boolean runs(Scene scene) {
+        return variant().scenes().test(scene);
     }
 
     /** A saved checkpoint. */
@@ -80,9 +82,10 @@ public abstract class ExactEngineCheckpointContract {
                 RandomScenes.dense(300, 0.6, seed % 2 == 0, seed, 1.0), RandomScenes.lightAmongHeavy(seed));
     }
 
-    @ParameterizedTest(name = "seed {0}")
-    @MethodSource("seeds")
-    void resumedFromAnyPeriodicCheckpointEndsInTheSameBits(long seed) {
+    @ParameterizedTest(name = "{0}, seed {1}")
+    @MethodSource("seedCases")
+    void resumedFromAnyPeriodicCheckpointEndsInTheSameBits(EngineVariant variant, long seed) {
+        use(variant);
         for (Scene scene : scenes(seed).stream().filter(this::runs).toList()) {
             double until = scene.until();
             List<double[]> straightSamples = new ArrayList<>();
@@ -100,7 +103,7 @@ public abstract class ExactEngineCheckpointContract {
                 RunResult resumed = engine().resume(scene, sampled(options(until), until / 7, samples), from.state());
                 assertSame(scene.name() + " resumed from t = " + from.time(), resumed, straight);
                 List<double[]> after = straightSamples.subList(straightSamples.size() - samples.size(), straightSamples.size());
-                if (engine().samples() && from.time() < 0.8 * until) {
+                if (engine().spec().can(carom.core.engine.Capability.SAMPLES) && from.time() < 0.8 * until) {
                     assertThat(samples).as(scene.name() + " samples after t = " + from.time()).isNotEmpty();
                 }
                 for (int k = 0; k < samples.size(); k++) {
@@ -110,9 +113,10 @@ public abstract class ExactEngineCheckpointContract {
         }
     }
 
-    @ParameterizedTest(name = "seed {0}")
-    @MethodSource("seeds")
-    void resumedPastTheEndOfAShorterRunEqualsOneLongerRun(long seed) {
+    @ParameterizedTest(name = "{0}, seed {1}")
+    @MethodSource("seedCases")
+    void resumedPastTheEndOfAShorterRunEqualsOneLongerRun(EngineVariant variant, long seed) {
+        use(variant);
         for (Scene scene : scenes(seed).stream().filter(this::runs).toList()) {
             double t1 = 0.4 * scene.until();
             double t2 = scene.until();
@@ -127,8 +131,10 @@ public abstract class ExactEngineCheckpointContract {
         }
     }
 
-    @Test
-    void aSettlingPileResumesWithItsSleepersToTheSameBits() {
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("variants")
+    void aSettlingPileResumesWithItsSleepersToTheSameBits(EngineVariant variant) {
+        use(variant);
         // Discs fall asleep from t ~ 1; checkpoints before, among and after the sleeps.
         Scene scene = ExactEngineRestingContactContract.smallPile();
         org.junit.jupiter.api.Assumptions.assumeTrue(runs(scene), "the engine does not run a settling pile");
@@ -151,8 +157,10 @@ public abstract class ExactEngineCheckpointContract {
                 straight);
     }
 
-    @Test
-    void aStoppedRunSavesAndResumesToTheSameBits() {
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("variants")
+    void aStoppedRunSavesAndResumesToTheSameBits(EngineVariant variant) {
+        use(variant);
         Scene scene = RandomScenes.dense(1000, 0.6, true, 3, 2.0);
         RunResult straight = engine().run(scene, options(scene.until()));
         Kept kept = new Kept(Double.POSITIVE_INFINITY, 1);
@@ -164,8 +172,10 @@ public abstract class ExactEngineCheckpointContract {
         assertSame("resumed after a stop", resumed, straight);
     }
 
-    @Test
-    void aDamagedStateIsRefused() {
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("variants")
+    void aDamagedStateIsRefused(EngineVariant variant) {
+        use(variant);
         Scene scene = RandomScenes.small(1);
         Kept kept = new Kept(Double.POSITIVE_INFINITY, Long.MAX_VALUE);
         engine().run(scene, options(scene.until()).withCheckpoints(kept));
@@ -178,7 +188,7 @@ public abstract class ExactEngineCheckpointContract {
 
     /** The options with samples every {@code every} collected into {@code into}, if the engine samples. */
     private RunOptions sampled(RunOptions options, double every, List<double[]> into) {
-        return engine().samples() ? options.withSamples(every, collect(into)) : options;
+        return engine().spec().can(carom.core.engine.Capability.SAMPLES) ? options.withSamples(every, collect(into)) : options;
     }
 
     private static carom.core.engine.Sampler collect(List<double[]> into) {
@@ -197,12 +207,16 @@ public abstract class ExactEngineCheckpointContract {
         return all;
     }
 
-    protected static void assertSame(String what, RunResult actual, RunResult expected) {
+    public static void assertSame(String what, RunResult actual, RunResult expected) {
         assertThat(actual.pairCollisions()).as(what + ": pair collisions").isEqualTo(expected.pairCollisions());
         assertThat(actual.wallCollisions()).as(what + ": wall collisions").isEqualTo(expected.wallCollisions());
         assertThat(actual.events()).as(what + ": events").isEqualTo(expected.events());
         assertThat(flatten(actual.until(), actual.finalState())).as(what + ": final state")
                 .isEqualTo(flatten(expected.until(), expected.finalState()));
         assertThat(actual.kineticEnergyStart()).as(what + ": initial energy").isEqualTo(expected.kineticEnergyStart());
+    }
+
+    Stream<Arguments> seedCases() {
+        return EngineVariants.crossed(variants(), seeds().toList());
     }
 }

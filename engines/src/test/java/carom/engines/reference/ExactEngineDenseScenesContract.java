@@ -2,30 +2,37 @@ package carom.engines.reference;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
+import java.util.List;
+import java.util.stream.Stream;
 import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 
 /**
  * Dense seeded scenes (200-2025 discs, packing fraction 0.3-0.7, walls and periodic, ~50 collisions per
  * disc): energy, momentum, no overlap, inside the box, no NaN ({@link Invariants}), and the engine's
- * own bookkeeping ({@link #checkCounters}).
+ * own bookkeeping ({@link EngineVariant#denseCounters}).
  */
-public abstract class ExactEngineDenseScenesContract {
-    protected abstract Engine engine();
+public abstract class ExactEngineDenseScenesContract extends VariantContract {
+    protected ExactEngineDenseScenesContract() {
+        super(Contract.DENSE_SCENES);
+    }
 
-    /** What the engine's counters must say after a dense run. */
-    protected abstract void checkCounters(RunResult result);
 
-    @ParameterizedTest(name = "N {0}, phi {1}, periodic {2}, seed {3}")
-    @MethodSource("carom.engines.reference.RandomScenes#denseCases")
-    void conservesEnergyAndMomentumAndNeverOverlaps(int n, double phi, boolean periodic, long seed, double until) {
+    @ParameterizedTest(name = "{0}, N {1}, phi {2}, periodic {3}, seed {4}")
+    @MethodSource("denseCases")
+    void conservesEnergyAndMomentumAndNeverOverlaps(EngineVariant variant, int n, double phi, boolean periodic, long seed, double until) {
+        use(variant);
         Scene scene = RandomScenes.dense(n, phi, periodic, seed, until);
         RunResult r = Invariants.check(scene, engine().run(scene, RunOptions.until(until)));
         assertThat(2.0 * r.pairCollisions() / n).as("pair collisions per disc").isGreaterThan(35);
-        checkCounters(r);
+        variant().denseCounters().accept(r);
+    }
+
+    Stream<Arguments> denseCases() {
+        return EngineVariants.crossed(variants(), RandomScenes.denseCases().toList());
     }
 }

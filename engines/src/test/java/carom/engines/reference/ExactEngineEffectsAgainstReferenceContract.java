@@ -3,17 +3,18 @@ package carom.engines.reference;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
-import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.engine.SimulationStuckException;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
+import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.LongStream;
 import java.util.stream.Stream;
 import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 
 /**
@@ -27,19 +28,22 @@ import org.junit.jupiter.params.provider.MethodSource;
  * ({@link carom.core.physics.RestRule}). Should either stop with {@link SimulationStuckException}
  * (endlessly many collisions at one instant), both must, naming the same disc.
  */
-public abstract class ExactEngineEffectsAgainstReferenceContract {
+public abstract class ExactEngineEffectsAgainstReferenceContract extends VariantContract {
     private static final double SAME = 1e-8;
     private static final Pattern DISC = Pattern.compile("disc (\\d+)");
 
-    protected abstract Engine engine();
+    protected ExactEngineEffectsAgainstReferenceContract() {
+        super(Contract.EFFECTS_AGAINST_REFERENCE);
+    }
 
     static Stream<Long> seeds() {
         return LongStream.range(1, Long.getLong("effectsSeeds", 121)).boxed();
     }
 
-    @ParameterizedTest(name = "seed {0}")
-    @MethodSource("seeds")
-    void finalStateAndCollisionCountsMatchBruteForce(long seed) {
+    @ParameterizedTest(name = "{0}, seed {1}")
+    @MethodSource("seedCases")
+    void finalStateAndCollisionCountsMatchBruteForce(EngineVariant variant, long seed) {
+        use(variant);
         Scene scene = RandomScenes.effects(seed);
         RunResult actual;
         BruteForceReference.Result reference;
@@ -82,5 +86,9 @@ public abstract class ExactEngineEffectsAgainstReferenceContract {
     private int firstDisc(String message) {
         Matcher m = DISC.matcher(message);
         return m.find() ? Integer.parseInt(m.group(1)) : -1;
+    }
+
+    Stream<Arguments> seedCases() {
+        return EngineVariants.crossed(variants(), seeds().toList());
     }
 }

@@ -1,11 +1,10 @@
 package carom.engines.reference;
 
 import static org.assertj.core.api.Assertions.assertThat;
-import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.assertThatCode;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.within;
 
-import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.engine.SimulationStuckException;
@@ -22,10 +21,11 @@ import java.util.SplittableRandom;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import org.junit.jupiter.api.Test;
+import java.util.stream.Stream;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.params.ParameterizedTest;
-import org.junit.jupiter.params.provider.ValueSource;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
 
 /**
  * An exact engine under effects (SPEC "Physics": gravity, restitution, wallRestitution, the TC model,
@@ -34,10 +34,12 @@ import org.junit.jupiter.params.provider.ValueSource;
  * under the energy audit, random gravity scenes (the audit never fires; elastic ones conserve kinetic
  * plus potential energy), a cooling gas, and a ball that comes to rest without sinking into the floor.
  */
-public abstract class ExactEngineEffectsContract {
+public abstract class ExactEngineEffectsContract extends VariantContract {
     private static final double G = 9.81;
 
-    protected abstract Engine engine();
+    protected ExactEngineEffectsContract() {
+        super(Contract.EFFECTS);
+    }
 
     private RunResult run(Scene scene, double until) {
         return engine().run(scene, RunOptions.until(until));
@@ -93,8 +95,10 @@ public abstract class ExactEngineEffectsContract {
         return t;
     }
 
-    @Test
-    void bouncingBallIntervalsShrinkByTheWallRestitutionUntilTheTcModelHoldsThemAboveTc() {
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("variants")
+    void bouncingBallIntervalsShrinkByTheWallRestitutionUntilTheTcModelHoldsThemAboveTc(EngineVariant variant) {
+        use(variant);
         double h = 2;
         double e = 0.8;
         double tc = 1e-3;
@@ -135,9 +139,11 @@ public abstract class ExactEngineEffectsContract {
 
     private static final Pattern AT_TIME = Pattern.compile("at t = ([-0-9.eE+]+)");
 
-    @Test
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("variants")
     @Timeout(value = 20, unit = TimeUnit.SECONDS)
-    void withoutTheTcModelTheBouncingBallFallsAsleepNearTheZenoTime() {
+    void withoutTheTcModelTheBouncingBallFallsAsleepNearTheZenoTime(EngineVariant variant) {
+        use(variant);
         double h = 2;
         double e = 0.8;
         Scene scene = bouncingBall(h, e, 0);
@@ -154,8 +160,10 @@ public abstract class ExactEngineEffectsContract {
         assertThat(run(scene, zeno + 1e-4).wallCollisions()).isEqualTo(r.wallCollisions());
     }
 
-    @Test
-    void aBallBouncingToRestNeverSinksBelowTheFloorAndReachesUntil() {
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("variants")
+    void aBallBouncingToRestNeverSinksBelowTheFloorAndReachesUntil(EngineVariant variant) {
+        use(variant);
         Scene scene = bouncingBall(2, 0.8, 1e-3);
         // Dissipative bounces end near t0 + 2 v0 e / (g (1 - e)) = 5.74; sample the TC regime after that.
         SplittableRandom random = new SplittableRandom(7);
@@ -186,8 +194,10 @@ public abstract class ExactEngineEffectsContract {
         return sum;
     }
 
-    @Test
-    void aSettlingStackEndsNearlyAtRestWithoutOverlapsInsideTheBox() {
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("variants")
+    void aSettlingStackEndsNearlyAtRestWithoutOverlapsInsideTheBox(EngineVariant variant) {
+        use(variant);
         // 35 discs of radius 0.25 in a box 3 wide: 5 columns 0.6 apart, 7 rows from y = 3.5 up, jittered,
         // random velocities.
         SplittableRandom random = new SplittableRandom(11);
@@ -219,9 +229,10 @@ public abstract class ExactEngineEffectsContract {
      * kinetic plus potential energy ever grows) to several horizons: no overlap beyond 1e-9 relative,
      * nothing leaves the box.
      */
-    @ParameterizedTest(name = "until {0}")
-    @ValueSource(doubles = {0.7, 1.5, 3})
-    void galtonBoardKeepsBallsOutOfPegsAndEachOtherAndNeverGainsEnergy(double until) {
+    @ParameterizedTest(name = "{0}, until {1}")
+    @MethodSource("galtonBoardKeepsBallsOutOfPegsAndEachOtherAndNeverGainsEnergyCases")
+    void galtonBoardKeepsBallsOutOfPegsAndEachOtherAndNeverGainsEnergy(EngineVariant variant, double until) {
+        use(variant);
         Scene scene = galtonBoard(30, 5);
         RunResult r = audited(scene, until);
         Invariants.noOverlapsAndInside(scene, r.finalState());
@@ -259,9 +270,10 @@ public abstract class ExactEngineEffectsContract {
     }
 
     /** Random gravity scenes with restitution and the TC model, run past the judged horizon: the audit never fires. */
-    @ParameterizedTest(name = "seed {0}")
-    @org.junit.jupiter.params.provider.MethodSource("auditSeeds")
-    void energyAuditNeverFiresOnRandomDissipativeGravityScenes(long seed) {
+    @ParameterizedTest(name = "{0}, seed {1}")
+    @MethodSource("auditSeedCases")
+    void energyAuditNeverFiresOnRandomDissipativeGravityScenes(EngineVariant variant, long seed) {
+        use(variant);
         Scene scene = RandomScenes.effects(seed);
         if (scene.box().periodic()) {
             return; // the audit refuses periodic boxes with gravity (energyAuditRefusesGravityInAPeriodicBox)
@@ -276,9 +288,10 @@ public abstract class ExactEngineEffectsContract {
     }
 
     /** The same scenes made elastic (walls boxes): kinetic plus potential energy is conserved to 1e-9. */
-    @ParameterizedTest(name = "seed {0}")
-    @org.junit.jupiter.params.provider.MethodSource("auditSeeds")
-    void elasticGravityScenesConserveKineticPlusPotentialEnergy(long seed) {
+    @ParameterizedTest(name = "{0}, seed {1}")
+    @MethodSource("auditSeedCases")
+    void elasticGravityScenesConserveKineticPlusPotentialEnergy(EngineVariant variant, long seed) {
+        use(variant);
         Scene random = RandomScenes.effects(seed);
         if (random.box().periodic()) {
             return; // positions wrap, so potential energy is not defined across the box
@@ -300,9 +313,11 @@ public abstract class ExactEngineEffectsContract {
         return base.withEffects(Effects.NONE.withRestitution(restitution, restitution).withTc(tc));
     }
 
-    @Test
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("variants")
     @Timeout(value = 60, unit = TimeUnit.SECONDS)
-    void aCoolingGasLosesKineticEnergyMonotonicallyWithoutStalling() {
+    void aCoolingGasLosesKineticEnergyMonotonicallyWithoutStalling(EngineVariant variant) {
+        use(variant);
         Scene scene = gas(0.9, 1e-4);
         List<Double> energies = new ArrayList<>();
         for (double until : new double[] {1.0, 2.0, 4.0}) {
@@ -318,8 +333,10 @@ public abstract class ExactEngineEffectsContract {
         assertThat(energies.get(2)).isLessThan(energies.get(1));
     }
 
-    @Test
-    void theSameGasWithRestitutionOneConservesEnergy() {
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("variants")
+    void theSameGasWithRestitutionOneConservesEnergy(EngineVariant variant) {
+        use(variant);
         Scene scene = gas(1, 1e-4);
         Invariants.check(scene, run(scene, 4.0));
     }
@@ -334,8 +351,10 @@ public abstract class ExactEngineEffectsContract {
      * predicted (t <= NaN is false), every disc is advanced to NaN and the run loop ends at once
      * (epoch + NaN < until is false), returning an all-NaN final state with zero collisions and no error.
      */
-    @Test
-    void gravityInABoxOfAtMostTwoGridCellsPerAxisStaysFinite() {
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("variants")
+    void gravityInABoxOfAtMostTwoGridCellsPerAxisStaysFinite(EngineVariant variant) {
+        use(variant);
         // Box 3 x 3, radius 0.5: cells of 2 diameters give at most 2 cells per axis.
         Scene scene = SceneBuilder.create("small-box").box(3, 3, BoundaryKind.WALLS)
                 .species(Species.mobile("ball", 0.5, 1))
@@ -349,8 +368,10 @@ public abstract class ExactEngineEffectsContract {
         assertThat(r.finalState().y[0]).isCloseTo(reference.state().y[0], within(1e-9));
     }
 
-    @Test
-    void gravityFreeScenesInTinyBoxesAreUnaffectedByTheInfiniteSlack() {
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("variants")
+    void gravityFreeScenesInTinyBoxesAreUnaffectedByTheInfiniteSlack(EngineVariant variant) {
+        use(variant);
         // The same tiny box without gravity: timeToTravel takes its a == 0 branch (Inf / v = Inf), fine.
         Scene scene = SceneBuilder.create("small-box").box(3, 3, BoundaryKind.WALLS)
                 .species(Species.mobile("ball", 0.5, 1))
@@ -366,15 +387,17 @@ public abstract class ExactEngineEffectsContract {
      * keep it out of the peg or stop with SimulationStuckException (resting contact is not modelled),
      * never let it sink in silently.
      */
-    @ParameterizedTest(name = "offset {0}")
-    @ValueSource(doubles = {0.05, 0.1, 0.13, 0.2, 0.27, 0.31})
-    void aBallStoppedDeadOnAPegNeverSinksIntoItSilently(double offset) {
+    @ParameterizedTest(name = "{0}, offset {1}")
+    @MethodSource("pegOffsetCases")
+    void aBallStoppedDeadOnAPegNeverSinksIntoItSilently(EngineVariant variant, double offset) {
+        use(variant);
         checkDeadStopOnPeg(offset, 0);
     }
 
-    @ParameterizedTest(name = "offset {0}")
-    @ValueSource(doubles = {0.05, 0.1, 0.13, 0.2, 0.27, 0.31})
-    void aBallStoppedDeadOnAPegUnderTheTcModelNeverSinksIntoItSilently(double offset) {
+    @ParameterizedTest(name = "{0}, offset {1}")
+    @MethodSource("pegOffsetCases")
+    void aBallStoppedDeadOnAPegUnderTheTcModelNeverSinksIntoItSilently(EngineVariant variant, double offset) {
+        use(variant);
         checkDeadStopOnPeg(offset, 1e-3);
     }
 
@@ -386,8 +409,10 @@ public abstract class ExactEngineEffectsContract {
      * t = 0.7427". (A lone falling disc does not trip it: the audit runs only after collisions.)
      */
     /** With gravity in a periodic box potential energy has no bound: the audit refuses, clearly. */
-    @Test
-    void energyAuditRefusesGravityInAPeriodicBox() {
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("variants")
+    void energyAuditRefusesGravityInAPeriodicBox(EngineVariant variant) {
+        use(variant);
         Scene random = RandomScenes.effects(5);
         assertThat(random.box().periodic()).isTrue();
         assertThatThrownBy(() -> audited(random, 2.5)).isInstanceOf(carom.core.BadInputException.class)
@@ -408,5 +433,17 @@ public abstract class ExactEngineEffectsContract {
                 assertThat(e.getMessage()).contains("disc 1");
             }
         }
+    }
+
+    Stream<Arguments> galtonBoardKeepsBallsOutOfPegsAndEachOtherAndNeverGainsEnergyCases() {
+        return EngineVariants.crossed(variants(), List.of(0.7, 1.5, 3d));
+    }
+
+    Stream<Arguments> auditSeedCases() {
+        return EngineVariants.crossed(variants(), auditSeeds().toList());
+    }
+
+    Stream<Arguments> pegOffsetCases() {
+        return EngineVariants.crossed(variants(), List.of(0.05, 0.1, 0.13, 0.2, 0.27, 0.31));
     }
 }

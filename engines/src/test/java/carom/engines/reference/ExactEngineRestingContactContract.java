@@ -5,7 +5,6 @@ import static org.assertj.core.api.Assertions.within;
 
 import carom.core.engine.Counter;
 import carom.core.engine.Energy;
-import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.observe.Observables;
@@ -16,7 +15,11 @@ import carom.core.scene.Scene;
 import carom.core.scene.SceneBuilder;
 import carom.core.scene.Species;
 import carom.core.state.Discs;
-import org.junit.jupiter.api.Test;
+import java.util.List;
+import java.util.stream.Stream;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
 
 /**
  * Resting contact under gravity ({@link RestRule}), which every exact engine must model the same way:
@@ -24,10 +27,12 @@ import org.junit.jupiter.api.Test;
  * run goes on to {@code until}; a disc that is awake hitting it wakes it; the kinetic energy taken out
  * by falling asleep is reported (the energy put to rest), so that the energy balances.
  */
-public abstract class ExactEngineRestingContactContract {
+public abstract class ExactEngineRestingContactContract extends VariantContract {
     private static final double G = 9.81;
 
-    protected abstract Engine engine();
+    protected ExactEngineRestingContactContract() {
+        super(Contract.RESTING_CONTACT);
+    }
 
     private RunResult run(Scene scene, double until) {
         return engine().run(scene, RunOptions.until(until));
@@ -41,8 +46,10 @@ public abstract class ExactEngineRestingContactContract {
                 .disc(0, 2, 0.5 + h, 0, 0).until(1).build();
     }
 
-    @Test
-    void withTheTcModelADroppedBallFallsAsleepOnTheFloorAtTheBounceTheRuleNamesAndTheRunReachesUntil() {
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("variants")
+    void withTheTcModelADroppedBallFallsAsleepOnTheFloorAtTheBounceTheRuleNamesAndTheRunReachesUntil(EngineVariant variant) {
+        use(variant);
         double h = 2;
         double e = 0.8;
         double tc = 1e-3;
@@ -78,8 +85,10 @@ public abstract class ExactEngineRestingContactContract {
         assertThat(energy.initial()).isCloseTo(G * (0.5 + h), within(1e-12));
     }
 
-    @Test
-    void withoutTheTcModelADroppedBallFallsAsleepNearTheZenoTimeWithEnergyBelowResolution() {
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("variants")
+    void withoutTheTcModelADroppedBallFallsAsleepNearTheZenoTimeWithEnergyBelowResolution(EngineVariant variant) {
+        use(variant);
         double h = 2;
         double e = 0.8;
         Scene scene = droppedBall(h, e, 0);
@@ -101,8 +110,10 @@ public abstract class ExactEngineRestingContactContract {
         assertThat(Energy.of(scene, r).end()).isCloseTo(G * 0.5, within(1e-12));
     }
 
-    @Test
-    void aSleepingBallHitByAFallingOneWakesPassesTheMomentumOnAndSleepsAgain() {
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("variants")
+    void aSleepingBallHitByAFallingOneWakesPassesTheMomentumOnAndSleepsAgain(EngineVariant variant) {
+        use(variant);
         // Ball 0 settles on the floor (asleep by t = 0.35); ball 1, of the same mass, falls onto it
         // head-on from 3 above contact. Pairs are elastic and the TC model makes the floor bounce at
         // the same instant elastic too: 1 stops, 0 goes down, bounces, gives 1 its speed back and
@@ -150,8 +161,10 @@ public abstract class ExactEngineRestingContactContract {
                 .until(5).build();
     }
 
-    @Test
-    void aSmallPileSettlesCompletelyAndTheEnergyBalances() {
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("variants")
+    void aSmallPileSettlesCompletelyAndTheEnergyBalances(EngineVariant variant) {
+        use(variant);
         Scene scene = smallPile();
         RunResult r = run(scene, 5);
         Discs d = r.finalState();

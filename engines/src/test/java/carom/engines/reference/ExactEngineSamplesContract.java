@@ -3,7 +3,6 @@ package carom.engines.reference;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
-import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
@@ -12,30 +11,23 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.stream.LongStream;
 import java.util.stream.Stream;
-import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 
 /**
- * What every engine that samples ({@link Engine#samples()}) promises of its samples: they come at
+ * What every engine that samples ({@link carom.core.engine.Capability#SAMPLES}) promises of its samples: they come at
  * k·every in order, each is the exact state at its time (the brute-force judge's, to rounding), the
  * one at {@code until} is the final state to the bit, and asking for samples does not change the run:
  * the same collision counts and the same final state, bit for bit unless the engine says otherwise
- * ({@link #samplingTolerance()}).
+ * ({@link EngineVariant#samplingTolerance}).
  */
-public abstract class ExactEngineSamplesContract {
+public abstract class ExactEngineSamplesContract extends VariantContract {
     /** Short runs (see ExactEngineAgainstReferenceContract.SAME_AFTER_CHAOS for why short). */
     private static final double SAME = 1e-9;
 
-    protected abstract Engine engine();
-
-    /**
-     * How far samples may move the final state: 0 (not a bit) for engines whose event order does not
-     * depend on where they pause; an engine that ends a parallel window at each sample time may be
-     * moved by rounding, as a change of its thread count moves it.
-     */
-    protected double samplingTolerance() {
-        return 0;
+    protected ExactEngineSamplesContract() {
+        super(Contract.SAMPLES);
     }
 
     /** One sample as the sampler saw it (the engine reuses its buffer, so a copy). */
@@ -57,9 +49,10 @@ public abstract class ExactEngineSamplesContract {
         return LongStream.range(1, 21).boxed();
     }
 
-    @ParameterizedTest(name = "seed {0}")
-    @MethodSource("seeds")
-    void samplesAreTheJudgesStateAtTheirTimes(long seed) {
+    @ParameterizedTest(name = "{0}, seed {1}")
+    @MethodSource("seedCases")
+    void samplesAreTheJudgesStateAtTheirTimes(EngineVariant variant, long seed) {
+        use(variant);
         for (Scene scene : List.of(RandomScenes.small(seed).withUntil(1.0), RandomScenes.effects(seed).withUntil(1.0))) {
             List<RunResult> result = new ArrayList<>();
             List<Taken> taken = sampled(scene, 0.25, result);
@@ -71,9 +64,10 @@ public abstract class ExactEngineSamplesContract {
         }
     }
 
-    @ParameterizedTest(name = "seed {0}")
-    @MethodSource("seeds")
-    void samplingChangesNothingOfTheRun(long seed) {
+    @ParameterizedTest(name = "{0}, seed {1}")
+    @MethodSource("seedCases")
+    void samplingChangesNothingOfTheRun(EngineVariant variant, long seed) {
+        use(variant);
         for (Scene scene : List.of(RandomScenes.small(seed), RandomScenes.effects(seed),
                 RandomScenes.dense(400, 0.6, seed % 2 == 0, seed, 0.5))) {
             RunResult plain = run(scene, RunOptions.until(scene.until()));
@@ -83,16 +77,18 @@ public abstract class ExactEngineSamplesContract {
             assertThat(taken).hasSize(10);
             assertThat(withSamples.pairCollisions()).as("pair collisions").isEqualTo(plain.pairCollisions());
             assertThat(withSamples.wallCollisions()).as("wall collisions").isEqualTo(plain.wallCollisions());
-            if (samplingTolerance() == 0) {
+            if (variant().samplingTolerance() == 0) {
                 assertSameBits(withSamples.finalState(), plain.finalState());
             } else {
-                Invariants.assertSameState(scene.name(), withSamples.finalState(), plain.finalState(), samplingTolerance());
+                Invariants.assertSameState(scene.name(), withSamples.finalState(), plain.finalState(), variant().samplingTolerance());
             }
         }
     }
 
-    @Test
-    void theSampleAtUntilIsTheFinalStateToTheBit() {
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("variants")
+    void theSampleAtUntilIsTheFinalStateToTheBit(EngineVariant variant) {
+        use(variant);
         Scene scene = RandomScenes.dense(400, 0.5, true, 3, 2.0);
         List<RunResult> result = new ArrayList<>();
         List<Taken> taken = sampled(scene, 0.5, result);
@@ -101,8 +97,10 @@ public abstract class ExactEngineSamplesContract {
         assertSameBits(last.state(), result.get(0).finalState());
     }
 
-    @Test
-    void theVirialSumGrowsAndEndsAtTheRunsPressure() {
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("variants")
+    void theVirialSumGrowsAndEndsAtTheRunsPressure(EngineVariant variant) {
+        use(variant);
         Scene scene = RandomScenes.dense(400, 0.5, true, 5, 2.0);
         List<RunResult> result = new ArrayList<>();
         List<Taken> taken = sampled(scene, 0.25, result);
@@ -121,5 +119,9 @@ public abstract class ExactEngineSamplesContract {
         assertThat(actual.y).isEqualTo(expected.y);
         assertThat(actual.vx).isEqualTo(expected.vx);
         assertThat(actual.vy).isEqualTo(expected.vy);
+    }
+
+    Stream<Arguments> seedCases() {
+        return EngineVariants.crossed(variants(), seeds().toList());
     }
 }

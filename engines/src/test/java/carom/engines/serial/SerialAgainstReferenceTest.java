@@ -2,7 +2,6 @@ package carom.engines.serial;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import carom.core.engine.Engine;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
@@ -12,18 +11,14 @@ import carom.engines.reference.RandomScenes;
 import org.junit.jupiter.api.Test;
 
 /**
- * The brute-force comparisons every exact engine passes, on {@code serial}, plus what is its own: early
- * step ends when light discs are kicked beyond the step's budget, and cellFactor on a dense scene.
+ * What is serial's own beside the brute-force comparisons every exact engine passes
+ * ({@link ExactEngineAgainstReferenceContract}): early step ends when light discs are kicked beyond the
+ * step's budget, and cellFactor on a dense scene.
  */
-class SerialAgainstReferenceTest extends ExactEngineAgainstReferenceContract {
-    @Override
-    protected Engine engine() {
-        return new SerialEngine();
-    }
-
-    @Override
-    protected String[] cellFactors() {
-        return new String[] {"2", "1.1", "3"};
+class SerialAgainstReferenceTest {
+    private static RunResult run(Scene scene, String cellFactor) {
+        return Invariants.check(scene, new SerialEngine().run(scene,
+                RunOptions.until(scene.until()).withTunable("cellFactor", cellFactor)));
     }
 
     @Test
@@ -50,7 +45,7 @@ class SerialAgainstReferenceTest extends ExactEngineAgainstReferenceContract {
             for (String factor : new String[] {"1.1", "3"}) {
                 RunResult other = run(scene, factor);
                 assertThat(other.pairCollisions()).isEqualTo(base.pairCollisions());
-                Invariants.assertSameState(other.finalState(), base.finalState(), SAME);
+                Invariants.assertSameState(other.finalState(), base.finalState(), ExactEngineAgainstReferenceContract.SAME);
             }
         }
     }

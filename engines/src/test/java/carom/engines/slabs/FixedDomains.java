@@ -1,11 +1,10 @@
 package carom.engines.slabs;
 
-import carom.core.engine.Tunable;
 import carom.core.engine.Engine;
+import carom.core.engine.EngineSpec;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
-import java.util.List;
 
 /**
  * The slabs engine with a fixed domain count whatever {@code --threads} the caller passes: the shared
@@ -47,23 +46,8 @@ final class FixedDomains implements Engine {
     }
 
     @Override
-    public String name() {
-        return "slabs";
-    }
-
-    @Override
-    public boolean exact() {
-        return true;
-    }
-
-    @Override
-    public String description() {
-        return "slabs at " + domains + " domains" + (tunables.length > 0 ? " with " + String.join(" ", tunables) : "");
-    }
-
-    @Override
-    public List<Tunable<?>> tunables() {
-        return new SlabsEngine().tunables();
+    public EngineSpec spec() {
+        return SlabsEngine.SPEC;
     }
 
     @Override

@@ -45,7 +45,7 @@ class SteppedEngineTest {
 
     @Test
     void isListedAsRelaxed() {
-        assertThat(EngineCatalog.byName("stepped").exact()).isFalse();
+        assertThat(EngineCatalog.byName("stepped").spec().exact()).isFalse();
     }
 
     @ParameterizedTest(name = "dt {0}")
@@ -207,7 +207,7 @@ class SteppedEngineTest {
         assertInsideWalls(scene, r.finalState());
         assertThat(r.wallCollisions()).isPositive();
         if (dt == 0) {
-            assertThat(r.counters().get(SteppedEngine.ESCAPES)).isZero();
+            assertThat(r.counters().get(SteppedEngine.ESCAPES.key)).isZero();
         }
     }
 
@@ -216,7 +216,7 @@ class SteppedEngineTest {
         // At speed 100 and dt 0.1 the disc moves 10 in a step: from x = 3 its centre lands at -7.
         Scene scene = box20x10().disc(0, 3, 5, -100, 0).until(0.1).build();
         RunResult r = run(scene, 0.1);
-        assertThat(r.counters().get(SteppedEngine.ESCAPES)).isEqualTo(1);
+        assertThat(r.counters().get(SteppedEngine.ESCAPES.key)).isEqualTo(1);
         assertThat(r.finalState().x[0]).isEqualTo(0.5);
         assertThat(r.finalState().vx[0]).isEqualTo(100);
         assertThat(SteppedEngine.deepestOverlap(r)).isCloseTo(7.5 / 0.5, within(1e-6));

@@ -32,7 +32,7 @@ record EngineSetup(Engine engine, RunOptions options) {
     static EngineSetup of(String engineName, Scene scene, int threads, String cellsPerActor, String tunables) {
         Engine engine = EngineCatalog.byName(engineName);
         RunOptions options = Tunables.apply(engine, RunOptions.until(scene.until()).withThreads(threads), tunables);
-        if (!cellsPerActor.isBlank() && carom.core.engine.Tunables.declares(engine.tunables(), ActorRun.CELLS_PER_ACTOR.name())) {
+        if (!cellsPerActor.isBlank() && carom.core.engine.Tunables.declares(engine.spec().tunables(), ActorRun.CELLS_PER_ACTOR.name())) {
             if (options.tunables().containsKey("cellsPerActor")) {
                 throw new BadInputException("cellsPerActor given twice: as the parameter and in tunables");
             }

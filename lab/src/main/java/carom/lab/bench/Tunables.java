@@ -11,7 +11,7 @@ final class Tunables {
 
     /**
      * Adds the tunables of {@code spec} to {@code options}. A key the engine does not list in
-     * {@link Engine#tunables()} is rejected, as on the command line: engines ignore unknown keys, so a
+     * {@link carom.core.engine.EngineSpec#tunables()} is rejected, as on the command line: engines ignore unknown keys, so a
      * typo would otherwise measure the default silently.
      */
     static RunOptions apply(Engine engine, RunOptions options, String spec) {
@@ -26,7 +26,7 @@ final class Tunables {
             }
             result = result.withTunable(pair.substring(0, eq).trim(), pair.substring(eq + 1).trim());
         }
-        carom.core.engine.Tunables.check(engine.name(), engine.tunables(), result.tunables());
+        carom.core.engine.Tunables.check(engine.name(), engine.spec().tunables(), result.tunables());
         return result;
     }
 }

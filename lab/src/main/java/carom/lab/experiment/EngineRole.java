@@ -1,14 +1,21 @@
 package carom.lab.experiment;
 
+import carom.core.engine.Capability;
+import carom.core.engine.Engine;
+import carom.core.engine.EngineSpec;
+import carom.engines.EngineCatalog;
+import carom.engines.actors.ActorCounters;
+import java.util.List;
 import java.util.Optional;
 
 /**
  * Which of the thesis's three algorithms each of our engines stands for, so that the report sets the
- * right published column beside it. {@code fast} is our own exact serial engine, compared with the
- * thesis's single-thread model as {@code serial} is. Engines with no counterpart (the exact parallel
- * {@code slabs}, the fixed-step {@code stepped}) are "beyond the thesis": the report gives them a table
- * of their own beside the thesis's fastest model; a new concurrency model that has a counterpart gets
- * a line in {@link #of}.
+ * right published column beside it, read off the engine's spec: an exact engine on one thread stands
+ * for the thesis's single-thread model ({@code fast}, our own, is compared with it as {@code serial}
+ * is); a relaxed engine on {@code --threads} that counts messages for its actor model, one that does
+ * not for its non-actor (fork/join) model. Every other engine (the exact parallel {@code slabs}, the
+ * fixed-step {@code stepped}) is "beyond the thesis": the report gives it a table of its own beside the
+ * thesis's fastest model.
  */
 enum EngineRole {
     SINGLE_THREAD("Single", "4.1", false),
@@ -28,26 +35,28 @@ enum EngineRole {
         this.parallel = parallel;
     }
 
-    /** The role of engine {@code name}, empty for an engine the thesis has no counterpart of. */
+    /** The role of engine {@code name}, empty for an engine the thesis has no counterpart of (or none of that name). */
     static Optional<EngineRole> of(String engine) {
-        return Optional.ofNullable(switch (engine) {
-            case "serial", "fast" -> SINGLE_THREAD;
-            case "stripes" -> NON_ACTOR;
-            case "akka", "vthreads" -> ACTOR;
-            default -> null;
-        });
+        return EngineCatalog.all().stream().filter(e -> e.name().equals(engine)).findFirst().flatMap(e -> of(e.spec()));
     }
 
-    /** Engines beyond the thesis that the experiment runs by default: the exact parallel one. */
-    static final java.util.List<String> BEYOND_BY_DEFAULT = java.util.List.of("slabs");
+    private static Optional<EngineRole> of(EngineSpec spec) {
+        boolean threads = spec.can(Capability.THREADS);
+        if (spec.exact()) {
+            return threads ? Optional.empty() : Optional.of(SINGLE_THREAD);
+        }
+        if (!threads) {
+            return Optional.empty();
+        }
+        return Optional.of(spec.counters().contains(ActorCounters.ACTORS) ? ACTOR : NON_ACTOR);
+    }
 
     /**
      * Whether the engine runs on several threads: as its counterpart does, or, beyond the thesis, when
-     * the engine takes more than one thread.
+     * its spec says it runs on {@code --threads}.
      */
     static boolean isParallel(String engine) {
-        return of(engine).map(r -> r.parallel)
-                .orElseGet(() -> carom.engines.EngineCatalog.byName(engine).threadsFor(2) > 1);
+        return of(engine).map(r -> r.parallel).orElseGet(() -> EngineCatalog.byName(engine).spec().can(Capability.THREADS));
     }
 
     /** Whether the engine has no counterpart in the thesis. */
@@ -57,10 +66,14 @@ enum EngineRole {
 
     /**
      * The default engines, in the order of {@code carom engines}: those that have a counterpart, and
-     * {@link #BEYOND_BY_DEFAULT}.
+     * beyond the thesis the exact parallel ones on one JVM.
      */
-    static java.util.List<String> engines() {
-        return carom.engines.EngineCatalog.all().stream().map(carom.core.engine.Engine::name)
-                .filter(name -> of(name).isPresent() || BEYOND_BY_DEFAULT.contains(name)).toList();
+    static List<String> engines() {
+        return EngineCatalog.all().stream().map(Engine::name)
+                .filter(name -> of(name).isPresent() || exactParallelOnOneJvm(EngineCatalog.byName(name).spec())).toList();
+    }
+
+    private static boolean exactParallelOnOneJvm(EngineSpec spec) {
+        return spec.exact() && spec.can(Capability.THREADS) && !spec.can(Capability.NODES);
     }
 }

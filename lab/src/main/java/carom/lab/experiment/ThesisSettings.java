@@ -67,7 +67,7 @@ record ThesisSettings(List<Integer> sizes, int trials, List<Integer> largeSizes,
     }
 
     static boolean hasActors(Engine engine) {
-        return Tunables.declares(engine.tunables(), ActorRun.CELLS_PER_ACTOR.name());
+        return Tunables.declares(engine.spec().tunables(), ActorRun.CELLS_PER_ACTOR.name());
     }
 
     /** Engines of Table 4.4: the parallel ones, if it has sizes at all. */

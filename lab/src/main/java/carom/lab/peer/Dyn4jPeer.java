@@ -1,9 +1,9 @@
 package carom.lab.peer;
 
 import java.util.List;
-import carom.core.engine.Tunable;
 import carom.core.BadInputException;
 import carom.core.engine.Engine;
+import carom.core.engine.EngineSpec;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
@@ -40,29 +40,14 @@ import carom.engines.stepped.SteppedEngine;
  * Single thread.
  */
 public final class Dyn4jPeer implements Engine {
-    @Override
-    public String name() {
-        return "dyn4j";
-    }
+    /** What this peer is: relaxed, single-threaded, the stepped engine's setting and counters. */
+    public static final EngineSpec SPEC = EngineSpec.relaxed("dyn4j",
+                    "dyn4j 6.0.0 at a fixed dt (circles, friction 0, restitution velocity 0, static walls): the study's peer")
+            .withTunables(List.of(SteppedEngine.DT)).withCounters(SteppedEngine.SPEC.counters());
 
     @Override
-    public boolean exact() {
-        return false;
-    }
-
-    @Override
-    public String description() {
-        return "dyn4j 6.0.0 at a fixed dt (circles, friction 0, restitution velocity 0, static walls): the study's peer";
-    }
-
-    @Override
-    public List<Tunable<?>> tunables() {
-        return List.of(SteppedEngine.DT);
-    }
-
-    @Override
-    public int threadsFor(int requested) {
-        return 1;
+    public EngineSpec spec() {
+        return SPEC;
     }
 
     @Override

@@ -12,7 +12,6 @@ import carom.core.physics.Restitution;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
 import carom.engines.stepped.SteppedEngine;
-import java.util.Map;
 import org.dyn4j.dynamics.Body;
 import org.dyn4j.dynamics.BodyFixture;
 import org.dyn4j.dynamics.Settings;
@@ -136,10 +135,14 @@ final class Dyn4jRun {
         double seconds = (System.nanoTime() - started) * 1e-9;
         double energyEnd = Observables.kineticEnergy(d);
         Pressure pressure = VirialAccumulator.pressureOf(virial, scene, d, energyStart, energyEnd);
-        return new RunResult("dyn4j", false, d, until, pairCollisions, wallCollisions, pairCollisions + wallCollisions,
-                energyStart, energyEnd, momentumStart, Observables.momentum(d), pressure, 0, seconds,
-                Map.of("steps", steps, SteppedEngine.ESCAPES, escapes,
-                        SteppedEngine.DEEPEST_OVERLAP_PPB, SteppedEngine.overlapPpb(deepestOverlap)));
+        return RunResult.of(Dyn4jPeer.SPEC.name(), Dyn4jPeer.SPEC.exact(), d, until)
+                .collisions(pairCollisions, wallCollisions)
+                .kineticEnergy(energyStart, energyEnd)
+                .momentum(momentumStart, Observables.momentum(d))
+                .pressure(pressure)
+                .wallSeconds(seconds)
+                .counters(SteppedEngine.counters(steps, escapes, deepestOverlap))
+                .build();
     }
 
     private void countEscapes() {

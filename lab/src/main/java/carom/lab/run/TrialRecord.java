@@ -1,5 +1,6 @@
 package carom.lab.run;
 
+import carom.engines.actors.ActorCounters;
 import carom.core.engine.Engine;
 import carom.core.engine.Counter;
 import carom.core.engine.RunResult;
@@ -103,12 +104,12 @@ public record TrialRecord(String engine, String scene, int discs, long seed, int
 
     /** Actors of an actor engine, else null. */
     public Long actors() {
-        return counters.get(Counter.ACTORS.key);
+        return counters.get(ActorCounters.ACTORS.key);
     }
 
     /** Cells per actor as the actor engine laid them out, else null. */
     public Long cellsPerActor() {
-        return counters.get(Counter.CELLS_PER_ACTOR.key);
+        return counters.get(ActorCounters.CELLS_PER_ACTOR.key);
     }
 
     /** Virtual-thread carriers the run got, -1 for engines without. */

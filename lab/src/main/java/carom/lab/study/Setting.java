@@ -2,12 +2,12 @@ package carom.lab.study;
 
 import carom.engines.stepped.SteppedEngine;
 import carom.core.engine.Tunables;
+import carom.core.engine.Capability;
 import carom.core.engine.Engine;
 import carom.engines.EngineCatalog;
 import carom.lab.peer.Dyn4jPeer;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Set;
 import java.util.stream.Stream;
 
 /**
@@ -16,8 +16,6 @@ import java.util.stream.Stream;
  * engine's default.
  */
 record Setting(String engine, int threads, double dtFactor) {
-    /** Catalog engines known to use one thread; every other catalog engine is run at each thread count. */
-    private static final Set<String> SINGLE_THREADED = Set.of("serial", "fast");
     static final String PEER = "dyn4j";
 
     boolean hasDt() {
@@ -28,7 +26,7 @@ record Setting(String engine, int threads, double dtFactor) {
         if (hasDt()) {
             return engine + " dt×" + StudyScene.fmt(dtFactor);
         }
-        return SINGLE_THREADED.contains(engine) ? engine : engine + " ×" + threads;
+        return onOneThread(engineNamed(engine)) ? engine : engine + " ×" + threads;
     }
 
     /** The engine itself: a catalog engine or the peer. */
@@ -42,21 +40,31 @@ record Setting(String engine, int threads, double dtFactor) {
     }
 
     /**
-     * The settings for these engines: a stepping engine once per dt factor, a single-threaded engine
-     * once, any other engine (relaxed and future parallel ones) once per thread count.
+     * The settings for these engines: a stepping engine once per dt factor, any other engine on one
+     * thread once, the rest (those that run on {@code --threads}) once per thread count.
      */
     static List<Setting> expand(List<String> engines, List<Integer> threads, List<Double> dtFactors) {
         List<Setting> settings = new ArrayList<>();
         for (String name : engines) {
             Engine engine = engineNamed(name);
-            if (Tunables.declares(engine.tunables(), SteppedEngine.DT.name())) {
+            if (steps(engine)) {
                 dtFactors.forEach(f -> settings.add(new Setting(name, 1, f)));
-            } else if (SINGLE_THREADED.contains(name)) {
+            } else if (onOneThread(engine)) {
                 settings.add(new Setting(name, 1, Double.NaN));
             } else {
                 threads.forEach(k -> settings.add(new Setting(name, k, Double.NaN)));
             }
         }
         return settings;
+    }
+
+    /** Whether {@code engine} advances in time steps ({@code dt}): then its settings are its steps. */
+    private static boolean steps(Engine engine) {
+        return Tunables.declares(engine.spec().tunables(), SteppedEngine.DT.name());
+    }
+
+    /** Whether {@code engine} has no time step and runs on one thread whatever {@code --threads} asks: then it runs once. */
+    private static boolean onOneThread(Engine engine) {
+        return !steps(engine) && !engine.spec().can(Capability.THREADS);
     }
 }

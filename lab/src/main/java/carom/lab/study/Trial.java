@@ -42,7 +42,7 @@ record Trial(StudyScene studyScene, Setting setting, double until, double shortU
     }
 
     private RunOptions options(double horizon) {
-        return new RunOptions(horizon, setting.threads(), null, tunables());
+        return RunOptions.until(horizon).withThreads(setting.threads()).withProgress(null).withTunables(tunables());
     }
 
     private static TrialRecord.Accuracy accuracy(Scene scene, RunResult r, RunResult atShort) {
@@ -54,7 +54,7 @@ record Trial(StudyScene studyScene, Setting setting, double until, double shortU
         Map<String, Long> counters = r.counters() == null ? Map.of() : r.counters();
         return new TrialRecord.Accuracy((energyEnd - energyStart) / energyStart, z, zError,
                 StateErrors.deepestOverlap(r.finalState(), scene.box()), SteppedEngine.deepestOverlap(r),
-                StateErrors.escapes(r.finalState(), scene.box()), counters.getOrDefault(SteppedEngine.ESCAPES, -1L),
+                StateErrors.escapes(r.finalState(), scene.box()), counters.getOrDefault(SteppedEngine.ESCAPES.key, -1L),
                 atShort.collisions(), atShort.finalState().x.clone(), atShort.finalState().y.clone());
     }
 }

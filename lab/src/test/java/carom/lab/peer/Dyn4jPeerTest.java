@@ -120,7 +120,7 @@ class Dyn4jPeerTest {
                 .generate(new GenerateBlock(0, 64, 0.5, new VelocityDistribution.Uniform(2), 3))
                 .until(2).build();
         RunResult r = new Dyn4jPeer().run(scene, RunOptions.until(2));
-        assertThat(r.counters().get(SteppedEngine.ESCAPES)).isZero();
+        assertThat(r.counters().get(SteppedEngine.ESCAPES.key)).isZero();
         assertThat(r.wallCollisions()).isPositive();
         Discs d = r.finalState();
         for (int i = 0; i < d.n; i++) {

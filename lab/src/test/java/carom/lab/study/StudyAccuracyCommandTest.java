@@ -124,7 +124,7 @@ class StudyAccuracyCommandTest {
 
     @Test
     void exactEnginesHaveNoViolationsNoOverlapAndSerialsTrajectoryToRounding() {
-        List<String> exact = carom.engines.EngineCatalog.all().stream().filter(e -> e.exact()).map(e -> e.name()).toList();
+        List<String> exact = carom.engines.EngineCatalog.all().stream().filter(e -> e.spec().exact()).map(e -> e.name()).toList();
         assertThat(exact).contains("serial", "fast");
         for (Map<String, String> r : rows) {
             if (exact.contains(r.get("engine"))) {

@@ -29,7 +29,7 @@ class StudySettingTest {
         // Whatever the catalog adds later (an exact parallel engine) is run at each thread count.
         for (Engine e : EngineCatalog.all()) {
             List<Setting> settings = Setting.expand(List.of(e.name()), List.of(1, 2), List.of(1.0));
-            int expected = e.name().equals("serial") || e.name().equals("fast") || carom.core.engine.Tunables.declares(e.tunables(), "dt") ? 1 : 2;
+            int expected = e.name().equals("serial") || e.name().equals("fast") || carom.core.engine.Tunables.declares(e.spec().tunables(), "dt") ? 1 : 2;
             assertThat(settings).as(e.name()).hasSize(expected);
         }
     }

@@ -225,7 +225,7 @@ public final class EosCommand implements Callable<Integer> {
             throw new BadInputException("--phis: a packing fraction is named twice");
         }
         Engine e = EngineCatalog.byName(engine);
-        if (!e.exact()) {
+        if (!e.spec().exact()) {
             throw new BadInputException("--engine: " + engine + " is relaxed; the equation of state needs an exact engine");
         }
         List<String> starts = switch (start) {
@@ -251,7 +251,7 @@ public final class EosCommand implements Callable<Integer> {
         if (b < 2 || b > 1_000_000) {
             throw new BadInputException("--blocks: must be 2 to 1000000, got " + b);
         }
-        if (starts.contains(FLUID) && !e.supportsGrowth()) {
+        if (starts.contains(FLUID) && !e.spec().simulates(carom.core.scene.Effect.GROWTH)) {
             throw new BadInputException("--start " + start + ": engine " + engine + " does not simulate growing discs, which make "
                     + "the liquid start (use fast or slabs, or --start crystal)");
         }

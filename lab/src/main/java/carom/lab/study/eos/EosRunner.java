@@ -151,7 +151,7 @@ final class EosRunner {
     }
 
     private RunResult run(Scene scene, double until) {
-        return engine.run(scene.withUntil(until), new RunOptions(until, threads, ProgressListener.NONE, tunables));
+        return engine.run(scene.withUntil(until), RunOptions.until(until).withThreads(threads).withProgress(ProgressListener.NONE).withTunables(tunables));
     }
 
     /** Global |ψ6| of {@code state}, fed to {@code bondOrder} as the sample at {@code clock} (its times must rise). */
