@@ -32,6 +32,16 @@ public final class GsdReader {
             return v;
         }
 
+        /** Element {@code i} of a 64-bit integer chunk. */
+        public long longAt(int i) {
+            return data.duplicate().order(ByteOrder.LITTLE_ENDIAN).getLong(8 * i);
+        }
+
+        /** Element {@code i} of a float64 chunk. */
+        public double doubleAt(int i) {
+            return data.duplicate().order(ByteOrder.LITTLE_ENDIAN).getDouble(8 * i);
+        }
+
         public byte[] bytes() {
             byte[] b = new byte[data.remaining()];
             data.duplicate().get(b);
