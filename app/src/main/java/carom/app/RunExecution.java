@@ -57,7 +57,8 @@ final class RunExecution {
             try (ProgressBar bar = ProgressBar.forRun(streams.err(), request.scene().until())
                     .withStatus(progressNote(request.settings().start()));
                  TrajectoryOutput frames = outputs.trajectory() == null ? null
-                         : TrajectoryOutput.open(outputs.trajectory(), files, request.scene(), request.sampling().every())) {
+                         : TrajectoryOutput.open(outputs.trajectory(), files, request.scene(), request.sampling().every(),
+                         request.engine())) {
                 result = run(request, bar, frames);
             } catch (IOException e) {
                 throw new UncheckedIOException("cannot write the trajectory: " + e.getMessage(), e);

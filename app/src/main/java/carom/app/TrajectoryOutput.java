@@ -1,6 +1,7 @@
 package carom.app;
 
 import carom.app.gsd.HoomdTrajectory;
+import carom.core.engine.Engine;
 import carom.core.engine.Sampler;
 import carom.core.observe.CollisionObserver;
 import carom.core.scene.Scene;
@@ -42,13 +43,17 @@ final class TrajectoryOutput implements AutoCloseable {
         }
     }
 
-    /** The trajectory of {@code scene} sampled every {@code every}, into a temporary of {@code files} for {@code file}. */
-    static TrajectoryOutput open(Path file, AtomicOutput files, Scene scene, double every) {
+    /**
+     * The trajectory of {@code scene} sampled every {@code every}, into a temporary of {@code files} for
+     * {@code file}; GSD frames count collisions if {@code engine} tells them.
+     */
+    static TrajectoryOutput open(Path file, AtomicOutput files, Scene scene, double every, Engine engine) {
         if (isGsd(file)) {
             FileChannel channel = files.channel(file);
             try {
-                HoomdTrajectory gsd = new HoomdTrajectory(scene, every, channel);
-                return new TrajectoryOutput(gsd, gsd, gsd);
+                boolean counts = engine.tellsCollisions();
+                HoomdTrajectory gsd = new HoomdTrajectory(scene, every, counts, channel);
+                return new TrajectoryOutput(gsd, counts ? gsd : null, gsd);
             } catch (IOException e) {
                 UncheckedIOException failure = new UncheckedIOException("cannot write the trajectory: " + e.getMessage(), e);
                 try {

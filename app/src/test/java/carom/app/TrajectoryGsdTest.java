@@ -86,6 +86,43 @@ class TrajectoryGsdTest {
     }
 
     @Test
+    void anEngineThatDoesNotTellCollisionsLeavesTheirCountOut() throws IOException {
+        Path scene = dir.resolve("mix.json");
+        Files.writeString(scene, MIX);
+        Path file = dir.resolve("slabs.gsd");
+        Cli r = Cli.run("simulate", scene.toString(), "--engine", "slabs", "--threads", "2", "--every", "0.5",
+                "--trajectory", file.toString());
+        assertThat(r.status()).as(r.err()).isZero();
+        GsdReader gsd = new GsdReader(file);
+        assertThat(gsd.frames()).isEqualTo(5);
+        for (long k = 0; k < gsd.frames(); k++) {
+            assertThat(gsd.chunk(k, "log/carom/time").doubleAt(0)).isEqualTo(k * 0.5);
+            assertThat(gsd.chunk(k, "log/carom/collisions")).isNull();
+        }
+    }
+
+    /** A GSD type name is any UTF-8 without a NUL character: white space, which XYZ cannot hold, is fine. */
+    @Test
+    void aGsdTypeNameMayHoldWhiteSpaceButNoNul() throws IOException {
+        Path spaced = dir.resolve("spaced.json");
+        Files.writeString(spaced, MIX.replace("\"small\"", "\"small disc\""));
+        Cli xyz = Cli.run("simulate", spaced.toString(), "--every", "1", "--trajectory", dir.resolve("f.xyz").toString());
+        assertThat(xyz.status()).isEqualTo(2);
+        Cli gsd = Cli.run("simulate", spaced.toString(), "--every", "1", "--trajectory", dir.resolve("f.gsd").toString());
+        assertThat(gsd.status()).as(gsd.err()).isZero();
+        assertThat(new String(new GsdReader(dir.resolve("f.gsd")).chunk(0, "particles/types").bytes(), StandardCharsets.UTF_8))
+                .isEqualTo("small disc\0large\0\0\0\0\0\0");
+
+        Path nul = dir.resolve("nul.json");
+        Files.writeString(nul, MIX.replace("\"small\"", "\"small\\u0000\""));
+        Cli refused = Cli.run("simulate", nul.toString(), "--every", "1", "--trajectory", dir.resolve("n.gsd").toString());
+        assertThat(refused.status()).isEqualTo(2);
+        assertThat(refused.firstErrorLine()).isEqualTo("error: --trajectory: species name 'small\\u0000' has a NUL "
+                + "character, which a GSD type name cannot hold");
+        assertThat(dir.resolve("n.gsd")).doesNotExist();
+    }
+
+    @Test
     void gsdFreudMdAnalysisAndOvitoReadIt() throws Exception {
         Run run = simulate(LIQUID, "liquid");
         JsonNode read = new ObjectMapper().readTree(GsdPython.read(run.gsd, 1.0, 0.02, 5.0, dir));

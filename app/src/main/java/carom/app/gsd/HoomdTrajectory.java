@@ -25,9 +25,9 @@ import java.util.List;
  * MDAnalysis, OVITO and HOOMD-blue read directly. Every frame holds {@code configuration/step} (the
  * sample's number k, t = k·every), {@code particles/position} (float32, the box centred on the origin as
  * HOOMD's is, z = 0), {@code particles/velocity} (float32, vz = 0), {@code particles/image} (int32, z =
- * 0), {@code log/carom/time} (float64, the simulated time) and {@code log/carom/collisions} (uint64, the
- * collisions this run has carried out up to the sample, as the engine tells them; a resumed run counts
- * from its checkpoint). Frame 0 also holds what does not change: {@code configuration/dimensions} = 2,
+ * 0), {@code log/carom/time} (float64, the simulated time) and, if the engine tells its collisions, {@code
+ * log/carom/collisions} (uint64, the collisions this run has carried out up to the sample; a resumed run
+ * counts from its checkpoint). Frame 0 also holds what does not change: {@code configuration/dimensions} = 2,
  * {@code configuration/box} = [Lx, Ly, 1, 0, 0, 0], {@code particles/N}, {@code particles/types} (the
  * species' names), {@code particles/typeid} (the species' indices), {@code particles/mass} and {@code
  * particles/diameter}, which HOOMD's readers take from frame 0 for frames without them; with growth, the
@@ -50,6 +50,7 @@ public final class HoomdTrajectory implements Sampler, CollisionObserver, Closea
     private final double every;
     private final boolean periodic;
     private final boolean grows;
+    private final boolean countsCollisions;
     private final String[] typeNames;
     private final double halfWidth;
     private final double halfHeight;
@@ -72,10 +73,12 @@ public final class HoomdTrajectory implements Sampler, CollisionObserver, Closea
 
     /**
      * A trajectory of {@code scene}'s discs sampled every {@code every}, written to {@code channel} (an
-     * empty file opened for reading and writing, closed by {@link #close}).
+     * empty file opened for reading and writing, closed by {@link #close}); with {@code countsCollisions},
+     * the engine tells this trajectory its collisions, and each frame holds their count.
      */
-    public HoomdTrajectory(Scene scene, double every, FileChannel channel) throws IOException {
+    public HoomdTrajectory(Scene scene, double every, boolean countsCollisions, FileChannel channel) throws IOException {
         this.every = every;
+        this.countsCollisions = countsCollisions;
         Box b = scene.box();
         this.periodic = b.periodic();
         this.grows = scene.effects().grows();
@@ -153,8 +156,10 @@ public final class HoomdTrajectory implements Sampler, CollisionObserver, Closea
             file.writeChunk("particles/image", GsdType.INT32, n, 3, images.clear());
             scalar.putDouble(0, time);
             writeSmall("log/carom/time", GsdType.DOUBLE, 1);
-            scalar.putLong(0, collisions);
-            writeSmall("log/carom/collisions", GsdType.UINT64, 1);
+            if (countsCollisions) {
+                scalar.putLong(0, collisions);
+                writeSmall("log/carom/collisions", GsdType.UINT64, 1);
+            }
             file.endFrame();
         } catch (IOException e) {
             throw new UncheckedIOException("cannot write the trajectory: " + e.getMessage(), e);

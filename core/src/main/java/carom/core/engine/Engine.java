@@ -53,6 +53,14 @@ public interface Engine {
     }
 
     /**
+     * Whether this engine tells {@link RunOptions#collisions()} every pair and wall collision it carries
+     * out (one that does not ignores the observer).
+     */
+    default boolean tellsCollisions() {
+        return false;
+    }
+
+    /**
      * The threads a run gets when the user names none, given the machine's {@code processors}: all of
      * them, unless the engine knows better.
      */

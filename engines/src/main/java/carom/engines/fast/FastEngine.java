@@ -52,6 +52,11 @@ public final class FastEngine implements Engine {
     }
 
     @Override
+    public boolean tellsCollisions() {
+        return true;
+    }
+
+    @Override
     public int threadsFor(int requested) {
         return 1;
     }

@@ -34,6 +34,11 @@ public final class SerialEngine implements Engine {
     }
 
     @Override
+    public boolean tellsCollisions() {
+        return true;
+    }
+
+    @Override
     public List<Tunable<?>> tunables() {
         return List.of(StepGridTunables.CELL_FACTOR, Tunables.AUDIT_ENERGY);
     }
