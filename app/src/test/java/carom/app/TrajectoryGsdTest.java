@@ -101,6 +101,22 @@ class TrajectoryGsdTest {
         }
     }
 
+    /** With growth the diameters change, and every frame holds them: twice carom's radius, in float32. */
+    @Test
+    void withGrowthEveryFrameHasItsDiameters() throws IOException {
+        Run run = simulate(MIX.replace("\"until\": 2 }", "\"until\": 2, \"effects\": { \"growth\": 0.05 } }"), "growing");
+        GsdReader gsd = new GsdReader(run.gsd());
+        List<XyzFrame> xyz = run.xyz();
+        assertThat(gsd.frames()).isEqualTo(xyz.size()).isEqualTo(9);
+        for (int k = 0; k < xyz.size(); k++) {
+            float[] diameter = gsd.chunk(k, "particles/diameter").floats();
+            for (int i = 0; i < diameter.length; i++) {
+                assertThat(diameter[i]).isEqualTo((float) (2 * xyz.get(k).radius()[i]));
+            }
+        }
+        assertThat(xyz.getLast().radius()[0]).as("the discs grew").isGreaterThan(xyz.getFirst().radius()[0]);
+    }
+
     /** A GSD type name is any UTF-8 without a NUL character: white space, which XYZ cannot hold, is fine. */
     @Test
     void aGsdTypeNameMayHoldWhiteSpaceButNoNul() throws IOException {
