@@ -26,6 +26,7 @@ import org.junit.jupiter.api.io.TempDir;
  */
 class TrajectoryGsdTest {
     private static final double EVERY = 0.25;
+    private static final ObjectMapper JSON = new ObjectMapper();
     /** Two species of different size and mass in a periodic box, long enough that discs cross its sides. */
     private static final String MIX = """
             { "name": "mix", "box": { "width": 20, "height": 12, "boundary": "periodic" },
@@ -141,7 +142,7 @@ class TrajectoryGsdTest {
     @Test
     void gsdFreudMdAnalysisAndOvitoReadIt() throws Exception {
         Run run = simulate(LIQUID, "liquid");
-        JsonNode read = new ObjectMapper().readTree(GsdPython.read(run.gsd, 1.0, 0.02, 5.0, dir));
+        JsonNode read = JSON.readTree(GsdPython.read(run.gsd, 1.0, 0.02, 5.0, dir));
         JsonNode frames = read.get("frames");
         List<XyzFrame> xyz = run.xyz();
         assertThat(frames.size()).isEqualTo(xyz.size()).isEqualTo(13);
@@ -238,7 +239,7 @@ class TrajectoryGsdTest {
         for (int k = 1; k < frames.size(); k++) {
             assertThat(frames.get(k).collisions()).isGreaterThanOrEqualTo(frames.get(k - 1).collisions());
         }
-        JsonNode collisions = new ObjectMapper().readTree(run.summary.toFile()).get("collisions");
+        JsonNode collisions = JSON.readTree(run.summary.toFile()).get("collisions");
         assertThat(frames.getLast().collisions()).as("the last frame is at the end time")
                 .isEqualTo(collisions.get("pair").asLong() + collisions.get("wall").asLong());
     }
@@ -293,26 +294,20 @@ class TrajectoryGsdTest {
     }
 
     private static double[] doubles(JsonNode array) {
-        double[] d = new double[array.size()];
-        for (int i = 0; i < d.length; i++) {
-            d[i] = array.get(i).asDouble();
-        }
-        return d;
+        return JSON.convertValue(array, double[].class);
     }
 
+    /** The float32 values a reader printed (as doubles, which hold them exactly). */
     private static float[] floats(JsonNode array) {
-        float[] f = new float[array.size()];
+        double[] d = doubles(array);
+        float[] f = new float[d.length];
         for (int i = 0; i < f.length; i++) {
-            f[i] = (float) array.get(i).asDouble();
+            f[i] = (float) d[i];
         }
         return f;
     }
 
     private static int[] ints(JsonNode array) {
-        int[] v = new int[array.size()];
-        for (int i = 0; i < v.length; i++) {
-            v[i] = array.get(i).asInt();
-        }
-        return v;
+        return JSON.convertValue(array, int[].class);
     }
 }
