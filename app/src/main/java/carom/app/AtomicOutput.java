@@ -7,6 +7,7 @@ import java.io.IOException;
 import java.io.OutputStreamWriter;
 import java.io.UncheckedIOException;
 import java.io.Writer;
+import java.nio.channels.FileChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.AtomicMoveNotSupportedException;
@@ -140,6 +141,20 @@ public final class AtomicOutput implements AutoCloseable {
         try {
             return new BufferedWriter(new OutputStreamWriter(Files.newOutputStream(temp,
                     StandardOpenOption.WRITE), StandardCharsets.UTF_8), BUFFER);
+        } catch (IOException e) {
+            throw cannotWrite(target, e);
+        }
+    }
+
+    /**
+     * A channel to a temporary file beside {@code target}, for binary output written while a run goes
+     * (a GSD trajectory, which reads its own index back as it grows); the caller closes it, and
+     * {@link #commit} moves it into place with the others.
+     */
+    public FileChannel channel(Path target) {
+        Path temp = newTemp(target, false);
+        try {
+            return FileChannel.open(temp, StandardOpenOption.READ, StandardOpenOption.WRITE);
         } catch (IOException e) {
             throw cannotWrite(target, e);
         }

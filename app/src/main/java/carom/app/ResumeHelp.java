@@ -14,7 +14,7 @@ public final class ResumeHelp extends ListResourceBundle {
         return new Object[][] {
                 {"until", "Simulated end time, overriding the run's; not before the checkpoint's time."},
                 {"report", "Folder (new or empty) for the observables the run had (--observe), accumulated over the whole run."},
-                {"trajectory", "Write the samples from the checkpoint on as extended XYZ frames; the run must have had --every."},
+                {"trajectory", "Write the samples from the checkpoint on as frames (extended XYZ, or GSD for a name ending in .gsd); the run must have had --every."},
                 {"checkpoint", "Write checkpoints of the continued run here."},
                 {"checkpoint-every", "Simulated time between checkpoints; default: the checkpoint's interval."},
         };

@@ -9,14 +9,16 @@ import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.engine.RunStopped;
 import carom.core.engine.Sampler;
+import carom.core.observe.CollisionObserver;
 import carom.core.observe.jfr.CaromRecording;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
-import java.io.Writer;
 import java.nio.charset.Charset;
 import java.util.Locale;
+import java.util.Objects;
+import java.util.stream.Stream;
 import jdk.jfr.Recording;
 
 /**
@@ -54,7 +56,9 @@ final class RunExecution {
             RunResult result;
             try (ProgressBar bar = ProgressBar.forRun(streams.err(), request.scene().until())
                     .withStatus(progressNote(request.settings().start()));
-                 Writer frames = outputs.trajectory() == null ? null : files.stream(outputs.trajectory())) {
+                 TrajectoryOutput frames = outputs.trajectory() == null ? null
+                         : TrajectoryOutput.open(outputs.trajectory(), files, request.scene(), request.sampling().every(),
+                         request.engine())) {
                 result = run(request, bar, frames);
             } catch (IOException e) {
                 throw new UncheckedIOException("cannot write the trajectory: " + e.getMessage(), e);
@@ -74,7 +78,7 @@ final class RunExecution {
     }
 
     /** The engine's run from its start: bad input it reports names the file it came from. */
-    private static RunResult run(RunRequest request, ProgressBar bar, Writer frames) {
+    private static RunResult run(RunRequest request, ProgressBar bar, TrajectoryOutput frames) {
         return switch (request.settings().start()) {
             case RunRequest.Start.Fresh fresh -> {
                 RunOptions options = options(request, bar, frames);
@@ -102,12 +106,12 @@ final class RunExecution {
      * not null, and the observables), the observables' collision observers and its checkpoints, each if
      * there are any.
      */
-    private static RunOptions options(RunRequest request, ProgressBar bar, Writer frames) {
+    private static RunOptions options(RunRequest request, ProgressBar bar, TrajectoryOutput frames) {
         RunRequest.Settings settings = request.settings();
         RunRequest.Sampling sampling = request.sampling();
         RunOptions options = RunOptions.until(request.scene().until()).withThreads(settings.threads()).withProgress(bar).withTunables(settings.tunables());
         Observing observing = sampling.observing();
-        Sampler sampler = Observing.both(frames == null ? null : new TrajectoryXyz(request.scene(), frames), observing);
+        Sampler sampler = Observing.both(frames == null ? null : frames.sampler(), observing);
         if (sampler == null && sampling.sampled() && request.scene().effects().grows()) {
             // With growth, --every is also the thermostat's interval: sample for it alone.
             sampler = (t, state, virialSum) -> { };
@@ -115,8 +119,10 @@ final class RunExecution {
         if (sampler != null) {
             options = options.withSamples(sampling.every(), sampler);
         }
-        if (observing != null) {
-            options = options.withCollisions(observing.collisions());
+        CollisionObserver collisions = CollisionObserver.all(Stream.of(frames == null ? null : frames.collisions(),
+                observing == null ? null : observing.collisions()).filter(Objects::nonNull).toList());
+        if (collisions != null) {
+            options = options.withCollisions(collisions);
         }
         return request.checkpoints() == null ? options : options.withCheckpoints(request.checkpoints());
     }

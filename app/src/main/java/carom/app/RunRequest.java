@@ -145,7 +145,7 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
             return null;
         });
         if (outputs.trajectory() != null) {
-            TrajectoryXyz.checkNames(scene);
+            TrajectoryOutput.checkNames(outputs.trajectory(), scene);
         }
         double expected = WorkEstimate.collisions(scene, scene.until());
         if (expected > LONG_RUN_COLLISIONS && !command.allowLong) {
@@ -194,7 +194,7 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
             throw new BadInputException("--report: the run had no --observe, so there is nothing to report");
         }
         if (outputs.trajectory() != null) {
-            TrajectoryXyz.checkNames(scene);
+            TrajectoryOutput.checkNames(outputs.trajectory(), scene);
         }
         Sampling sampling = new Sampling(saved.every(), saved.observe(), saved.observe() == null ? null
                 : file.about(() -> Observing.restored(scene, saved.observables(), saved.lastVirialSum())));
