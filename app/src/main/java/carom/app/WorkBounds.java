@@ -10,9 +10,9 @@ import java.util.Locale;
  * The work a run is asked for, bounded before it starts, so that a slip of a digit (an end time of 1e18,
  * {@code --every 1e-12}) is bad input instead of a run that lasts for days or fills the disk.
  *
- * <p>Two kinds of bound. A count of samples or checkpoints ({@code span / every}) beyond
- * {@link #MOST_COUNTED} is always refused: their times k·every are no longer distinct doubles there, and
- * a checkpoint index past a long's range never comes. Below it, a run whose work (the collisions
+ * <p>Two kinds of bound. A count of samples or checkpoints ({@code until / every}: their times are
+ * k·every from 0, also for a resumed run) beyond {@link #MOST_COUNTED} is always refused: their times
+ * are no longer distinct doubles there, and an index past a long's range never comes. Below it, a run whose work (the collisions
  * expected, {@link WorkEstimate}, plus one disc update per disc at every sample and every checkpoint)
  * exceeds {@link #LONG_RUN_WORK}, or whose trajectory exceeds {@link #TRAJECTORY_ROWS} rows (frames
  * times discs), is refused unless {@code --allow-long} says it is meant.
@@ -38,8 +38,8 @@ record WorkBounds(Scene scene, double from, double every, double checkpointEvery
     void check(String shown, boolean allowLong) {
         double until = scene.until();
         double span = until - from;
-        double samples = count("--every", every, span);
-        double checkpoints = count("--checkpoint-every", checkpointEvery, span);
+        double samples = count("--every", every, until) * span / until;
+        double checkpoints = count("--checkpoint-every", checkpointEvery, until) * span / until;
         if (allowLong) {
             return;
         }
@@ -78,17 +78,17 @@ record WorkBounds(Scene scene, double from, double every, double checkpointEvery
     }
 
     /**
-     * How many times {@code every} falls in {@code span} (0 for none: NaN or +Infinity); bad input, naming
-     * {@code option}, beyond {@link #MOST_COUNTED}.
+     * How many times {@code every} falls in 0 to {@code until} (0 for none: NaN or +Infinity); bad input,
+     * naming {@code option}, beyond {@link #MOST_COUNTED}.
      */
-    static double count(String option, double every, double span) {
+    static double count(String option, double every, double until) {
         if (!(every > 0) || Double.isInfinite(every)) {
             return 0;
         }
-        double count = span / every;
+        double count = until / every;
         if (!(count <= MOST_COUNTED)) {
-            throw new BadInputException(String.format(Locale.ROOT, "%s: %s is too short for a run of %s: %.2g of them, "
-                    + "more than can be counted (%.2g)", option, every, span, count, MOST_COUNTED));
+            throw new BadInputException(String.format(Locale.ROOT, "%s: %s is too short for a run to t = %s: %.2g of "
+                    + "them, more than can be counted (%.2g)", option, every, until, count, MOST_COUNTED));
         }
         return count;
     }
