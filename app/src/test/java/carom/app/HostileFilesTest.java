@@ -147,6 +147,18 @@ class HostileFilesTest {
     }
 
     @Test
+    void aGifNamedOnTheCommandLineThroughALinkIsStillRead() throws IOException {
+        Path gif = dir.resolve("movie.gif");
+        Cli made = Cli.run("animate", scene().toString(), "--out", gif.toString(), "--size", "32", "--every", "5");
+        assertThat(made.status()).as(made.err()).isZero();
+        Path link = Files.createSymbolicLink(dir.resolve("link.gif"), gif);
+        Path page = dir.resolve("page.html");
+        Cli r = Cli.run("report", link.toString(), "--out", page.toString());
+        assertThat(r.status()).as(r.err()).isZero();
+        assertThat(Files.readString(page)).contains("data:image/gif;base64,");
+    }
+
+    @Test
     void aCsvRowOfMillionsOfCommasIsANoteNotAnOutOfMemory() throws IOException {
         Path run = reportFolder();
         Path wide = run.resolve("wide.csv");

@@ -74,7 +74,9 @@ record ReportSource(Path path, String kind, Path markdown, Map<String, String> p
     static ReportSource of(Path path) {
         String shown = Quoted.fileName(path.toString());
         if (Files.isRegularFile(path)) {
-            Gif gif = Html.imageType(path) != null && path.toString().toLowerCase(Locale.ROOT).endsWith(".gif") ? gif(path) : null;
+            // Named by the user, so followed if it is a link: the page then reads the file it leads to.
+            Path file = realPath(path);
+            Gif gif = Html.imageType(path) != null && path.toString().toLowerCase(Locale.ROOT).endsWith(".gif") ? gif(file) : null;
             if (gif == null || !gif.comment().startsWith("carom animate")) {
                 throw new BadInputException(shown + " is neither a folder nor a GIF that 'carom animate' wrote");
             }
@@ -128,6 +130,15 @@ record ReportSource(Path path, String kind, Path markdown, Map<String, String> p
         }
         Map<String, String> provenance = ours.size() == 1 ? provenanceOf(ours.getFirst()) : Map.of();
         return new ReportSource(path, "animation", null, provenance, List.of(), csvs, pngs, gifs);
+    }
+
+    private static Path realPath(Path file) {
+        try {
+            return file.toRealPath();
+        } catch (IOException e) {
+            throw new BadInputException(Quoted.fileName(file.toString()) + ": cannot read it: "
+                    + Quoted.bare(String.valueOf(e.getMessage())));
+        }
     }
 
     private static List<Path> filesIn(Path folder) {
