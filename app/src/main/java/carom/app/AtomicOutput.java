@@ -16,13 +16,15 @@ import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.LinkOption;
 import java.nio.file.NoSuchFileException;
+import java.nio.file.SecureDirectoryStream;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
+import java.nio.file.attribute.BasicFileAttributeView;
+import java.nio.file.attribute.BasicFileAttributes;
 import java.time.Duration;
 import java.time.Instant;
 import java.util.ArrayList;
-import java.util.Comparator;
 import java.util.HashSet;
 import java.util.HexFormat;
 import java.util.List;
@@ -108,6 +110,49 @@ public final class AtomicOutput implements AutoCloseable {
         }
         if (Files.isDirectory(absolute)) {
             throw new BadInputException(what + ": " + Quoted.fileName(target.toString()) + " is a directory");
+        }
+        // A device, FIFO or socket would be replaced by a regular file of the same name (the rename), and
+        // writing into one in place would give up "whole or not at all": refused, whatever it is.
+        if (Files.exists(absolute) && !Files.isRegularFile(absolute)) {
+            throw new BadInputException(what + ": " + Quoted.fileName(target.toString())
+                    + " is not a regular file (a device, FIFO or socket); carom writes its outputs to regular files");
+        }
+    }
+
+    /**
+     * Bad input if output {@code target} is the file {@code input} (the same file however each is named:
+     * a link, a hard link, another spelling of the path), which the run reads and would then replace.
+     */
+    public static void checkNotInput(Path target, String what, Path input, String inputWhat) {
+        try {
+            if (Files.exists(target) && Files.exists(input) && Files.isSameFile(target, input)) {
+                throw new BadInputException(what + ": " + Quoted.fileName(target.toString()) + " is " + inputWhat
+                        + ", which it would overwrite");
+            }
+        } catch (IOException e) {
+            throw new BadInputException(what + ": cannot compare " + Quoted.fileName(target.toString()) + " with "
+                    + inputWhat + ": " + why(e));
+        }
+    }
+
+    /**
+     * Where {@code path} leads once every link and {@code ..} in its existing part is resolved: the real
+     * path of its nearest existing ancestor with the rest appended, so that two spellings of one place
+     * (also of a file yet to be written) compare equal.
+     */
+    public static Path resolved(Path path) {
+        Path absolute = path.toAbsolutePath().normalize();
+        Path existing = absolute;
+        while (existing != null && !Files.exists(existing)) {
+            existing = existing.getParent();
+        }
+        if (existing == null) {
+            return absolute;
+        }
+        try {
+            return existing.toRealPath().resolve(existing.relativize(absolute));
+        } catch (IOException e) {
+            return absolute;
         }
     }
 
@@ -289,16 +334,78 @@ public final class AtomicOutput implements AutoCloseable {
         }
     }
 
-    /** Deletes a file, or a folder with everything in it (links as links, never what they point to). */
+    /**
+     * Deletes a file, or a folder with everything in it, never through a symbolic link: a link is
+     * removed as a link, and a folder swapped for a link while this runs is not entered. Where the
+     * platform gives directory handles ({@link SecureDirectoryStream}: Linux), every step is relative to
+     * the open handle of the folder it is in, so no path is looked up again; elsewhere each entry is
+     * looked at again without following links just before it is entered, and anything else is skipped.
+     */
     private static void deleteTree(Path root) throws IOException {
-        if (Files.isDirectory(root, LinkOption.NOFOLLOW_LINKS)) {
-            try (Stream<Path> tree = Files.walk(root)) {
-                for (Path p : tree.sorted(Comparator.reverseOrder()).toList()) {
-                    Files.deleteIfExists(p);
-                }
+        Path parent = root.toAbsolutePath().getParent();
+        try (DirectoryStream<Path> dir = Files.newDirectoryStream(parent)) {
+            if (dir instanceof SecureDirectoryStream<Path> handle) {
+                deleteIn(handle, root.getFileName());
+                return;
             }
         }
-        Files.deleteIfExists(root);
+        deleteByPath(root);
+    }
+
+    /** Deletes entry {@code name} of the open folder {@code dir}, and what it holds if it is a folder. */
+    private static void deleteIn(SecureDirectoryStream<Path> dir, Path name) throws IOException {
+        BasicFileAttributes attributes;
+        try {
+            attributes = dir.getFileAttributeView(name, BasicFileAttributeView.class, LinkOption.NOFOLLOW_LINKS)
+                    .readAttributes();
+        } catch (NoSuchFileException e) {
+            return;
+        }
+        if (!attributes.isDirectory()) {
+            // unlinkat: a link (or whatever replaced the file since) goes itself, never what it points to.
+            deleteQuietly(() -> dir.deleteFile(name));
+            return;
+        }
+        // Opened with O_NOFOLLOW: a folder swapped for a link since the look above fails to open.
+        try (SecureDirectoryStream<Path> inner = dir.newDirectoryStream(name, LinkOption.NOFOLLOW_LINKS)) {
+            List<Path> names = new ArrayList<>();
+            for (Path entry : inner) {
+                names.add(entry.getFileName());
+            }
+            for (Path entry : names) {
+                deleteIn(inner, entry);
+            }
+        } catch (FileSystemException e) {
+            return; // not a folder any more (a link now), or gone: leave it
+        }
+        deleteQuietly(() -> dir.deleteDirectory(name));
+    }
+
+    /** The same without directory handles: each entry looked at again, without following links, before it is entered. */
+    private static void deleteByPath(Path root) throws IOException {
+        if (Files.isDirectory(root, LinkOption.NOFOLLOW_LINKS)) {
+            List<Path> entries;
+            try (Stream<Path> list = Files.list(root)) {
+                entries = list.toList();
+            }
+            for (Path entry : entries) {
+                deleteByPath(entry);
+            }
+        }
+        deleteQuietly(() -> Files.deleteIfExists(root));
+    }
+
+    private interface Deletion {
+        void run() throws IOException;
+    }
+
+    /** One deletion whose file may be gone already, or be a folder that something filled meanwhile. */
+    private static void deleteQuietly(Deletion deletion) throws IOException {
+        try {
+            deletion.run();
+        } catch (NoSuchFileException | java.nio.file.DirectoryNotEmptyException e) {
+            // Gone already, or refilled: the next sweep or close round takes it.
+        }
     }
 
     private static boolean alive(String pid) {

@@ -75,20 +75,19 @@ final class CompressCommand implements Callable<Integer> {
         if (every != null) {
             OptionChecks.positiveFinite("--every", every);
         }
-        if (out != null && summary != null && out.toAbsolutePath().normalize().equals(summary.toAbsolutePath().normalize())) {
+        SceneFile file = new SceneFile(sceneFile);
+        if (out != null && summary != null && AtomicOutput.resolved(out).equals(AtomicOutput.resolved(summary))) {
             throw new BadInputException("--out and --summary name the same file " + Quoted.fileName(out.toString()));
         }
-        if (out != null) {
-            AtomicOutput.checkWritable(out, "--out");
-        }
-        if (summary != null) {
-            AtomicOutput.checkWritable(summary, "--summary");
-        }
-        SceneFile file = new SceneFile(sceneFile);
+        checkOutput(out, "--out", file);
+        checkOutput(summary, "--summary", file);
         Scene scene = file.about(() -> SceneReader.read(file.path()));
         if (!scene.effects().grows()) {
             throw new BadInputException(Quoted.fileName(sceneFile)
                     + ": effects.growth: compress needs a scene with a growth rate (\"effects\": {\"growth\": G})");
+        }
+        if (every != null) {
+            WorkBounds.checkSamples(sceneFile, scene, every);
         }
         try (AtomicOutput files = new AtomicOutput()) {
             GrowthRun run;
@@ -122,6 +121,14 @@ final class CompressCommand implements Callable<Integer> {
             files.commit();
         }
         return 0;
+    }
+
+    /** Bad input unless {@code output} (if given) can be written and is not the scene file. */
+    private static void checkOutput(Path output, String option, SceneFile scene) {
+        if (output != null) {
+            AtomicOutput.checkWritable(output, option);
+            AtomicOutput.checkNotInput(output, option, scene.about(scene::path), "the scene file");
+        }
     }
 
     /** PACKING.csv: {@code id,x,y,radius}, numbers that parse back to the same double. */

@@ -43,6 +43,9 @@ final class ResumeCommand implements Callable<Integer> {
     @Mixin
     CheckpointOptions checkpoints;
 
+    @Mixin
+    LongRunOption allowLong;
+
     private final Charset stdoutCharset;
     private final PrintStream err;
 

@@ -15,10 +15,10 @@ import carom.core.scene.SceneReader;
 import carom.engines.EngineCatalog;
 import java.io.IOException;
 import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 
 /**
@@ -36,9 +36,6 @@ import java.util.Map;
  */
 record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampling, Outputs outputs,
                   RunCheckpoints checkpoints) {
-    /** Collisions above which a run is refused without --allow-long: a day at a million a second is 8.6e10. */
-    static final double LONG_RUN_COLLISIONS = 1e11;
-
     /**
      * How the run is set up.
      *
@@ -86,35 +83,75 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
             return out == null && summary == null;
         }
 
-        /** Bad input unless every output can be written and no two name the same path. */
-        void check() {
+        /**
+         * Bad input unless every output can be written, no two name the same path, none is the run's
+         * input file and none lies inside the report folder (which appears whole, renamed into place at
+         * the end). Paths are compared as they resolve (links, {@code ..}), not as spelled.
+         */
+        void check(Input input) {
+            Path inputFile;
+            try {
+                inputFile = Path.of(input.file());
+            } catch (InvalidPathException e) {
+                inputFile = null; // no file can be it; reading it says what is wrong with the name
+            }
             Map<Path, String> named = new LinkedHashMap<>();
-            checkFile(out, "--out", named);
-            checkFile(summary, "--summary", named);
-            checkFile(jfr, "--jfr", named);
-            checkFile(trajectory, "--trajectory", named);
-            checkFile(checkpoint, "--checkpoint", named);
+            Map<String, Path> given = new LinkedHashMap<>();
+            checkFile(out, "--out", named, given);
+            checkFile(summary, "--summary", named, given);
+            checkFile(jfr, "--jfr", named, given);
+            checkFile(trajectory, "--trajectory", named, given);
+            checkFile(checkpoint, "--checkpoint", named, given);
+            for (Map.Entry<String, Path> output : given.entrySet()) {
+                boolean exempt = output.getKey().equals("--checkpoint") && input.checkpointMayReplace();
+                if (inputFile != null && !exempt) {
+                    AtomicOutput.checkNotInput(output.getValue(), output.getKey(), inputFile, input.what());
+                }
+            }
             if (report != null) {
-                String earlier = named.putIfAbsent(report.toAbsolutePath().normalize(), "--report");
+                Path folder = AtomicOutput.resolved(report);
+                String earlier = named.putIfAbsent(folder, "--report");
                 if (earlier != null) {
                     throw new BadInputException(earlier + " and --report name the same path "
                             + Quoted.fileName(report.toString()));
                 }
+                named.forEach((file, option) -> {
+                    if (file.startsWith(folder) && !file.equals(folder)) {
+                        throw new BadInputException(option + ": " + Quoted.fileName(given.get(option).toString())
+                                + " is inside the --report folder, which is written whole at the end; write it elsewhere");
+                    }
+                });
                 AtomicOutput.checkFolderWritable(report, "--report");
             }
         }
 
         /** {@code file} must be writable and not named by another output option already in {@code named}. */
-        private static void checkFile(Path file, String option, Map<Path, String> named) {
+        private static void checkFile(Path file, String option, Map<Path, String> named, Map<String, Path> given) {
             if (file == null) {
                 return;
             }
-            String earlier = named.putIfAbsent(file.toAbsolutePath().normalize(), option);
+            String earlier = named.putIfAbsent(AtomicOutput.resolved(file), option);
             if (earlier != null) {
                 throw new BadInputException(earlier + " and " + option + " name the same file "
                         + Quoted.fileName(file.toString()));
             }
+            given.put(option, file);
             AtomicOutput.checkWritable(file, option);
+        }
+    }
+
+    /**
+     * The file a run reads, which no output may replace; a resumed run may checkpoint into the
+     * checkpoint it resumed ({@code checkpointMayReplace}): that file is read whole before the run, and
+     * each checkpoint replaces it whole.
+     */
+    record Input(String file, String what, boolean checkpointMayReplace) {
+        static Input scene(String file) {
+            return new Input(file, "the scene file", false);
+        }
+
+        static Input checkpoint(String file) {
+            return new Input(file, "the checkpoint being resumed", true);
         }
     }
 
@@ -133,7 +170,7 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
         command.checkpoints.check(engine);
         Outputs outputs = new Outputs(command.finals, command.trajectory, command.report, command.jfr,
                 command.checkpoints);
-        outputs.check();
+        outputs.check(Input.scene(command.sceneFile));
 
         Scene fromFile = file.about(() -> {
             refuseCheckpointAsScene(file.path());
@@ -147,13 +184,11 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
         if (outputs.trajectory() != null) {
             TrajectoryOutput.checkNames(outputs.trajectory(), scene);
         }
-        double expected = WorkEstimate.collisions(scene, scene.until());
-        if (expected > LONG_RUN_COLLISIONS && !command.allowLong) {
-            throw new BadInputException(String.format(Locale.ROOT, "%s: about %.2g collisions to reach t = %s, "
-                    + "days or more at a million a second; shorten until, check the speeds and gravity, or pass --allow-long",
-                    Quoted.fileName(command.sceneFile), expected, scene.until()));
-        }
         double every = command.every == null ? Double.NaN : command.every;
+        new WorkBounds(scene, 0, every, outputs.checkpoint() == null ? Double.POSITIVE_INFINITY
+                : command.checkpoints.interval(Double.POSITIVE_INFINITY), outputs.trajectory() != null)
+                .check(command.sceneFile, command.allowLong.allowed);
+        double expected = WorkEstimate.collisions(scene, scene.until());
         Sampling sampling = new Sampling(every, command.observe,
                 command.observe == null ? null : Observing.of(scene, command.observe, every));
         if (sampling.observing() != null) {
@@ -173,7 +208,7 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
     static RunRequest resume(ResumeCommand command) {
         Double until = command.until.checked();
         Outputs outputs = new Outputs(command.finals, command.trajectory, command.report, null, command.checkpoints);
-        outputs.check();
+        outputs.check(Input.checkpoint(command.checkpointFile));
         SceneFile file = new SceneFile(command.checkpointFile);
         CheckpointFile saved = file.about(() -> CheckpointFile.read(file.path()));
         Engine engine = file.about(() -> EnginesCommand.engineNamed(saved.engine()));
@@ -182,7 +217,7 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
             Tunables.check(engine.name(), engine.spec().tunables(), saved.tunables());
             return null;
         });
-        double end = until == null ? saved.until() : until;
+        double end = until == null ? file.about(() -> OptionChecks.positiveFinite("its end time", saved.until())) : until;
         if (end < saved.time()) {
             throw new BadInputException("--until: the checkpoint is at t = " + saved.time() + ", later than " + end);
         }
@@ -196,10 +231,13 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
         if (outputs.trajectory() != null) {
             TrajectoryOutput.checkNames(outputs.trajectory(), scene);
         }
+        double checkpointEvery = command.checkpoints.interval(saved.checkpointEvery());
+        new WorkBounds(scene, saved.time(), saved.every(), outputs.checkpoint() == null ? Double.POSITIVE_INFINITY
+                : checkpointEvery, outputs.trajectory() != null).check(command.checkpointFile, command.allowLong.allowed);
         Sampling sampling = new Sampling(saved.every(), saved.observe(), saved.observe() == null ? null
                 : file.about(() -> Observing.restored(scene, saved.observables(), saved.lastVirialSum())));
         RunCheckpoints checkpoints = outputs.checkpoint() == null ? null : new RunCheckpoints(outputs.checkpoint(),
-                saved.continuedTo(end, command.checkpoints.interval(saved.checkpointEvery())), sampling.observing());
+                saved.continuedTo(end, checkpointEvery), sampling.observing());
         Settings settings = new Settings(commandLine(command.spec), saved.sceneFileName(), saved.threads(),
                 saved.tunables(), new Start.Resumed(command.checkpointFile, saved.engineState()));
         return new RunRequest(engine, scene, settings, sampling, outputs, checkpoints);

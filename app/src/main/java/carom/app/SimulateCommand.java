@@ -82,9 +82,8 @@ final class SimulateCommand implements Callable<Integer> {
     @Mixin
     CheckpointOptions checkpoints;
 
-    @Option(names = "--allow-long", description = "Run even when the scene would take more than "
-            + "about 1e11 collisions (days at a million a second), which is otherwise refused as a likely mistake.")
-    boolean allowLong;
+    @Mixin
+    LongRunOption allowLong;
 
     @Option(names = "--option", paramLabel = "KEY=VALUE",
             description = "Engine tunable, for example cellFactor=2; may be repeated.")

@@ -57,6 +57,10 @@ public final class AnimateCommand implements Callable<Integer> {
     static final int MAX_SIZE = 4000;
     /** Frames per second: a GIF's delay is in hundredths of a second, and browsers slow down delays under 2. */
     static final double MAX_FPS = 50;
+    /** The longest delay a GIF can hold is 65,535 hundredths of a second (an unsigned 16-bit field). */
+    static final int MAX_DELAY = 0xFFFF;
+    /** Fewest frames per second: one frame per {@link #MAX_DELAY} hundredths of a second. */
+    static final double MIN_FPS = 100.0 / MAX_DELAY;
     /** Frames of the default animation: DT = the end time / this. */
     static final int DEFAULT_STEPS = 100;
 
@@ -86,7 +90,7 @@ public final class AnimateCommand implements Callable<Integer> {
     Double until;
 
     @Option(names = "--fps", paramLabel = "F", defaultValue = "10",
-            description = "Frames per second, more than 0 and at most 50 (default ${DEFAULT-VALUE}).")
+            description = "Frames per second, from 100/65535 (a GIF holds a frame at most 655.35 s) to 50 (default ${DEFAULT-VALUE}).")
     double fps;
 
     @Option(names = "--size", paramLabel = "PIXELS", defaultValue = "" + DEFAULT_SIZE,
@@ -110,8 +114,9 @@ public final class AnimateCommand implements Callable<Integer> {
         if (mode == null) {
             throw new BadInputException("--color: unknown colour mode " + Quoted.of(color) + " (known: species, speed)");
         }
-        if (!(fps > 0) || fps > MAX_FPS) {
-            throw new BadInputException("--fps: must be a number > 0 and at most " + (int) MAX_FPS + ", got " + fps);
+        if (!(fps >= MIN_FPS) || fps > MAX_FPS) {
+            throw new BadInputException("--fps: must be a number from 100/" + MAX_DELAY + " (a GIF shows a frame at most "
+                    + MAX_DELAY / 100.0 + " s) to " + (int) MAX_FPS + ", got " + fps);
         }
         if (size < MIN_SIZE || size > MAX_SIZE) {
             throw new BadInputException("--size: must be from " + MIN_SIZE + " to " + MAX_SIZE + " pixels, got " + size);
@@ -126,6 +131,13 @@ public final class AnimateCommand implements Callable<Integer> {
             throw new BadInputException("give a scene file, or --trajectory FRAMES.xyz (and the scene it came from, for its colours)");
         }
         AtomicOutput.checkWritable(out, "--out");
+        if (trajectory != null) {
+            AtomicOutput.checkNotInput(out, "--out", trajectory, "the trajectory");
+        }
+        if (sceneFile != null) {
+            SceneFile scene = new SceneFile(sceneFile);
+            AtomicOutput.checkNotInput(out, "--out", scene.about(scene::path), "the scene file");
+        }
         int delay = (int) Math.max(2, Math.round(100 / fps));
         String comment = Provenance.commandLine(spec.commandLine().getParseResult().originalArgs())
                 + "\nmachine: " + Provenance.machine();

@@ -12,6 +12,8 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.Reader;
 import java.io.UncheckedIOException;
+import java.nio.ByteBuffer;
+import java.nio.channels.SeekableByteChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
@@ -49,6 +51,8 @@ public record CheckpointFile(String sceneFileName, byte[] sceneText, String engi
     /** Magic, version, length before the payload; the checksum after it. */
     static final int HEADER_BYTES = MAGIC.length + 4 + 8;
     static final int TRAILER_BYTES = 4;
+    /** The largest file read: what one Java array holds (the whole file is read into one). */
+    static final long MAX_FILE_BYTES = Integer.MAX_VALUE - 8;
 
     public CheckpointFile {
         tunables = Map.copyOf(tunables);
@@ -135,6 +139,9 @@ public record CheckpointFile(String sceneFileName, byte[] sceneText, String engi
 
     /** Whether {@code file} starts as a checkpoint does (so that {@code simulate} can say what it was given). */
     public static boolean looksLikeOne(Path file) {
+        if (!Files.isRegularFile(file)) {
+            return false; // a FIFO would block the look, a device never end it
+        }
         try (InputStream in = Files.newInputStream(file)) {
             return Arrays.equals(in.readNBytes(MAGIC.length), MAGIC);
         } catch (IOException | RuntimeException e) {
@@ -142,11 +149,36 @@ public record CheckpointFile(String sceneFileName, byte[] sceneText, String engi
         }
     }
 
-    /** Reads and checks a checkpoint file; any problem is bad input, its message without the file name. */
+    /**
+     * Reads and checks a checkpoint file; any problem is bad input, its message without the file name.
+     * What is not a regular file (a FIFO, which would block, a device such as /dev/zero, which never
+     * ends) is refused before it is opened, and a file larger than {@link #MAX_FILE_BYTES} or than its
+     * header says before its payload is read.
+     */
     public static CheckpointFile read(Path file) {
         byte[] bytes;
         try {
-            bytes = Files.readAllBytes(file);
+            if (Files.exists(file) && !Files.isRegularFile(file)) {
+                throw new BadInputException("not a regular file (a folder, device or FIFO); a checkpoint is a file "
+                        + "'simulate --checkpoint' wrote");
+            }
+            try (SeekableByteChannel in = Files.newByteChannel(file)) {
+                long size = in.size();
+                if (size > MAX_FILE_BYTES) {
+                    throw new BadInputException("too large for a checkpoint: " + size + " bytes, more than " + MAX_FILE_BYTES);
+                }
+                ByteBuffer header = ByteBuffer.allocate((int) Math.min(size, HEADER_BYTES));
+                while (header.hasRemaining() && in.read(header) >= 0) {
+                    // fills the header, or what the file has of it
+                }
+                checkHeader(header.array(), size);
+                bytes = new byte[(int) size];
+                System.arraycopy(header.array(), 0, bytes, 0, header.capacity());
+                ByteBuffer rest = ByteBuffer.wrap(bytes, header.capacity(), bytes.length - header.capacity());
+                while (rest.hasRemaining() && in.read(rest) >= 0) {
+                    // reads to the size measured; a file that shrank meanwhile fails the checks below
+                }
+            }
         } catch (NoSuchFileException e) {
             throw new BadInputException("no such file");
         } catch (IOException e) {
@@ -157,27 +189,37 @@ public record CheckpointFile(String sceneFileName, byte[] sceneText, String engi
         return decode(bytes);
     }
 
-    static CheckpointFile decode(byte[] bytes) {
-        if (bytes.length < MAGIC.length || !Arrays.equals(bytes, 0, MAGIC.length, MAGIC, 0, MAGIC.length)) {
+    /**
+     * Bad input unless {@code head} (the file's first bytes, up to {@link #HEADER_BYTES}) is a checkpoint's
+     * header of this format version whose payload length is that of a file of {@code fileSize} bytes;
+     * returns the payload length.
+     */
+    private static int checkHeader(byte[] head, long fileSize) {
+        if (head.length < MAGIC.length || !Arrays.equals(head, 0, MAGIC.length, MAGIC, 0, MAGIC.length)) {
             throw new BadInputException("not a carom checkpoint (it does not start with " + new String(MAGIC,
                     StandardCharsets.US_ASCII) + "; a scene is run with 'carom simulate')");
         }
-        if (bytes.length < HEADER_BYTES + TRAILER_BYTES) {
-            throw new BadInputException("truncated checkpoint: " + bytes.length + " bytes");
+        if (fileSize < HEADER_BYTES + TRAILER_BYTES) {
+            throw new BadInputException("truncated checkpoint: " + fileSize + " bytes");
         }
-        java.nio.ByteBuffer header = java.nio.ByteBuffer.wrap(bytes, MAGIC.length, 12);
+        ByteBuffer header = ByteBuffer.wrap(head, MAGIC.length, 12);
         int version = header.getInt();
         if (version != VERSION) {
             throw new BadInputException("checkpoint format version " + version + ", this carom reads version " + VERSION);
         }
         long length = header.getLong();
-        long expected = (long) bytes.length - HEADER_BYTES - TRAILER_BYTES;
+        long expected = fileSize - HEADER_BYTES - TRAILER_BYTES;
         if (length != expected) {
             throw new BadInputException(length > expected ? "truncated checkpoint: " + expected + " of " + length
                     + " payload bytes" : "checkpoint with " + (expected - length) + " bytes after its end");
         }
-        byte[] body = Arrays.copyOfRange(bytes, HEADER_BYTES, HEADER_BYTES + (int) length);
-        int stored = java.nio.ByteBuffer.wrap(bytes, HEADER_BYTES + (int) length, 4).getInt();
+        return (int) length;
+    }
+
+    static CheckpointFile decode(byte[] bytes) {
+        int length = checkHeader(Arrays.copyOf(bytes, Math.min(bytes.length, HEADER_BYTES)), bytes.length);
+        byte[] body = Arrays.copyOfRange(bytes, HEADER_BYTES, HEADER_BYTES + length);
+        int stored = ByteBuffer.wrap(bytes, HEADER_BYTES + length, 4).getInt();
         if (stored != crc(body)) {
             throw new BadInputException("corrupt checkpoint: its checksum does not match its content");
         }

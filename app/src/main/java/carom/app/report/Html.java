@@ -52,13 +52,22 @@ final class Html {
         return null;
     }
 
-    /** {@code <img src="data:...;base64,..." alt="..."/>}: the file's bytes in the page itself, read in chunks. */
+    /**
+     * {@code <img src="data:...;base64,..." alt="..."/>}: the file's bytes in the page itself, read in
+     * chunks; a file over {@link ReportSource#MAX_IMAGE_BYTES} gets a note in its place instead.
+     */
     static void image(Writer w, Path file, String alt) throws IOException {
+        long size = Files.size(file);
+        if (size > ReportSource.MAX_IMAGE_BYTES) {
+            w.write("<span class=\"note\">" + escape(file.getFileName() + ": not embedded, " + size
+                    + " bytes, more than " + ReportSource.MAX_IMAGE_BYTES) + "</span>");
+            return;
+        }
         w.write("<img src=\"data:");
         w.write(imageType(file));
         w.write(";base64,");
         Base64.Encoder base64 = Base64.getEncoder();
-        try (InputStream in = Files.newInputStream(file)) {
+        try (InputStream in = ReportSource.open(file)) {
             byte[] chunk = new byte[CHUNK];
             int filled;
             while ((filled = in.readNBytes(chunk, 0, CHUNK)) > 0) {

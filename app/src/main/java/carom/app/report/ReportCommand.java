@@ -16,7 +16,9 @@ import picocli.CommandLine.Spec;
 /**
  * {@code carom report DIR... --out PAGE.html}: one self-contained HTML page of what carom wrote into
  * the given folders ({@link ReportPage}). Every input is read and checked before the page is written;
- * the page appears whole or not at all ({@link AtomicOutput}).
+ * the page appears whole or not at all ({@link AtomicOutput}), and never over one of its inputs. In a
+ * folder, only regular files are read (a symbolic link is passed over, wherever it leads), each within
+ * a bound ({@link ReportSource#MAX_TEXT_BYTES}, {@link ReportSource#MAX_IMAGE_BYTES}, {@link CsvRows}).
  */
 @Command(name = "report", mixinStandardHelpOptions = true, sortOptions = false,
         description = {"Gather what 'experiment', 'study accuracy', 'simulate --report' and 'animate' wrote into one HTML "
@@ -44,6 +46,7 @@ public final class ReportCommand implements Callable<Integer> {
         AtomicOutput.checkWritable(out, "--out");
         List<ReportSource> sources = new ArrayList<>();
         for (Path p : inputs) {
+            AtomicOutput.checkNotInput(out, "--out", p, "an input of the page");
             sources.add(ReportSource.of(p));
         }
         String command = Provenance.commandLine(spec.commandLine().getParseResult().originalArgs());

@@ -2,8 +2,6 @@ package carom.app.report;
 
 import java.io.IOException;
 import java.io.Writer;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.HashSet;
 import java.util.List;
@@ -73,7 +71,7 @@ final class ReportPage {
         madeBy(w, s.provenance());
         Set<Path> shown = new HashSet<>();
         if (s.markdown() != null) {
-            String text = Files.readString(s.markdown(), StandardCharsets.UTF_8);
+            String text = ReportSource.text(s.markdown());
             w.write("<div class=\"report\">\n");
             Markdown.write(w, text, 2, (out, target, alt) -> {
                 Path file = fileNamed(s.path(), target);
@@ -89,7 +87,7 @@ final class ReportPage {
         for (String key : s.observables()) {
             w.write("<h3>" + Html.escape(key) + "</h3>\n");
             Path png = s.path().resolve(key + ".png");
-            if (Files.isRegularFile(png)) {
+            if (ReportSource.plainFile(png)) {
                 figure(w, png, key + ".png");
                 shown.add(png);
             }
@@ -115,7 +113,14 @@ final class ReportPage {
         if (!s.csvs().isEmpty()) {
             w.write("<h3>Tables</h3>\n");
             for (Path csv : s.csvs()) {
-                CsvRows rows = CsvRows.read(csv, MAX_ROWS + 1);
+                CsvRows rows;
+                try {
+                    rows = CsvRows.read(csv, MAX_ROWS + 1);
+                } catch (CsvRows.TooWide e) {
+                    w.write("<p class=\"note\">" + Html.escape(csv.getFileName() + ": not shown, " + e.getMessage())
+                            + ".</p>\n");
+                    continue;
+                }
                 w.write("<details><summary>" + Html.escape(csv.getFileName().toString()) + " ("
                         + Math.max(0, rows.total() - 1) + " rows)</summary>\n");
                 Html.table(w, rows.kept(), rows.total());
@@ -156,6 +161,6 @@ final class ReportPage {
             return null;
         }
         Path file = folder.resolve(target);
-        return Files.isRegularFile(file) ? file : null;
+        return ReportSource.plainFile(file) ? file : null;
     }
 }

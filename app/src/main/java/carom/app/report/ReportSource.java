@@ -3,8 +3,10 @@ package carom.app.report;
 import carom.core.BadInputException;
 import carom.core.Quoted;
 import java.io.IOException;
+import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Iterator;
@@ -38,11 +40,43 @@ record ReportSource(Path path, String kind, Path markdown, Map<String, String> p
     private static final Pattern MD_MACHINE = Pattern.compile("(?m)^(?:\\| machine \\| (.*?) \\||- machine at start: (.*))$");
     private static final Pattern MD_COMMAND = Pattern.compile("(?m)^```\\n(carom .*)$");
 
+    /** Bytes of a report.md or accuracy.md read: far more than carom writes, far less than a heap. */
+    static final long MAX_TEXT_BYTES = 16L << 20;
+    /** Bytes of an image embedded in the page (or a GIF looked into); a larger one gets a note instead. */
+    static final long MAX_IMAGE_BYTES = 64L << 20;
+
+    /**
+     * Whether {@code file} in a folder is one the page may read: a regular file itself, never a symbolic
+     * link (which could lead out of the folder, to /etc/passwd or a key).
+     */
+    static boolean plainFile(Path file) {
+        return Files.isRegularFile(file, LinkOption.NOFOLLOW_LINKS);
+    }
+
+    /** Opens a file of a folder, refusing one that has become a symbolic link since it was looked at. */
+    static InputStream open(Path file) throws IOException {
+        return Files.newInputStream(file, LinkOption.NOFOLLOW_LINKS);
+    }
+
+    /** A report's Markdown or run record, read whole: bad input beyond {@link #MAX_TEXT_BYTES}. */
+    static String text(Path file) throws IOException {
+        try (InputStream in = open(file)) {
+            byte[] bytes = in.readNBytes((int) MAX_TEXT_BYTES + 1);
+            if (bytes.length > MAX_TEXT_BYTES) {
+                throw new BadInputException(Quoted.fileName(file.toString()) + ": more than " + MAX_TEXT_BYTES
+                        + " bytes, not a report carom wrote");
+            }
+            return new String(bytes, StandardCharsets.UTF_8);
+        }
+    }
+
     /** Reads what {@code path} holds; bad input if it is missing or holds nothing carom wrote. */
     static ReportSource of(Path path) {
         String shown = Quoted.fileName(path.toString());
         if (Files.isRegularFile(path)) {
-            Gif gif = Html.imageType(path) != null && path.toString().toLowerCase(Locale.ROOT).endsWith(".gif") ? gif(path) : null;
+            // Named by the user, so followed if it is a link: the page then reads the file it leads to.
+            Path file = realPath(path);
+            Gif gif = Html.imageType(path) != null && path.toString().toLowerCase(Locale.ROOT).endsWith(".gif") ? gif(file) : null;
             if (gif == null || !gif.comment().startsWith("carom animate")) {
                 throw new BadInputException(shown + " is neither a folder nor a GIF that 'carom animate' wrote");
             }
@@ -75,15 +109,15 @@ record ReportSource(Path path, String kind, Path markdown, Map<String, String> p
             }
         }
         try {
-            if (Files.isRegularFile(path.resolve(EXPERIMENT_REPORT)) || Files.isRegularFile(path.resolve(STUDY_REPORT))) {
-                boolean experiment = Files.isRegularFile(path.resolve(EXPERIMENT_REPORT));
+            if (plainFile(path.resolve(EXPERIMENT_REPORT)) || plainFile(path.resolve(STUDY_REPORT))) {
+                boolean experiment = plainFile(path.resolve(EXPERIMENT_REPORT));
                 Path md = path.resolve(experiment ? EXPERIMENT_REPORT : STUDY_REPORT);
                 return new ReportSource(path, experiment ? "experiment" : "study accuracy", md,
-                        provenanceOf(Files.readString(md, StandardCharsets.UTF_8)), List.of(), csvs, pngs, gifs);
+                        provenanceOf(text(md)), List.of(), csvs, pngs, gifs);
             }
-            if (Files.isRegularFile(path.resolve(RunRecord.FILE)) || !observables.isEmpty()) {
+            if (plainFile(path.resolve(RunRecord.FILE)) || !observables.isEmpty()) {
                 Path run = path.resolve(RunRecord.FILE);
-                Map<String, String> provenance = Files.isRegularFile(run) ? RunRecord.read(run) : Map.of();
+                Map<String, String> provenance = plainFile(run) ? RunRecord.read(run) : Map.of();
                 return new ReportSource(path, "simulate --report", null, provenance, observables, csvs, pngs, gifs);
             }
         } catch (IOException e) {
@@ -98,9 +132,18 @@ record ReportSource(Path path, String kind, Path markdown, Map<String, String> p
         return new ReportSource(path, "animation", null, provenance, List.of(), csvs, pngs, gifs);
     }
 
+    private static Path realPath(Path file) {
+        try {
+            return file.toRealPath();
+        } catch (IOException e) {
+            throw new BadInputException(Quoted.fileName(file.toString()) + ": cannot read it: "
+                    + Quoted.bare(String.valueOf(e.getMessage())));
+        }
+    }
+
     private static List<Path> filesIn(Path folder) {
         try (Stream<Path> s = Files.list(folder)) {
-            return s.filter(Files::isRegularFile).filter(p -> !p.getFileName().toString().startsWith(".")).sorted().toList();
+            return s.filter(ReportSource::plainFile).filter(p -> !p.getFileName().toString().startsWith(".")).sorted().toList();
         } catch (IOException e) {
             throw new BadInputException("cannot read folder " + Quoted.fileName(folder.toString()) + ": "
                     + Quoted.bare(String.valueOf(e.getMessage())));
@@ -134,8 +177,15 @@ record ReportSource(Path path, String kind, Path markdown, Map<String, String> p
         return p;
     }
 
-    /** The GIF's frames, delay and comment, or null if it is not a GIF that can be read. */
+    /** The GIF's frames, delay and comment, or null if it is not a GIF that can be read (or one too large to embed). */
     static Gif gif(Path file) {
+        try {
+            if (Files.size(file) > MAX_IMAGE_BYTES) {
+                return null;
+            }
+        } catch (IOException e) {
+            return null;
+        }
         Iterator<ImageReader> readers = ImageIO.getImageReadersByFormatName("gif");
         ImageReader reader = readers.next();
         try (ImageInputStream in = ImageIO.createImageInputStream(file.toFile())) {

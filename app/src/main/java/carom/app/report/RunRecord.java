@@ -38,10 +38,10 @@ public record RunRecord(String command, String engine, String scene, String scen
 
     /**
      * What {@code folder}'s run.json says, label to text in the order a page shows them; an unreadable
-     * file is bad input.
+     * file (or one larger than {@link ReportSource#MAX_TEXT_BYTES}) is bad input.
      */
     static Map<String, String> read(Path file) throws IOException {
-        JsonNode o = JSON.readTree(file.toFile());
+        JsonNode o = JSON.readTree(ReportSource.text(file));
         if (o == null || !o.isObject() || !o.path("made_by").asText().equals("carom simulate --report")) {
             throw new IOException("not a run.json that 'carom simulate --report' wrote");
         }

@@ -170,7 +170,7 @@ class AnimateCommandTest {
 
     @ParameterizedTest
     @ValueSource(strings = {"--every=0", "--every=-1", "--every=NaN", "--every=Infinity", "--fps=0", "--fps=-2",
-            "--fps=NaN", "--fps=Infinity", "--fps=100", "--size=0", "--size=-5", "--size=100000", "--color=rainbow",
+            "--fps=NaN", "--fps=Infinity", "--fps=100", "--fps=0.0001", "--size=0", "--size=-5", "--size=100000", "--color=rainbow",
             "--every=0.00001", "--until=0", "--engine=stepped", "--out=missing/movie.gif"})
     void badInputIsRefusedAndNothingIsWritten(String option) throws IOException {
         Path scene = scene();
