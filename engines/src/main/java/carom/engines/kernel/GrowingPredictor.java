@@ -1,0 +1,74 @@
+package carom.engines.kernel;
+
+import static carom.engines.kernel.DiscTable.CNEXT;
+import static carom.engines.kernel.DiscTable.IS;
+import static carom.engines.kernel.DiscTable.NIL;
+import static carom.engines.kernel.DiscTable.T;
+import static carom.engines.kernel.DiscTable.VX;
+import static carom.engines.kernel.DiscTable.VY;
+import static carom.engines.kernel.DiscTable.X;
+import static carom.engines.kernel.DiscTable.Y;
+
+import carom.core.physics.GrowthLaw;
+
+/**
+ * The predictions of a {@link CellPredictor} on a table whose radii grow: the same cells, crossings
+ * and scheduling, with only the contact primitives replaced by the table's {@link GrowthLaw} (pair
+ * and wall contacts of surfaces that move apart as they grow). Growth runs in straight flight only
+ * (the scene reader refuses it under gravity), so the primitives read positions on the records.
+ *
+ * <p>Implementation notes: pairs are seen through the nearest image ({@code Boundary.separationX}),
+ * not the cell scan's image shifts; the two agree whenever a periodic axis has 4 cells or more, and
+ * the stages of a growth run keep them there. The radii's scale is the table's, moved by
+ * {@link DiscTable#anchorGrowth}.
+ */
+final class GrowingPredictor extends CellPredictor {
+    private final GrowthLaw growth;
+
+    GrowingPredictor(GrowingMotion motion, OwnerFilter filter) {
+        super(motion, filter, true);
+        this.growth = table.growth;
+    }
+
+    /** {@link GrowthLaw#pairContact} of discs i and j at local {@code now}; no horizon bounds it. */
+    @Override
+    double contactTime(int i, int j, double now, double horizon) {
+        int at = i * stride;
+        int jt = j * stride;
+        double dx = boundary.separationX(rec[jt + X] + rec[jt + VX] * (now - rec[jt + T])
+                - (rec[at + X] + rec[at + VX] * (now - rec[at + T])));
+        double dy = boundary.separationY(rec[jt + Y] + rec[jt + VY] * (now - rec[jt + T])
+                - (rec[at + Y] + rec[at + VY] * (now - rec[at + T])));
+        return growth.pairContact(dx, dy, rec[jt + VX] - rec[at + VX], rec[jt + VY] - rec[at + VY],
+                radius(i) + radius(j), table.scaleAt(now));
+    }
+
+    /** {@link GrowthLaw#wallContact} of disc i at local {@code now}. */
+    @Override
+    double wallTime(int i, int wall, double now) {
+        int at = i * stride;
+        double dt = now - rec[at + T];
+        return growth.wallContact(wall, rec[at + X] + rec[at + VX] * dt, rec[at + Y] + rec[at + VY] * dt,
+                rec[at + VX], rec[at + VY], radius(i), table.scaleAt(now), walls);
+    }
+
+    /** Lowers {@code found} to disc i's earliest {@link #contactTime} with a disc of cells {@code base + cells[k]}, k < m. */
+    @Override
+    void scan(int i, double now, double horizon, int base, int[] cells, double[] shiftX, double[] shiftY, int m) {
+        double best = found;
+        int bestP = foundP;
+        for (int k = 0; k < m; k++) {
+            for (int j = cellHead[base + cells[k]]; j != NIL; j = ir[j * IS + CNEXT]) {
+                if (j != i) {
+                    double t = contactTime(i, j, now, horizon);
+                    if (t < best) {
+                        best = t;
+                        bestP = j;
+                    }
+                }
+            }
+        }
+        found = best;
+        foundP = bestP;
+    }
+}
