@@ -60,8 +60,8 @@ public sealed class CellPredictor permits GrowingPredictor {
     private final int rows;
     private final double cellW;
     private final double cellH;
-    final double width;
-    final double height;
+    private final double width;
+    private final double height;
     private final boolean straightImages;
     private final boolean periodic;
     private final double recheckX;
@@ -123,14 +123,15 @@ public sealed class CellPredictor permits GrowingPredictor {
      */
     public CellPredictor(DiscMotion motion, OwnerFilter filter) {
         this(motion, filter, false);
-        if (motion.table.growth.grows()) {
-            throw new IllegalArgumentException("a table whose discs grow is predicted by CellPredictor.of");
-        }
     }
 
-    /** The constructor of both variants; {@code growthVariant} is only what keeps it apart from the public one. */
+    /** A predictor of either variant: {@code growthVariant} says which, and must match the table's law. */
     CellPredictor(DiscMotion motion, OwnerFilter filter, boolean growthVariant) {
         DiscTable table = motion.table;
+        if (table.growth.grows() != growthVariant) {
+            throw new IllegalArgumentException(growthVariant ? "a table of rigid discs is predicted by CellPredictor"
+                    : "a table whose discs grow is predicted by GrowingPredictor (CellPredictor.of)");
+        }
         this.motion = motion;
         this.pair = motion.pair;
         this.rec = table.rec;

@@ -49,10 +49,10 @@ public sealed class DiscMotion permits GrowingMotion {
     // The table's fields, copied (final) so that hot paths read them with one load.
     private final Scene scene;
     final double[] rec;
-    final int stride;
+    private final int stride;
     private final double sharedRadius;
     private final double sharedInvMass;
-    final int[] ir;
+    private final int[] ir;
     private final int[] cellHead;
     private final int cols;
     private final int rows;
@@ -60,8 +60,8 @@ public sealed class DiscMotion permits GrowingMotion {
     private final double height;
     private final boolean straight;
     private final Flight flight;
-    final Boundary boundary;
-    final Restitution restitution;
+    private final Boundary boundary;
+    private final Restitution restitution;
     /** Under gravity every contact with something immovable is checked for rest (StallGuard). */
     private final boolean gravity;
     /** Resting contact: each disc's inverse mass while awake (null without gravity). */
@@ -71,10 +71,10 @@ public sealed class DiscMotion permits GrowingMotion {
     private long wakes;
     private double energyPutToRest;
     /** Scene id of each internal disc: where the final state puts it. */
-    final int[] sceneIds;
+    private final int[] sceneIds;
 
     /** Told every collision (null: none). */
-    final CollisionObserver collisions;
+    private final CollisionObserver collisions;
 
     /** Slots 0 and 1: discs copied in for core physics that works on {@link Discs}. */
     final Discs pair = new Discs(2);
@@ -95,13 +95,14 @@ public sealed class DiscMotion permits GrowingMotion {
     /** Changes to a rigid table's records, telling {@code collisions} every collision (null: none). */
     public DiscMotion(DiscTable table, CollisionObserver collisions) {
         this(table, collisions, false);
-        if (table.growth.grows()) {
-            throw new IllegalArgumentException("a table whose discs grow is changed by DiscMotion.of");
-        }
     }
 
-    /** The constructor of both variants; {@code growthVariant} is only what keeps it apart from the public one. */
+    /** Changes of either variant: {@code growthVariant} says which, and must match the table's law. */
     DiscMotion(DiscTable table, CollisionObserver collisions, boolean growthVariant) {
+        if (table.growth.grows() != growthVariant) {
+            throw new IllegalArgumentException(growthVariant ? "a table of rigid discs is changed by DiscMotion"
+                    : "a table whose discs grow is changed by GrowingMotion (DiscMotion.of)");
+        }
         this.table = table;
         this.collisions = collisions;
         this.scene = table.scene;
@@ -244,14 +245,18 @@ public sealed class DiscMotion permits GrowingMotion {
         // On the records, not through the pair window: no copies in and out at every collision.
         double w = PairLaw.collide(rec, at + VX, bt + VX, rec, at + VY, bt + VY, invMass(a), invMass(b), dx, dy, e);
         if (aMobile) {
-            restitution.collided(a, abs);
-            ir[a * IS + COUNT]++;
+            changed(a, abs);
         }
         if (bMobile) {
-            restitution.collided(b, abs);
-            ir[b * IS + COUNT]++;
+            changed(b, abs);
         }
         return w;
+    }
+
+    /** Disc i's trajectory changed at absolute {@code abs} by a collision: restitution told, its counter bumped. */
+    void changed(int i, double abs) {
+        restitution.collided(i, abs);
+        ir[i * IS + COUNT]++;
     }
 
     /**
@@ -285,8 +290,7 @@ public sealed class DiscMotion permits GrowingMotion {
             load(i, 0);
             boundary.reflect(pair, 0, wall, e);
             store(i, 0);
-            restitution.collided(i, abs);
-            ir[i * IS + COUNT]++;
+            changed(i, abs);
         }
     }
 
@@ -303,8 +307,7 @@ public sealed class DiscMotion permits GrowingMotion {
         rec[at + VX] = 0;
         rec[at + VY] = 0;
         rec[at + IM] = 0;
-        restitution.collided(i, abs);
-        ir[i * IS + COUNT]++;
+        changed(i, abs);
     }
 
     /** Sleeping disc i (advanced to now) wakes: mobile again with its own mass, at rest. */

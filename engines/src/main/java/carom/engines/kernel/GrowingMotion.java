@@ -1,7 +1,5 @@
 package carom.engines.kernel;
 
-import static carom.engines.kernel.DiscTable.COUNT;
-import static carom.engines.kernel.DiscTable.IS;
 import static carom.engines.kernel.DiscTable.VX;
 import static carom.engines.kernel.DiscTable.VY;
 
@@ -26,9 +24,6 @@ public final class GrowingMotion extends DiscMotion {
     /** Changes to {@code table}'s records (its discs grow), telling {@code collisions} every collision (null: none). */
     public GrowingMotion(DiscTable table, CollisionObserver collisions) {
         super(table, collisions, true);
-        if (!table.growth.grows()) {
-            throw new IllegalArgumentException("a table of rigid discs is changed by DiscMotion");
-        }
         this.growth = table.growth;
     }
 
@@ -52,11 +47,9 @@ public final class GrowingMotion extends DiscMotion {
         double w = growth.collidePair(rec, at + VX, bt + VX, rec, at + VY, bt + VY, ima, imb, dx, dy, e,
                 radius(a) + radius(b));
         added(kinetic(at, ima) + kinetic(bt, imb) - before);
-        restitution.collided(a, abs);
-        ir[a * IS + COUNT]++;
+        changed(a, abs);
         if (bMobile) {
-            restitution.collided(b, abs);
-            ir[b * IS + COUNT]++;
+            changed(b, abs);
         }
         return w;
     }
@@ -68,8 +61,7 @@ public final class GrowingMotion extends DiscMotion {
         double before = kinetic(at, im);
         rec[at + axis] = growth.bounce(wall, rec[at + axis], radius(i), e);
         added(kinetic(at, im) - before);
-        restitution.collided(i, abs);
-        ir[i * IS + COUNT]++;
+        changed(i, abs);
     }
 
     private void added(double energy) {
