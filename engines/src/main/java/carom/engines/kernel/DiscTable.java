@@ -75,10 +75,10 @@ public final class DiscTable {
     public final boolean fullOnCross;
     /**
      * How radii change ({@link GrowthLaw}, the scene's): at local time t they are R(0) (growthScale + G t),
-     * where R(0) is what the records hold and growthScale is 1 + G epoch ({@link #anchorGrowth}). The
-     * law is chosen once, here; a table whose radii grow is predicted and collided by the growth variants
-     * of the kernel ({@link DiscMotion#of}, {@link CellPredictor#of}), and a rigid table never looks at
-     * either value.
+     * where R(0) is what the records hold and growthScale is 1 + G epoch ({@link #anchorGrowth}). Taken
+     * once from the scene's {@link Physics}: a table whose radii grow is predicted and collided by the
+     * kernel's growth variants ({@link CellPredictor#of}, {@link DiscMotion#of}) and its copies of records
+     * by {@link #contactTime}'s growing primitive; nothing on a rigid table looks at the law or the scale.
      */
     final GrowthLaw growth;
     double growthScale = 1;
