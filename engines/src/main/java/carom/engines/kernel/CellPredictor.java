@@ -42,7 +42,8 @@ import carom.core.state.Discs;
  *
  * <p>Rigid discs only: a table whose radii grow is predicted by {@link GrowingPredictor}, which
  * overrides the contact primitives ({@link #of} chooses). In a run that never grows, that subclass is
- * never loaded, so every call to them is to this class's code, as if they were private.
+ * never loaded (nothing here names it where the verifier would load it), so the JIT sees one
+ * implementation of each: calls to them are to this class's code, as if they were private.
  */
 public sealed class CellPredictor permits GrowingPredictor {
     private static final double[] NO_SHIFT = new double[9];
@@ -108,8 +109,7 @@ public sealed class CellPredictor permits GrowingPredictor {
      * {@code filter} leaves it, or every cell if null.
      */
     public static CellPredictor of(DiscMotion motion, OwnerFilter filter) {
-        return motion.table.growth.grows() ? new GrowingPredictor((GrowingMotion) motion, filter)
-                : new CellPredictor(motion, filter);
+        return motion.table.growth.grows() ? GrowingPredictor.make(motion, filter) : new CellPredictor(motion, filter);
     }
 
     /** A predictor on a rigid table that sees every column ({@code fast}). */

@@ -42,7 +42,8 @@ import carom.core.state.Discs;
  *
  * <p>Rigid discs only: a table whose radii grow is changed by {@link GrowingMotion}, which overrides
  * the two collision primitives ({@link #of} chooses). In a run that never grows, that subclass is
- * never loaded, so every call to them is to this class's code, as if they were private.
+ * never loaded (nothing here names it where the verifier would load it), so the JIT sees one
+ * implementation of each: calls to them are to this class's code, as if they were private.
  */
 public sealed class DiscMotion permits GrowingMotion {
     final DiscTable table;
@@ -84,7 +85,7 @@ public sealed class DiscMotion permits GrowingMotion {
      * (null: none): this class for rigid discs, or {@link GrowingMotion}.
      */
     public static DiscMotion of(DiscTable table, CollisionObserver collisions) {
-        return table.growth.grows() ? new GrowingMotion(table, collisions) : new DiscMotion(table, collisions);
+        return table.growth.grows() ? GrowingMotion.make(table, collisions) : new DiscMotion(table, collisions);
     }
 
     /** Changes to a rigid table's records that tell no observer. */

@@ -27,6 +27,14 @@ public final class GrowingMotion extends DiscMotion {
         this.growth = table.growth;
     }
 
+    /**
+     * {@link DiscMotion#of} for a growing table. Typed as the superclass so that verifying
+     * {@code DiscMotion} does not load this class: a run that never grows never loads it.
+     */
+    static DiscMotion make(DiscTable table, CollisionObserver collisions) {
+        return new GrowingMotion(table, collisions);
+    }
+
     /** Kinetic energy added by this thread's collisions so far. */
     public double energyAdded() {
         return energyAdded;

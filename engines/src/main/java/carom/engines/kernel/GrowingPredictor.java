@@ -30,6 +30,15 @@ final class GrowingPredictor extends CellPredictor {
         this.growth = table.growth;
     }
 
+    /**
+     * {@link CellPredictor#of} for a growing table ({@code motion} a {@link GrowingMotion}). Typed as the
+     * superclass so that verifying {@code CellPredictor} does not load this class: a run that never grows
+     * never loads it.
+     */
+    static CellPredictor make(DiscMotion motion, OwnerFilter filter) {
+        return new GrowingPredictor((GrowingMotion) motion, filter);
+    }
+
     /** {@link GrowthLaw#pairContact} of discs i and j at local {@code now}; no horizon bounds it. */
     @Override
     double contactTime(int i, int j, double now, double horizon) {
