@@ -25,6 +25,7 @@ import static carom.engines.kernel.DiscTable.Y;
 
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
+import carom.core.physics.GrowthLaw;
 import carom.core.physics.PairLaw;
 import carom.core.state.Discs;
 
@@ -39,24 +40,19 @@ import carom.core.state.Discs;
  * are predicted against, and an interior cell in an edge column or row is scanned as a border cell (so
  * the filter applies). Without one ({@code fast}) every cell is seen; the filter then costs one null
  * test per prediction.
- *
- * <p>Rigid discs only: a table whose radii grow is predicted by {@link GrowingPredictor}, which
- * overrides the contact primitives ({@link #of} chooses). In a run that never grows, that subclass is
- * never loaded (nothing here names it where the verifier would load it), so the JIT sees one
- * implementation of each: calls to them are to this class's code, as if they were private.
  */
-public sealed class CellPredictor permits GrowingPredictor {
+public final class CellPredictor {
     private static final double[] NO_SHIFT = new double[9];
 
     /** This thread's changes to the records, and its window for core physics that takes {@link Discs}. */
     private final DiscMotion motion;
     private final Discs pair;
     // The table's fields, copied (final) so that hot paths read them with one load.
-    final double[] rec;
-    final int stride;
+    private final double[] rec;
+    private final int stride;
     private final double sharedRadius;
-    final int[] ir;
-    final int[] cellHead;
+    private final int[] ir;
+    private final int[] cellHead;
     private final int cols;
     private final int rows;
     private final double cellW;
@@ -75,11 +71,13 @@ public sealed class CellPredictor permits GrowingPredictor {
      */
     private boolean sleepersSeen;
     private final Flight flight;
-    final Boundary boundary;
-    final Boundary.Walls walls;
+    private final Boundary boundary;
+    private final Boundary.Walls walls;
     private final int[] around;
     private final int[][] ahead;
-    final DiscTable table;
+    /** The growth effect: predictions go through {@link GrowthLaw} (see {@link DiscTable#growing}). */
+    private final boolean growing;
+    private final DiscTable table;
     /** The block of each cell column and row, or null if every cell is seen; this predictor's block. */
     private final int[] colBlock;
     private final int[] rowBlock;
@@ -96,42 +94,21 @@ public sealed class CellPredictor permits GrowingPredictor {
     private final double[] visitShiftX = new double[9];
     private final double[] visitShiftY = new double[9];
     /** Earliest event found so far by the prediction under way, and its candidate code. */
-    double found;
-    int foundP;
+    private double found;
+    private int foundP;
     /** Side through which the last {@link #crossing} leaves (a crossing kind). */
     private byte crossKind;
     /** Predictions made (full or after a crossing). */
     private long predictions;
 
-    /**
-     * The predictor of {@code motion}'s table, by its growth law: this class for rigid discs, or
-     * {@link GrowingPredictor} (then {@code motion} is a {@link GrowingMotion}); it sees only the cells
-     * {@code filter} leaves it, or every cell if null.
-     */
-    public static CellPredictor of(DiscMotion motion, OwnerFilter filter) {
-        return motion.table.growth.grows() ? GrowingPredictor.make(motion, filter) : new CellPredictor(motion, filter);
-    }
-
-    /** A predictor on a rigid table that sees every column ({@code fast}). */
+    /** A predictor that sees every column ({@code fast}). */
     public CellPredictor(DiscMotion motion) {
         this(motion, null);
     }
 
-    /**
-     * A predictor on a rigid table that sees only the cells {@code filter} leaves it ({@code slabs}), or
-     * every cell if null.
-     */
+    /** A predictor that sees only the cells {@code filter} leaves it ({@code slabs}), or every cell if null. */
     public CellPredictor(DiscMotion motion, OwnerFilter filter) {
-        this(motion, filter, false);
-    }
-
-    /** A predictor of either variant: {@code growthVariant} says which, and must match the table's law. */
-    CellPredictor(DiscMotion motion, OwnerFilter filter, boolean growthVariant) {
         DiscTable table = motion.table;
-        if (table.growth.grows() != growthVariant) {
-            throw new IllegalArgumentException(growthVariant ? "a table of rigid discs is predicted by CellPredictor"
-                    : "a table whose discs grow is predicted by GrowingPredictor (CellPredictor.of)");
-        }
         this.motion = motion;
         this.pair = motion.pair;
         this.rec = table.rec;
@@ -155,6 +132,7 @@ public sealed class CellPredictor permits GrowingPredictor {
         this.walls = table.walls;
         this.around = table.around;
         this.ahead = table.ahead;
+        this.growing = table.growing;
         this.table = table;
         this.colBlock = filter == null ? null : filter.colBlock();
         this.rowBlock = filter == null ? null : filter.rowBlock();
@@ -183,7 +161,7 @@ public sealed class CellPredictor permits GrowingPredictor {
         predictions = made;
     }
 
-    double radius(int i) {
+    private double radius(int i) {
         return stride > R ? rec[i * stride + R] : sharedRadius;
     }
 
@@ -361,7 +339,10 @@ public sealed class CellPredictor permits GrowingPredictor {
     }
 
     /** {@link Flight#timeToContact} of discs i and j (i in slot 0 unless straightImages). */
-    double contactTime(int i, int j, double now, double horizon) {
+    private double contactTime(int i, int j, double now, double horizon) {
+        if (growing) {
+            return growingContactTime(i, j, now);
+        }
         if (!straightImages) {
             load(j, 1);
             return flight.timeToContact(pair, 0, 1, now, horizon, boundary);
@@ -378,7 +359,16 @@ public sealed class CellPredictor permits GrowingPredictor {
     }
 
     /** {@link Flight#timeToWall} of disc i (in slot 0 unless straightImages). */
-    double wallTime(int i, int wall, double now) {
+    private double wallTime(int i, int wall, double now) {
+        if (growing) {
+            // Growth runs only in straight flight (the reader refuses it under gravity).
+            int at = i * stride;
+            double dt = now - rec[at + T];
+            double r0 = radius(i);
+            return GrowthLaw.timeToWall(wall, rec[at + X] + rec[at + VX] * dt, rec[at + Y] + rec[at + VY] * dt,
+                    rec[at + VX], rec[at + VY], r0 * (table.growthScale + table.growthRate * now),
+                    r0 * table.growthRate, width, height);
+        }
         if (!straightImages) {
             return flight.timeToWall(pair, 0, wall, now, walls);
         }
@@ -425,7 +415,12 @@ public sealed class CellPredictor permits GrowingPredictor {
      * Lowers {@link #found} to disc i's earliest contact with a disc of cells {@code base + cells[k]},
      * k < m, whose discs are seen shifted by (shiftX[k], shiftY[k]).
      */
-    void scan(int i, double now, double horizon, int base, int[] cells, double[] shiftX, double[] shiftY, int m) {
+    private void scan(int i, double now, double horizon, int base, int[] cells, double[] shiftX, double[] shiftY,
+                      int m) {
+        if (growing) {
+            growingScan(i, now, base, cells, m);
+            return;
+        }
         double best = found;
         int bestP = foundP;
         // All heads first: independent loads whose cache misses overlap (at large N each is one).
@@ -473,6 +468,41 @@ public sealed class CellPredictor permits GrowingPredictor {
                             best = t;
                             bestP = j;
                         }
+                    }
+                }
+            }
+        }
+        found = best;
+        foundP = bestP;
+    }
+
+    /**
+     * {@link GrowthLaw#timeToContact} of discs i and j at local {@code now} on the records, through the
+     * nearest image (the image of the cell scan whenever an axis has 4 cells or more).
+     */
+    private double growingContactTime(int i, int j, double now) {
+        int at = i * stride;
+        int jt = j * stride;
+        double dx = boundary.separationX(rec[jt + X] + rec[jt + VX] * (now - rec[jt + T])
+                - (rec[at + X] + rec[at + VX] * (now - rec[at + T])));
+        double dy = boundary.separationY(rec[jt + Y] + rec[jt + VY] * (now - rec[jt + T])
+                - (rec[at + Y] + rec[at + VY] * (now - rec[at + T])));
+        double sigma0 = radius(i) + radius(j);
+        return GrowthLaw.timeToContact(dx, dy, rec[jt + VX] - rec[at + VX], rec[jt + VY] - rec[at + VY],
+                sigma0 * (table.growthScale + table.growthRate * now), sigma0 * table.growthRate);
+    }
+
+    /** {@link #scan} with growing radii: every disc of cells {@code base + cells[k]}, k < m. */
+    private void growingScan(int i, double now, int base, int[] cells, int m) {
+        double best = found;
+        int bestP = foundP;
+        for (int k = 0; k < m; k++) {
+            for (int j = cellHead[base + cells[k]]; j != NIL; j = ir[j * IS + CNEXT]) {
+                if (j != i) {
+                    double t = growingContactTime(i, j, now);
+                    if (t < best) {
+                        best = t;
+                        bestP = j;
                     }
                 }
             }

@@ -23,6 +23,7 @@ import carom.core.engine.StallGuard;
 import carom.core.observe.CollisionObserver;
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
+import carom.core.physics.GrowthLaw;
 import carom.core.physics.PairLaw;
 import carom.core.physics.Restitution;
 import carom.core.scene.Scene;
@@ -39,17 +40,12 @@ import carom.core.state.Discs;
  * <p>A {@link CollisionObserver} given at construction is told every pair and wall collision this
  * thread carries out, in scene ids, from the values the collision was resolved with; without one
  * (null) a collision costs one null test more.
- *
- * <p>Rigid discs only: a table whose radii grow is changed by {@link GrowingMotion}, which overrides
- * the two collision primitives ({@link #of} chooses). In a run that never grows, that subclass is
- * never loaded (nothing here names it where the verifier would load it), so the JIT sees one
- * implementation of each: calls to them are to this class's code, as if they were private.
  */
-public sealed class DiscMotion permits GrowingMotion {
+public final class DiscMotion {
     final DiscTable table;
     // The table's fields, copied (final) so that hot paths read them with one load.
     private final Scene scene;
-    final double[] rec;
+    private final double[] rec;
     private final int stride;
     private final double sharedRadius;
     private final double sharedInvMass;
@@ -74,36 +70,28 @@ public sealed class DiscMotion permits GrowingMotion {
     /** Scene id of each internal disc: where the final state puts it. */
     private final int[] sceneIds;
 
+    /** The growth effect: collisions bounce off growing surfaces (see {@link DiscTable#growing}). */
+    private final boolean growing;
+    /**
+     * Kinetic energy the collisions of this thread added (growth pushes discs apart), and that of the
+     * last collision alone: growth runs keep their energy account with it.
+     */
+    private double energyAdded;
+    private double lastEnergyAdded;
+
     /** Told every collision (null: none). */
     private final CollisionObserver collisions;
 
     /** Slots 0 and 1: discs copied in for core physics that works on {@link Discs}. */
     final Discs pair = new Discs(2);
 
-    /**
-     * Changes to {@code table}'s records by its growth law, telling {@code collisions} every collision
-     * (null: none): this class for rigid discs, or {@link GrowingMotion}.
-     */
-    public static DiscMotion of(DiscTable table, CollisionObserver collisions) {
-        return table.growth.grows() ? GrowingMotion.make(table, collisions) : new DiscMotion(table, collisions);
-    }
-
-    /** Changes to a rigid table's records that tell no observer. */
+    /** Changes to {@code table}'s records that tell no observer. */
     public DiscMotion(DiscTable table) {
         this(table, null);
     }
 
-    /** Changes to a rigid table's records, telling {@code collisions} every collision (null: none). */
+    /** Changes to {@code table}'s records, telling {@code collisions} every collision (null: none). */
     public DiscMotion(DiscTable table, CollisionObserver collisions) {
-        this(table, collisions, false);
-    }
-
-    /** Changes of either variant: {@code growthVariant} says which, and must match the table's law. */
-    DiscMotion(DiscTable table, CollisionObserver collisions, boolean growthVariant) {
-        if (table.growth.grows() != growthVariant) {
-            throw new IllegalArgumentException(growthVariant ? "a table of rigid discs is changed by DiscMotion"
-                    : "a table whose discs grow is changed by GrowingMotion (DiscMotion.of)");
-        }
         this.table = table;
         this.collisions = collisions;
         this.scene = table.scene;
@@ -124,6 +112,17 @@ public sealed class DiscMotion permits GrowingMotion {
         this.gravity = table.acceleration > 0;
         this.awakeInvMass = table.awakeInvMass;
         this.sceneIds = table.sceneIds();
+        this.growing = table.growing;
+    }
+
+    /** Kinetic energy added by this thread's collisions so far (growth runs; 0 otherwise). */
+    public double energyAdded() {
+        return energyAdded;
+    }
+
+    /** Kinetic energy added by the last collision (growth runs; 0 otherwise). */
+    public double lastEnergyAdded() {
+        return lastEnergyAdded;
     }
 
     double radius(int i) {
@@ -233,31 +232,43 @@ public sealed class DiscMotion permits GrowingMotion {
                 bMobile = true;
             }
         }
-        return impulse(a, b, at, bt, dx, dy, e, abs, aMobile, bMobile);
-    }
-
-    /**
-     * The impulse of {@link #collidePair} between discs a and b (records at {@code at} and {@code bt},
-     * both advanced, separation (dx, dy), restitution e) and what a change of trajectory entails
-     * (restitution told, collision counters bumped) for each of them that is mobile; returns the virial.
-     */
-    double impulse(int a, int b, int at, int bt, double dx, double dy, double e, double abs, boolean aMobile,
-                   boolean bMobile) {
+        if (growing) {
+            return collideGrowing(a, b, at, bt, dx, dy, e, abs, bMobile);
+        }
         // On the records, not through the pair window: no copies in and out at every collision.
         double w = PairLaw.collide(rec, at + VX, bt + VX, rec, at + VY, bt + VY, invMass(a), invMass(b), dx, dy, e);
         if (aMobile) {
-            changed(a, abs);
+            restitution.collided(a, abs);
+            ir[a * IS + COUNT]++;
         }
         if (bMobile) {
-            changed(b, abs);
+            restitution.collided(b, abs);
+            ir[b * IS + COUNT]++;
         }
         return w;
     }
 
-    /** Disc i's trajectory changed at absolute {@code abs} by a collision: restitution told, its counter bumped. */
-    void changed(int i, double abs) {
-        restitution.collided(i, abs);
-        ir[i * IS + COUNT]++;
+    /** {@link #collidePair} of growing discs (both advanced): the impulse, the energy it added, the virial. */
+    private double collideGrowing(int a, int b, int at, int bt, double dx, double dy, double e, double abs,
+                                  boolean bMobile) {
+        double ima = invMass(a);
+        double imb = invMass(b);
+        double before = kinetic(at, ima) + kinetic(bt, imb);
+        double sigmaRate = (radius(a) + radius(b)) * table.growthRate;
+        double j = GrowthLaw.collide(rec, at + VX, bt + VX, rec, at + VY, bt + VY, ima, imb, dx, dy, e, sigmaRate);
+        lastEnergyAdded = kinetic(at, ima) + kinetic(bt, imb) - before;
+        energyAdded += lastEnergyAdded;
+        restitution.collided(a, abs);
+        ir[a * IS + COUNT]++;
+        if (bMobile) {
+            restitution.collided(b, abs);
+            ir[b * IS + COUNT]++;
+        }
+        return j * Math.sqrt(dx * dx + dy * dy);
+    }
+
+    private double kinetic(int at, double invMass) {
+        return invMass > 0 ? 0.5 * (rec[at + VX] * rec[at + VX] + rec[at + VY] * rec[at + VY]) / invMass : 0;
     }
 
     /**
@@ -271,27 +282,27 @@ public sealed class DiscMotion permits GrowingMotion {
         int at = i * stride;
         int axis = wall == Boundary.LEFT || wall == Boundary.RIGHT ? VX : VY;
         double normalBefore = rec[at + axis];
-        bounce(i, wall, at, axis, e, abs, guard);
-        if (collisions != null) {
-            // The momentum change along the wall's normal; 0 for a disc that came to rest on it.
+        if (growing) {
             double im = invMass(i);
-            collisions.wall(abs, sceneIds[i], wall, im > 0 ? Math.abs(rec[at + axis] - normalBefore) / im : 0);
-        }
-    }
-
-    /**
-     * The bounce of {@link #collideWall} of disc i (record at {@code at}, advanced, its velocity along
-     * the wall's normal at {@code at + axis}, restitution e): reflected, restitution told, its counter
-     * bumped; under gravity it falls asleep instead when {@code guard} says it rests on the wall.
-     */
-    void bounce(int i, int wall, int at, int axis, double e, double abs, StallGuard guard) {
-        if (gravity && guard.restsOnWall(abs, i, wall, rec[at + VX], rec[at + VY])) {
+            double before = kinetic(at, im);
+            rec[at + axis] = GrowthLaw.wallBounce(wall, normalBefore, radius(i) * table.growthRate, e);
+            lastEnergyAdded = kinetic(at, im) - before;
+            energyAdded += lastEnergyAdded;
+            restitution.collided(i, abs);
+            ir[i * IS + COUNT]++;
+        } else if (gravity && guard.restsOnWall(abs, i, wall, rec[at + VX], rec[at + VY])) {
             fallAsleep(i, abs);
         } else {
             load(i, 0);
             boundary.reflect(pair, 0, wall, e);
             store(i, 0);
-            changed(i, abs);
+            restitution.collided(i, abs);
+            ir[i * IS + COUNT]++;
+        }
+        if (collisions != null) {
+            // The momentum change along the wall's normal; 0 for a disc that came to rest on it.
+            double im = invMass(i);
+            collisions.wall(abs, sceneIds[i], wall, im > 0 ? Math.abs(rec[at + axis] - normalBefore) / im : 0);
         }
     }
 
@@ -308,7 +319,8 @@ public sealed class DiscMotion permits GrowingMotion {
         rec[at + VX] = 0;
         rec[at + VY] = 0;
         rec[at + IM] = 0;
-        changed(i, abs);
+        restitution.collided(i, abs);
+        ir[i * IS + COUNT]++;
     }
 
     /** Sleeping disc i (advanced to now) wakes: mobile again with its own mass, at rest. */

@@ -74,13 +74,12 @@ public final class DiscTable {
      */
     public final boolean fullOnCross;
     /**
-     * How radii change ({@link GrowthLaw}, the scene's): at local time t they are R(0) (growthScale + G t),
-     * where R(0) is what the records hold and growthScale is 1 + G epoch ({@link #anchorGrowth}). Taken
-     * once from the scene's {@link Physics}: a table whose radii grow is predicted and collided by the
-     * kernel's growth variants ({@link CellPredictor#of}, {@link DiscMotion#of}) and its copies of records
-     * by {@link #contactTime}'s growing primitive; nothing on a rigid table looks at the law or the scale.
+     * The growth effect: radii are R(0) (growthScale + growthRate t) at local time t, where R(0) is
+     * what the records hold; growthScale is 1 + G epoch ({@link #anchorGrowth}). Without growth the
+     * rate is 0 and no prediction or collision looks at either.
      */
-    final GrowthLaw growth;
+    public final boolean growing;
+    final double growthRate;
     double growthScale = 1;
     /** The absolute time of local time 0, as far as growth is concerned. */
     private double growthEpoch;
@@ -193,8 +192,8 @@ public final class DiscTable {
         ahead[CROSS_UP] = new int[] {cols - 1, cols, cols + 1};
         this.ir = new int[Math.multiplyExact(n, IS)];
         Arrays.fill(cellHead, NIL);
-        this.growth = physics.growth;
-        this.copyContact = growth.grows() ? this::growingContactTime : this::flightContactTime;
+        this.growthRate = scene.effects().growth();
+        this.growing = growthRate > 0;
         this.cellFactor = cellFactor;
         this.cellRadius = cellRadius;
 
@@ -268,7 +267,7 @@ public final class DiscTable {
      */
     public void anchorGrowth(double epoch) {
         growthEpoch = epoch;
-        growthScale = 1 + growth.rate() * epoch;
+        growthScale = 1 + growthRate * epoch;
     }
 
     /** {@link #anchorGrowth} after the engine shifted its clocks so that local {@code now} became 0. */
@@ -279,41 +278,26 @@ public final class DiscTable {
     /**
      * Time from local {@code now} until the discs in slots a and b of {@code d} touch, by this table's
      * law (growing surfaces, or the scene's flight up to {@code horizon}): the one contact primitive for
-     * code that predicts on copies of records rather than on the records (slabs' cross-domain
-     * predictions and window checks).
+     * code that predicts on copies of records rather than on the records.
      */
     public double contactTime(Discs d, int a, int b, double now, double horizon) {
-        return copyContact.time(d, a, b, now, horizon);
-    }
-
-    /** {@link #contactTime}'s implementation, chosen with the law at construction. */
-    @FunctionalInterface
-    private interface CopyContact {
-        double time(Discs d, int a, int b, double now, double horizon);
-    }
-
-    private final CopyContact copyContact;
-
-    private double flightContactTime(Discs d, int a, int b, double now, double horizon) {
-        return flight.timeToContact(d, a, b, now, horizon, boundary);
+        return growing ? growingContactTime(d, a, b, now) : flight.timeToContact(d, a, b, now, horizon, boundary);
     }
 
     /**
-     * {@link #contactTime} of growing discs ({@link GrowthLaw#pairContact}): positions at their own
-     * clocks {@code d.t}, radii R(0), the nearest image; the horizon does not bound it.
+     * With growth: time from local {@code now} until the discs in slots a and b of {@code d} touch
+     * ({@link GrowthLaw#timeToContact}), their positions at their own clocks {@code d.t}, their radii
+     * R(0), the nearest image; for code that predicts on copies of records rather than on the records
+     * (slabs' cross-domain predictions and window checks).
      */
-    private double growingContactTime(Discs d, int a, int b, double now, double horizon) {
+    public double growingContactTime(Discs d, int a, int b, double now) {
         double xa = d.x[a] + d.vx[a] * (now - d.t[a]);
         double ya = d.y[a] + d.vy[a] * (now - d.t[a]);
         double dx = boundary.separationX(d.x[b] + d.vx[b] * (now - d.t[b]) - xa);
         double dy = boundary.separationY(d.y[b] + d.vy[b] * (now - d.t[b]) - ya);
-        return growth.pairContact(dx, dy, d.vx[b] - d.vx[a], d.vy[b] - d.vy[a], d.radius[a] + d.radius[b],
-                scaleAt(now));
-    }
-
-    /** The radii's scale at local {@code now}: a disc's radius is R(0) times it. */
-    double scaleAt(double now) {
-        return growthScale + growth.rate() * now;
+        double sigma0 = d.radius[a] + d.radius[b];
+        return GrowthLaw.timeToContact(dx, dy, d.vx[b] - d.vx[a], d.vy[b] - d.vy[a],
+                sigma0 * (growthScale + growthRate * now), sigma0 * growthRate);
     }
 
     private static long cellsAlong(double length, double minCell) {
@@ -409,7 +393,7 @@ public final class DiscTable {
 
     /** Whether neighbour lists can predict on this table ({@link ListPredictor}): straight flight seen through each cell's image, no growth. */
     public boolean listsAllowed() {
-        return straightImages && !growth.grows();
+        return straightImages && !growing;
     }
 
     /**

@@ -55,10 +55,8 @@
  *       awake disc hitting it wakes it.</li>
  *   <li>Growth (the {@code growth} effect): the records hold R(0); a table knows the growth rate and
  *       the absolute time of its local 0 ({@code DiscTable.anchorGrowth}, moved at every re-anchoring of
- *       clocks) and the scene's {@link carom.core.physics.GrowthLaw}, chosen once: a growing table is
- *       predicted by {@code GrowingPredictor} and changed by {@link carom.engines.kernel.GrowingMotion}
- *       (made by {@code CellPredictor.of} and {@code DiscMotion.of}), which override only the contact
- *       and collision primitives with the law's, so rigid runs never branch on growth; a run plans its tables' cells for the radius the discs
+ *       clocks), predicts contacts of growing discs with {@link carom.core.physics.GrowthLaw} and
+ *       collides them by its surface bounce; a run plans its tables' cells for the radius the discs
  *       reach before the next rebuild ({@link carom.engines.kernel.GrowthStages}).</li>
  * </ul>
  *
