@@ -1,7 +1,5 @@
 package carom.engines.slabs;
 
-import carom.core.physics.Boundary;
-import carom.core.physics.Flight;
 import carom.core.state.Discs;
 import carom.engines.kernel.DiscMotion;
 import carom.engines.kernel.DiscTable;
@@ -28,11 +26,7 @@ final class CrossPredictions implements CrossEvents {
     private final DiscMarks marks;
     /** Reads records into {@link #xpair} (it uses no scratch of its own). */
     private final DiscMotion reader;
-    private final Flight flight;
-    private final Boundary boundary;
     private final boolean fullOnCross;
-    /** The growth effect: contacts of growing discs ({@link DiscTable#growingContactTime}). */
-    private final boolean growing;
     private final CrossHeap heap;
     /** Scratch for serial contact tests, and the foreign cells next to a disc's. */
     private final Discs xpair = new Discs(2);
@@ -46,10 +40,7 @@ final class CrossPredictions implements CrossEvents {
         this.domains = domains;
         this.marks = marks;
         this.reader = domains[0].motion;
-        this.flight = table.flight;
-        this.boundary = table.boundary;
         this.fullOnCross = table.fullOnCross;
-        this.growing = table.growing;
         this.heap = new CrossHeap(table.n);
     }
 
@@ -158,8 +149,7 @@ final class CrossPredictions implements CrossEvents {
         for (int k = 0; k < m; k++) {
             for (int j = table.firstInCell(near[k]); j != DiscTable.NIL; j = table.nextInCell(j)) {
                 reader.load(xpair, j, 1);
-                double t = now + (growing ? table.growingContactTime(xpair, 0, 1, now)
-                        : flight.timeToContact(xpair, 0, 1, now, horizon, boundary));
+                double t = now + table.contactTime(xpair, 0, 1, now, horizon);
                 if (t < best) {
                     best = t;
                     bestP = j;

@@ -1,7 +1,5 @@
 package carom.engines.slabs;
 
-import carom.core.physics.Boundary;
-import carom.core.physics.Flight;
 import carom.core.state.Discs;
 import carom.engines.kernel.DiscMotion;
 import carom.engines.kernel.DiscTable;
@@ -32,8 +30,6 @@ public final class WindowVerifier implements WindowCheck {
     private final SegmentSource segments;
     /** Reads current records (it uses no scratch of its own). */
     private final DiscMotion reader;
-    private final Flight flight;
-    private final Boundary boundary;
     /** Scratch: one disc's segment in slot 0, the other's in slot 1. */
     private final Discs seg = new Discs(2);
 
@@ -49,8 +45,6 @@ public final class WindowVerifier implements WindowCheck {
         this.marks = marks;
         this.reader = reader;
         this.segments = segments;
-        this.flight = table.flight;
-        this.boundary = table.boundary;
     }
 
     @Override
@@ -159,8 +153,7 @@ public final class WindowVerifier implements WindowCheck {
         if (!(from <= to)) {
             return;
         }
-        double t = from + (table.growing ? table.growingContactTime(seg, 0, 1, from)
-                : flight.timeToContact(seg, 0, 1, from, to, boundary));
+        double t = from + table.contactTime(seg, 0, 1, from, to);
         violation.offer(t, to, a, x, ex, b, y, ey);
     }
 }
