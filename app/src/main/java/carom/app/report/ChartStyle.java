@@ -46,6 +46,9 @@ public final class ChartStyle {
     public static final Color GUIDE = new Color(150, 150, 150);
     public static final BasicStroke DASHED = new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f,
             new float[] {6f, 4f}, 0f);
+    /** A guide's error band beside its dashed value: grey, dotted. */
+    public static final BasicStroke DOTTED = new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f,
+            new float[] {1.5f, 3f}, 0f);
 
     private ChartStyle() {
     }

@@ -137,6 +137,8 @@ public final class ObservablePlots {
                     : String.format(": mean %s", number(mean));
         }
         XYChart chart = chart(title, "time t, middle of each interval (scene time unit)", "pair collisions per disc per unit time");
+        // The rate settles from below (a lattice start), so the lower right corner is where no point is.
+        chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideSE);
         if (rate.length > 0) {
             double[] x = new double[rate.length];
             for (int k = 0; k < x.length; k++) {
@@ -145,8 +147,10 @@ public final class ObservablePlots {
             double[] span = {t0[0], t1[t1.length - 1]};
             guide(chart, "mean", span, new double[] {mean, mean});
             if (Double.isFinite(error)) {
-                guide(chart, "mean ± block error", span, new double[] {mean + error, mean + error});
-                guide(chart, "mean - block error", span, new double[] {mean - error, mean - error}).setShowInLegend(false);
+                guide(chart, "mean ± block error", span, new double[] {mean + error, mean + error})
+                        .setLineStyle(ChartStyle.DOTTED);
+                guide(chart, "mean - block error", span, new double[] {mean - error, mean - error})
+                        .setLineStyle(ChartStyle.DOTTED).setShowInLegend(false);
             }
             line(chart, "rate", x, rate, rate.length <= 60);
         }
