@@ -33,8 +33,9 @@ class Sweep:
 
 def sweep(values: Sequence[float], scene_for: Callable[[float], Scene], *, folder: Optional[PathLike] = None,
           workers: int = 1, **simulate_options: Any) -> Sweep:
-    """Runs ``carom simulate`` on ``scene_for(v)`` for each of ``values``, ``workers`` at a time (each
-    run is its own carom process; mind the cores and the heap each takes), into ``folder/run-K`` (a new
+    """Runs ``carom simulate`` on ``scene_for(v)`` for each of ``values``: the first alone, then the
+    others ``workers`` at a time (each run is its own carom process; mind the cores and the heap each
+    takes), into ``folder/run-K`` (a new
     temporary folder for each if ``folder`` is None). ``simulate_options`` go to every
     :func:`carom.simulate` call (``engine``, ``until``, ``every``, ``observe``, ``carom``, ...). The first
     run that fails raises its :class:`carom.CaromError`.
@@ -47,8 +48,13 @@ def sweep(values: Sequence[float], scene_for: Callable[[float], Scene], *, folde
         target = base / f"run-{k}" if base is not None else None
         return simulate(scene_for(values[k]), folder=target, **simulate_options)
 
+    if not len(values):
+        raise ValueError("sweep: no values")
+    # The first run alone: a first use of the ./carom launcher builds carom, which two processes at once
+    # must not do.
+    runs = [one(0)]
     with ThreadPoolExecutor(max_workers=max(1, workers)) as pool:
-        runs = list(pool.map(one, range(len(values))))
+        runs += list(pool.map(one, range(1, len(values))))
     summaries = [r.summary() for r in runs]
     z = [s["pressure"]["Z"] if s.get("pressure") else None for s in summaries]
     z_error = [s["pressure"]["Zerror"] if s.get("pressure") else None for s in summaries]
