@@ -59,3 +59,14 @@ def test_freud_box_of_a_scene_and_of_a_pair() -> None:
     for source in (scene, (6.0, 2.5)):
         box = carom.freud_box(source)
         assert isinstance(box, freud.box.Box) and box.is2D and (box.Lx, box.Ly) == (6.0, 2.5)
+
+
+def test_the_readme_shows_the_guide_s_example() -> None:
+    """python/README.md (what pip shows) and docs/python.md carry the same example, block for block."""
+    root = Path(__file__).resolve().parents[2]
+
+    def python_blocks(path: Path) -> list:
+        text = path.read_text(encoding="utf-8")
+        return [b.split("```", 1)[0] for b in text.split("```python\n")[1:]]
+
+    assert python_blocks(root / "python" / "README.md")[0] == python_blocks(root / "docs" / "python.md")[0]
