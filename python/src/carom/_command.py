@@ -82,7 +82,7 @@ def _command_for(path: Path) -> List[str]:
     return [str(path)]
 
 
-def run_carom(arguments: Sequence[str], *, carom: Optional[PathLike] = None, cwd: Optional[PathLike] = None,
+def run_carom(arguments: Sequence[PathLike], *, carom: Optional[PathLike] = None, cwd: Optional[PathLike] = None,
               progress: Progress = False) -> str:
     """Runs carom with ``arguments`` and returns what it printed on stdout.
 
@@ -102,11 +102,12 @@ def run_carom(arguments: Sequence[str], *, carom: Optional[PathLike] = None, cwd
         echo = None
     child = subprocess.Popen(command, cwd=cwd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
                              stderr=subprocess.PIPE, text=True, encoding="utf-8", errors="replace")
+    stdout, stderr = child.stdout, child.stderr
+    assert stdout is not None and stderr is not None
     lines: List[str] = []
 
     def read_stderr() -> None:
-        assert child.stderr is not None
-        for line in child.stderr:
+        for line in stderr:
             line = line.rstrip("\n")
             lines.append(line)
             if echo is not None:
@@ -115,8 +116,7 @@ def run_carom(arguments: Sequence[str], *, carom: Optional[PathLike] = None, cwd
     reader = threading.Thread(target=read_stderr, daemon=True)
     reader.start()
     try:
-        assert child.stdout is not None
-        out = child.stdout.read()
+        out = stdout.read()
         status = child.wait()
     finally:
         if child.poll() is None:
@@ -127,8 +127,8 @@ def run_carom(arguments: Sequence[str], *, carom: Optional[PathLike] = None, cwd
                 child.kill()
                 child.wait()
         reader.join()
-        child.stdout.close()
-        child.stderr.close()
+        stdout.close()
+        stderr.close()
     if status != 0:
         raise CaromError(_error_line(lines, status), status, "\n".join(lines), command)
     return out

@@ -77,8 +77,8 @@ def _folder(folder: Optional[PathLike]) -> Path:
     return path
 
 
-def _sampling(folder: Path, every: Optional[float], trajectory: Optional[str], observe: Sequence[str]) -> List[str]:
-    args: List[str] = []
+def _sampling(folder: Path, every: Optional[float], trajectory: Optional[str], observe: Sequence[str]) -> List[PathLike]:
+    args: List[PathLike] = []
     if every is not None:
         args += ["--every", repr(float(every))]
     if trajectory is not None:
@@ -90,8 +90,8 @@ def _sampling(folder: Path, every: Optional[float], trajectory: Optional[str], o
     return args
 
 
-def _engine(engine: Optional[str], threads: Optional[int], options: Optional[Mapping[str, Any]]) -> List[str]:
-    args: List[str] = []
+def _engine(engine: Optional[str], threads: Optional[int], options: Optional[Mapping[str, Any]]) -> List[PathLike]:
+    args: List[PathLike] = []
     if engine is not None:
         args += ["--engine", engine]
     if threads is not None:
@@ -117,7 +117,7 @@ def simulate(scene: Union[Scene, PathLike], *, folder: Optional[PathLike] = None
     are added as they are. carom checks everything before it runs: bad input raises
     :class:`carom.CaromError` with its ``error:`` line. ``progress``: see :func:`carom.run_carom`."""
     out = _folder(folder)
-    args: List[str] = ["simulate", scene_file(scene, out)]
+    args: List[PathLike] = ["simulate", scene_file(scene, out)]
     if until is not None:
         args += ["--until", repr(float(until))]
     args += _engine(engine, threads, options)
@@ -140,7 +140,7 @@ def compress(scene: Union[Scene, PathLike], to_pressure: float, *, folder: Optio
     reduced pressure exceeds ``to_pressure`` or the scene's end time; writes ``packing.csv`` and
     ``summary.json`` (its ``compression`` part says where and why it stopped) into ``folder``."""
     out = _folder(folder)
-    args: List[str] = ["compress", scene_file(scene, out), "--to-pressure", repr(float(to_pressure)),
+    args: List[PathLike] = ["compress", scene_file(scene, out), "--to-pressure", repr(float(to_pressure)),
                        "--out", out / "packing.csv", "--summary", out / "summary.json"]
     if every is not None:
         args += ["--every", repr(float(every))]
@@ -157,7 +157,7 @@ def resume(checkpoint: PathLike, *, folder: Optional[PathLike] = None, until: Op
     checkpoint's run sampled) writes the frames from the checkpoint on, ``report`` (it observed) the
     observables over the whole run, ``save`` a new ``run.ckpt`` in ``folder``."""
     out = _folder(folder)
-    args: List[str] = ["resume", Path(checkpoint)]
+    args: List[PathLike] = ["resume", Path(checkpoint)]
     if until is not None:
         args += ["--until", repr(float(until))]
     args += ["--out", out / "final.csv", "--summary", out / "summary.json"]
