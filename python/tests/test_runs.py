@@ -73,6 +73,19 @@ def test_resume_continues_to_the_bits_of_an_unbroken_run(gas: carom.Scene, tmp_p
         assert resumed.final()[column].tolist() == unbroken.final()[column].tolist()
 
 
+def test_a_resumed_trajectory_starts_at_the_checkpoint(gas: carom.Scene, tmp_path: Path) -> None:
+    first = carom.simulate(gas, folder=tmp_path / "first", until=1.0, every=0.5, trajectory="gsd",
+                           observe=["pressure"], checkpoint=True)
+    resumed = carom.resume(first.checkpoint, folder=tmp_path / "resumed", until=2.0, trajectory="gsd", report=True)
+    assert first.gsd_log()["time"].tolist() == [0.0, 0.5, 1.0]
+    log = resumed.gsd_log()
+    assert log["time"].tolist() == [1.5, 2.0] and log["step"].tolist() == [3, 4]
+    # The file's first frame ends no interval of its own; the next is the observable's last interval.
+    pressure = resumed.observable("pressure")
+    assert pressure["t1"].tolist() == [0.5, 1.0, 1.5, 2.0]
+    assert np.isnan(log["Z"][0]) and log["Z"][1] == pytest.approx(pressure["Z"][-1], rel=1e-12)
+
+
 def test_compress_writes_the_packing(disc: carom.Species, tmp_path: Path) -> None:
     scene = carom.Scene.at_packing_fraction(disc, 0.5, 64, layout="triangular", jitter=0.3, seed=2,
                                             effects={"growth": 0.05}, until=200)
