@@ -21,12 +21,6 @@ class CheckpointOutputsTest {
     @TempDir
     Path dir;
 
-    private Cli ok(String... args) {
-        Cli r = Cli.run(args);
-        assertThat(r.status()).as(String.join(" ", args) + "\n" + r.err()).isZero();
-        return r;
-    }
-
     private String read(String name) throws IOException {
         return Files.readString(dir.resolve(name));
     }
@@ -38,7 +32,7 @@ class CheckpointOutputsTest {
     private Path stoppedRun() throws IOException {
         Path scene = Scenes.write(dir, "gas.json", Scenes.periodic());
         Path ckpt = dir.resolve("run.ckpt");
-        ok("simulate", scene.toString(), "--until", "1", "--checkpoint", ckpt.toString(), "--out", dir.resolve("final.csv").toString(),
+        Cli.ok("simulate", scene.toString(), "--until", "1", "--checkpoint", ckpt.toString(), "--out", dir.resolve("final.csv").toString(),
                 "--every", "0.25", "--observe", "pressure", "--report", dir.resolve("report").toString(),
                 "--out-state", dir.resolve("state.json").toString());
         CheckpointFile saved = CheckpointFile.read(ckpt);
@@ -48,14 +42,14 @@ class CheckpointOutputsTest {
         try (var files = Files.walk(dir.resolve("report"))) {
             files.sorted(java.util.Comparator.reverseOrder()).forEach(p -> p.toFile().delete());
         }
-        ok("simulate", scene.toString(), "--until", "2", "--out", dir.resolve("straight.csv").toString());
+        Cli.ok("simulate", scene.toString(), "--until", "2", "--out", dir.resolve("straight.csv").toString());
         return ckpt;
     }
 
     @Test
     void resumeGivenNoOutputWritesThoseTheRunWasAskedFor() throws IOException {
         Path ckpt = stoppedRun();
-        Cli r = ok("resume", ckpt.toString());
+        Cli r = Cli.ok("resume", ckpt.toString());
         assertThat(r.out()).isEmpty();
         assertThat(read("final.csv")).isEqualTo(read("straight.csv"));
         assertThat(dir.resolve("report/pressure.csv")).exists();
@@ -68,10 +62,10 @@ class CheckpointOutputsTest {
     @Test
     void noSavedOutputsOrAnOutputOptionWritesOnlyWhatTheCommandLineSays() throws IOException {
         Path ckpt = stoppedRun();
-        Cli none = ok("resume", ckpt.toString(), "--no-saved-outputs");
+        Cli none = Cli.ok("resume", ckpt.toString(), "--no-saved-outputs");
         assertThat(none.out()).contains("pair collisions");
         assertThat(dir.resolve("final.csv")).doesNotExist();
-        ok("resume", ckpt.toString(), "--out", dir.resolve("other.csv").toString());
+        Cli.ok("resume", ckpt.toString(), "--out", dir.resolve("other.csv").toString());
         assertThat(read("other.csv")).isEqualTo(read("straight.csv"));
         assertThat(dir.resolve("final.csv")).doesNotExist();
         assertThat(dir.resolve("report")).doesNotExist();
@@ -81,10 +75,10 @@ class CheckpointOutputsTest {
     void aFinishedRunsCheckpointResumesWithoutRewritingItsOutputs() throws IOException {
         Path scene = Scenes.write(dir, "gas.json", Scenes.periodic());
         Path ckpt = dir.resolve("run.ckpt");
-        ok("simulate", scene.toString(), "--until", "1", "--checkpoint", ckpt.toString(), "--every", "0.5",
+        Cli.ok("simulate", scene.toString(), "--until", "1", "--checkpoint", ckpt.toString(), "--every", "0.5",
                 "--observe", "pressure", "--report", dir.resolve("report").toString());
         // The report exists (the run wrote it); continuing the run further prints a summary instead.
-        Cli r = ok("resume", ckpt.toString(), "--until", "1.5");
+        Cli r = Cli.ok("resume", ckpt.toString(), "--until", "1.5");
         assertThat(r.out()).contains("pair collisions");
     }
 
@@ -92,8 +86,8 @@ class CheckpointOutputsTest {
     void aCheckpointOfTheFirstFormatVersionStillResumes() throws IOException {
         Path scene = Scenes.write(dir, "gas.json", Scenes.periodic());
         Path ckpt = dir.resolve("run.ckpt");
-        ok("simulate", scene.toString(), "--until", "1", "--checkpoint", ckpt.toString());
-        ok("resume", ckpt.toString(), "--until", "2", "--out", dir.resolve("v2.csv").toString());
+        Cli.ok("simulate", scene.toString(), "--until", "1", "--checkpoint", ckpt.toString());
+        Cli.ok("resume", ckpt.toString(), "--until", "2", "--out", dir.resolve("v2.csv").toString());
         byte[] v2 = Files.readAllBytes(ckpt);
         // Version 2 adds, after version 1's payload, the second interval (8 bytes) and five empty paths (4 each).
         int header = 8 + 4 + 8;
@@ -105,7 +99,7 @@ class CheckpointOutputsTest {
         v1.put(v2, 0, 8).putInt(1).putLong(payload).put(body).putInt((int) crc.getValue());
         Path old = dir.resolve("v1.ckpt");
         Files.write(old, v1.array());
-        ok("resume", old.toString(), "--until", "2", "--out", dir.resolve("v1.csv").toString());
+        Cli.ok("resume", old.toString(), "--until", "2", "--out", dir.resolve("v1.csv").toString());
         assertThat(read("v1.csv")).isEqualTo(read("v2.csv"));
     }
 }

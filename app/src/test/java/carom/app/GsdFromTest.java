@@ -23,21 +23,15 @@ class GsdFromTest {
     @TempDir
     Path dir;
 
-    private Cli ok(String... args) {
-        Cli r = Cli.run(args);
-        assertThat(r.status()).as(String.join(" ", args) + "\n" + r.err()).isZero();
-        return r;
-    }
-
     @Test
     void aGsdFrameIsTheXyzFrameToFloatPrecision() throws IOException {
         Path scene = Scenes.write(dir, "mix.json", Scenes.mixture(40, 4, 0.02));
-        ok("simulate", scene.toString(), "--until", "1", "--every", "0.5", "--trajectory", dir.resolve("f.gsd").toString());
-        ok("simulate", scene.toString(), "--until", "1", "--every", "0.5", "--trajectory", dir.resolve("f.xyz").toString());
+        Cli.ok("simulate", scene.toString(), "--until", "1", "--every", "0.5", "--trajectory", dir.resolve("f.gsd").toString());
+        Cli.ok("simulate", scene.toString(), "--until", "1", "--every", "0.5", "--trajectory", dir.resolve("f.xyz").toString());
         for (String k : new String[] {"1", "-2"}) {
-            ok("simulate", scene.toString(), "--from", dir.resolve("f.gsd") + "@" + k, "--until", "1e-300",
+            Cli.ok("simulate", scene.toString(), "--from", dir.resolve("f.gsd") + "@" + k, "--until", "1e-300",
                     "--out-state", dir.resolve("g.json").toString());
-            ok("simulate", scene.toString(), "--from", dir.resolve("f.xyz") + "@" + k, "--until", "1e-300",
+            Cli.ok("simulate", scene.toString(), "--from", dir.resolve("f.xyz") + "@" + k, "--until", "1e-300",
                     "--out-state", dir.resolve("x.json").toString());
             Discs g = SceneReader.read(dir.resolve("g.json")).newDiscs();
             Discs x = SceneReader.read(dir.resolve("x.json")).newDiscs();
@@ -55,7 +49,7 @@ class GsdFromTest {
     @ValueSource(longs = {1, 2, 3, 4, 5, 6})
     void aDamagedGsdFileIsOneErrorLine(long seed) throws IOException {
         Path scene = Scenes.write(dir, "mix.json", Scenes.mixture(40, 4, 0));
-        ok("simulate", scene.toString(), "--until", "1", "--every", "0.5", "--trajectory", dir.resolve("f.gsd").toString());
+        Cli.ok("simulate", scene.toString(), "--until", "1", "--every", "0.5", "--trajectory", dir.resolve("f.gsd").toString());
         byte[] good = Files.readAllBytes(dir.resolve("f.gsd"));
         SplittableRandom random = new SplittableRandom(seed);
         byte[] bad = seed % 2 == 0 ? Arrays.copyOf(good, random.nextInt(good.length)) : good.clone();

@@ -21,12 +21,6 @@ class SamplingIntervalsTest {
     @TempDir
     Path dir;
 
-    private Cli ok(String... args) {
-        Cli r = Cli.run(args);
-        assertThat(r.status()).as(String.join(" ", args) + "\n" + r.err()).isZero();
-        return r;
-    }
-
     private static List<String> times(Path xyz) throws IOException {
         return Files.readAllLines(xyz).stream().filter(l -> l.startsWith("Lattice="))
                 .map(l -> l.replaceAll(".* Time=(\\S+) .*", "$1")).toList();
@@ -37,10 +31,10 @@ class SamplingIntervalsTest {
     void framesAndObservablesTakeTheirOwnIntervals(String engine, int threads) throws IOException {
         Path scene = Scenes.write(dir, "gas.json", Scenes.periodic());
         String t = Integer.toString(threads);
-        ok("simulate", scene.toString(), "--engine", engine, "--threads", t, "--until", "2", "--trajectory-every", "1",
+        Cli.ok("simulate", scene.toString(), "--engine", engine, "--threads", t, "--until", "2", "--trajectory-every", "1",
                 "--trajectory", dir.resolve("f.xyz").toString(), "--observe", "pressure", "--observe-every", "0.25",
                 "--report", dir.resolve("r").toString(), "--out", dir.resolve("sampled.csv").toString());
-        ok("simulate", scene.toString(), "--engine", engine, "--threads", t, "--until", "2",
+        Cli.ok("simulate", scene.toString(), "--engine", engine, "--threads", t, "--until", "2",
                 "--out", dir.resolve("plain.csv").toString());
         assertThat(times(dir.resolve("f.xyz"))).containsExactly("0.0", "1.0", "2.0");
         List<String> pressure = Files.readAllLines(dir.resolve("r/pressure.csv"));
@@ -56,7 +50,7 @@ class SamplingIntervalsTest {
     @Test
     void everySetsBothAndEachOwnIntervalOverridesIt() throws IOException {
         Path scene = Scenes.write(dir, "gas.json", Scenes.periodic());
-        ok("simulate", scene.toString(), "--until", "2", "--every", "0.5", "--trajectory", dir.resolve("f.xyz").toString(),
+        Cli.ok("simulate", scene.toString(), "--until", "2", "--every", "0.5", "--trajectory", dir.resolve("f.xyz").toString(),
                 "--observe", "pressure", "--observe-every", "1", "--report", dir.resolve("r").toString());
         assertThat(times(dir.resolve("f.xyz"))).containsExactly("0.0", "0.5", "1.0", "1.5", "2.0");
         assertThat(Files.readAllLines(dir.resolve("r/pressure.csv"))).hasSize(1 + 2);
@@ -66,12 +60,12 @@ class SamplingIntervalsTest {
     void aCheckpointedRunWithTwoIntervalsResumesToTheBytesOfOneRun() throws IOException {
         Path scene = Scenes.write(dir, "gas.json", Scenes.periodic());
         Path ckpt = dir.resolve("c.ckpt");
-        ok("simulate", scene.toString(), "--until", "1.3", "--trajectory-every", "0.5", "--trajectory",
+        Cli.ok("simulate", scene.toString(), "--until", "1.3", "--trajectory-every", "0.5", "--trajectory",
                 dir.resolve("first.xyz").toString(), "--observe", "pressure,msd", "--observe-every", "0.2",
                 "--report", dir.resolve("r1").toString(), "--checkpoint", ckpt.toString());
-        ok("resume", ckpt.toString(), "--until", "3", "--out", dir.resolve("resumed.csv").toString(),
+        Cli.ok("resume", ckpt.toString(), "--until", "3", "--out", dir.resolve("resumed.csv").toString(),
                 "--trajectory", dir.resolve("rest.xyz").toString(), "--report", dir.resolve("r2").toString());
-        ok("simulate", scene.toString(), "--until", "3", "--trajectory-every", "0.5", "--trajectory",
+        Cli.ok("simulate", scene.toString(), "--until", "3", "--trajectory-every", "0.5", "--trajectory",
                 dir.resolve("whole.xyz").toString(), "--observe", "pressure,msd", "--observe-every", "0.2",
                 "--report", dir.resolve("r3").toString(), "--out", dir.resolve("whole.csv").toString());
         assertThat(Files.readString(dir.resolve("resumed.csv"))).isEqualTo(Files.readString(dir.resolve("whole.csv")));
@@ -110,6 +104,6 @@ class SamplingIntervalsTest {
     @Test
     void withGrowthEveryAloneIsTheThermostatsInterval() {
         Path scene = Scenes.write(dir, "growth.json", Scenes.growth(60, 3));
-        ok("simulate", scene.toString(), "--until", "1", "--every", "0.5", "--out", dir.resolve("f.csv").toString());
+        Cli.ok("simulate", scene.toString(), "--until", "1", "--every", "0.5", "--out", dir.resolve("f.csv").toString());
     }
 }

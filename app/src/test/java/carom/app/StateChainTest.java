@@ -23,12 +23,6 @@ class StateChainTest {
     @TempDir
     Path dir;
 
-    private Cli ok(String... args) {
-        Cli r = Cli.run(args);
-        assertThat(r.status()).as(String.join(" ", args) + "\n" + r.err()).isZero();
-        return r;
-    }
-
     private static double[][] finalCsv(Path csv) throws IOException {
         List<String> lines = Files.readAllLines(csv);
         double[][] rows = new double[lines.size() - 1][];
@@ -44,7 +38,7 @@ class StateChainTest {
     @CsvSource({"fast, 0", "fast, 0.02", "slabs, 0.02", "serial, 0"})
     void theStateFileReadsBackToTheFinalStatesBits(String engine, double growth) throws IOException {
         Path scene = Scenes.write(dir, "mix.json", Scenes.mixture(80, 5, growth));
-        ok("simulate", scene.toString(), "--engine", engine, "--until", "1.5", "--out", dir.resolve("f.csv").toString(),
+        Cli.ok("simulate", scene.toString(), "--engine", engine, "--until", "1.5", "--out", dir.resolve("f.csv").toString(),
                 "--out-state", dir.resolve("s.json").toString());
         Scene state = SceneReader.read(dir.resolve("s.json"));
         Scene original = SceneReader.read(scene);
@@ -66,10 +60,10 @@ class StateChainTest {
     @CsvSource({"fast, 21", "serial, 22", "fast, 23"})
     void aRunFromTheStateReproducesTheOriginalRunsNextStretch(String engine, long seed) throws IOException {
         Path scene = Scenes.write(dir, "mix.json", Scenes.mixture(100, seed, 0));
-        ok("simulate", scene.toString(), "--engine", engine, "--until", "0.6", "--out", dir.resolve("whole.csv").toString());
-        ok("simulate", scene.toString(), "--engine", engine, "--until", "0.3", "--out-state", dir.resolve("half.json").toString(),
+        Cli.ok("simulate", scene.toString(), "--engine", engine, "--until", "0.6", "--out", dir.resolve("whole.csv").toString());
+        Cli.ok("simulate", scene.toString(), "--engine", engine, "--until", "0.3", "--out-state", dir.resolve("half.json").toString(),
                 "--out", dir.resolve("half.csv").toString());
-        ok("simulate", scene.toString(), "--engine", engine, "--from", dir.resolve("half.json").toString(), "--until", "0.3",
+        Cli.ok("simulate", scene.toString(), "--engine", engine, "--from", dir.resolve("half.json").toString(), "--until", "0.3",
                 "--out", dir.resolve("rest.csv").toString());
         double[][] whole = finalCsv(dir.resolve("whole.csv"));
         double[][] rest = finalCsv(dir.resolve("rest.csv"));
@@ -89,11 +83,11 @@ class StateChainTest {
     @Test
     void aRunFromAStateCheckpointsAndResumesToTheBytesOfOneRun() throws IOException {
         Path scene = Scenes.write(dir, "mix.json", Scenes.mixture(80, 12, 0));
-        ok("simulate", scene.toString(), "--until", "0.5", "--out-state", dir.resolve("s.json").toString());
-        ok("simulate", scene.toString(), "--from", dir.resolve("s.json").toString(), "--until", "0.4",
+        Cli.ok("simulate", scene.toString(), "--until", "0.5", "--out-state", dir.resolve("s.json").toString());
+        Cli.ok("simulate", scene.toString(), "--from", dir.resolve("s.json").toString(), "--until", "0.4",
                 "--checkpoint", dir.resolve("c.ckpt").toString());
-        ok("resume", dir.resolve("c.ckpt").toString(), "--until", "1", "--out", dir.resolve("resumed.csv").toString());
-        ok("simulate", scene.toString(), "--from", dir.resolve("s.json").toString(), "--until", "1",
+        Cli.ok("resume", dir.resolve("c.ckpt").toString(), "--until", "1", "--out", dir.resolve("resumed.csv").toString());
+        Cli.ok("simulate", scene.toString(), "--from", dir.resolve("s.json").toString(), "--until", "1",
                 "--out", dir.resolve("straight.csv").toString());
         assertThat(Files.readString(dir.resolve("resumed.csv"))).isEqualTo(Files.readString(dir.resolve("straight.csv")));
     }
@@ -101,10 +95,10 @@ class StateChainTest {
     @Test
     void aPackingTakesTheScenesVelocityBlockAndAFrameItsOwnVelocities() throws IOException {
         Path scene = Scenes.write(dir, "mix.json", Scenes.mixture(60, 8, 0.02));
-        ok("compress", scene.toString(), "--to-pressure", "1e9", "--out", dir.resolve("p.csv").toString());
+        Cli.ok("compress", scene.toString(), "--to-pressure", "1e9", "--out", dir.resolve("p.csv").toString());
         assertThat(Files.readAllLines(dir.resolve("p.csv")).get(0)).isEqualTo("id,x,y,radius,species");
         Path plain = Scenes.write(dir, "plain.json", Scenes.mixture(60, 9, 0));
-        ok("simulate", plain.toString(), "--from", dir.resolve("p.csv").toString(), "--until", "0.5", "--every", "0.5",
+        Cli.ok("simulate", plain.toString(), "--from", dir.resolve("p.csv").toString(), "--until", "0.5", "--every", "0.5",
                 "--trajectory", dir.resolve("f.xyz").toString(), "--out-state", dir.resolve("s.json").toString());
         // Velocities drawn as the scene's maxwell block says: kinetic energy n kT, T = 1, masses 1.
         List<String> frames = Files.readAllLines(dir.resolve("f.xyz"));
@@ -115,7 +109,7 @@ class StateChainTest {
         }
         assertThat(kinetic).isCloseTo(60, within(1e-9));
         // Frame 1 (the last, t = 0.5) is the state written at the end, to the bit.
-        ok("simulate", plain.toString(), "--from", dir.resolve("f.xyz") + "@-1", "--until", "1e-12",
+        Cli.ok("simulate", plain.toString(), "--from", dir.resolve("f.xyz") + "@-1", "--until", "1e-12",
                 "--out-state", dir.resolve("again.json").toString());
         Discs fromFrame = SceneReader.read(dir.resolve("again.json")).newDiscs();
         Discs fromState = SceneReader.read(dir.resolve("s.json")).newDiscs();
@@ -151,16 +145,16 @@ class StateChainTest {
     @Test
     void aFrameIndexBeyondTheTrajectoryOrAnUnknownKindIsBadInput() throws IOException {
         Path scene = Scenes.write(dir, "gas.json", Scenes.periodic());
-        ok("simulate", scene.toString(), "--until", "1", "--every", "0.5", "--trajectory", dir.resolve("f.xyz").toString());
+        Cli.ok("simulate", scene.toString(), "--until", "1", "--every", "0.5", "--trajectory", dir.resolve("f.xyz").toString());
         Cli beyond = Cli.run("simulate", scene.toString(), "--from", dir.resolve("f.xyz") + "@3");
         assertThat(beyond.firstErrorLine()).contains("frame 3 of 3 frames");
         Cli before = Cli.run("simulate", scene.toString(), "--from", dir.resolve("f.xyz") + "@-4");
         assertThat(before.firstErrorLine()).contains("frame -4 of 3 frames");
         Cli kind = Cli.run("simulate", scene.toString(), "--from", dir.resolve("f.txt").toString());
         assertThat(kind.firstErrorLine()).startsWith("error: --from: ").contains("a state or scene (.json)");
-        Cli first = ok("simulate", scene.toString(), "--from", dir.resolve("f.xyz") + "@0", "--until", "1",
+        Cli first = Cli.ok("simulate", scene.toString(), "--from", dir.resolve("f.xyz") + "@0", "--until", "1",
                 "--out", dir.resolve("a.csv").toString());
-        ok("simulate", scene.toString(), "--until", "1", "--out", dir.resolve("b.csv").toString());
+        Cli.ok("simulate", scene.toString(), "--until", "1", "--out", dir.resolve("b.csv").toString());
         assertThat(first.status()).isZero();
         assertThat(Files.readString(dir.resolve("a.csv"))).isEqualTo(Files.readString(dir.resolve("b.csv")));
     }
