@@ -1,7 +1,6 @@
 package carom.app.gsd;
 
 import carom.core.BadInputException;
-import carom.core.Quoted;
 import carom.core.state.Discs;
 import java.io.IOException;
 import java.nio.ByteBuffer;
@@ -40,11 +39,10 @@ public final class GsdFrames {
     private record Entry(long frame, long n, long location, int m, int id, int type) {
     }
 
-    /** A frame read: its time ({@code log/carom/time}, NaN if absent), the species names and the discs. */
-    public record Frame(double time, List<String> types, Discs discs) {
+    /** A frame read: the species names and the discs. */
+    public record Frame(List<String> types, Discs discs) {
     }
 
-    private final Path file;
     private final String what;
     private final FileChannel channel;
     private final long size;
@@ -53,8 +51,7 @@ public final class GsdFrames {
     private final Map<Long, Map<Integer, Entry>> frames = new HashMap<>();
     private long frameCount;
 
-    private GsdFrames(Path file, String what, FileChannel channel) throws IOException {
-        this.file = file;
+    private GsdFrames(String what, FileChannel channel) throws IOException {
         this.what = what;
         this.channel = channel;
         this.size = channel.size();
@@ -72,7 +69,7 @@ public final class GsdFrames {
             throw new BadInputException(what + ": not a regular file");
         }
         try (FileChannel channel = FileChannel.open(file, StandardOpenOption.READ)) {
-            GsdFrames gsd = new GsdFrames(file, what, channel);
+            GsdFrames gsd = new GsdFrames(what, channel);
             gsd.readIndex();
             long index = k < 0 ? gsd.frameCount + k : k;
             if (index < 0 || index >= gsd.frameCount) {
@@ -214,10 +211,7 @@ public final class GsdFrames {
                 throw bad("disc " + i + " has a number that is not finite, or a diameter not > 0");
             }
         }
-        Integer timeId = ids.get("log/carom/time");
-        Entry time = timeId == null ? null : frames.getOrDefault(f, Map.of()).get(timeId);
-        double at = time == null ? Double.NaN : data(time, "log/carom/time", GsdType.DOUBLE, 1, 1).getDouble(0);
-        return new Frame(at, types, d);
+        return new Frame(types, d);
     }
 
     /** {@code particles/types}: one 0-padded UTF-8 name a row; ["A"] without the chunk. */
@@ -251,10 +245,5 @@ public final class GsdFrames {
         double c = centred + 0.5 * side;
         double wrapped = c >= side ? c - side : c < 0 ? c + side : c;
         return wrapped >= side ? 0 : wrapped;
-    }
-
-    @Override
-    public String toString() {
-        return "GSD " + Quoted.fileName(file.toString());
     }
 }
