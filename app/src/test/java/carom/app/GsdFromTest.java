@@ -45,6 +45,46 @@ class GsdFromTest {
         }
     }
 
+    /**
+     * A file gsd.hoomd wrote (the format's own writer: later frames hold only what changed, the rest is
+     * frame 0's) reads as its frames say, positions moved from the centred box into the scene's.
+     */
+    @Test
+    void aFileTheGsdPackageWroteReadsAsItsFramesSay() throws IOException, InterruptedException {
+        String python = GsdPython.python(dir);
+        Path script = Files.writeString(dir.resolve("write.py"), """
+                import sys, numpy as np, gsd.hoomd
+                with gsd.hoomd.open(sys.argv[1], 'w') as f:
+                    for k in range(3):
+                        fr = gsd.hoomd.Frame()
+                        fr.configuration.box = [20, 20, 0, 0, 0, 0]
+                        fr.configuration.dimensions = 2
+                        fr.particles.N = 3
+                        fr.particles.types = ['small', 'large']
+                        fr.particles.typeid = [0, 1, 0]
+                        fr.particles.position = np.array([[-5, -5, 0], [5, 5, 0], [-9.75 + k, 5, 0]], dtype=np.float32)
+                        fr.particles.velocity = np.array([[1, 0, 0], [0, 1, 0], [0.5, -1, 0]], dtype=np.float32)
+                        fr.particles.diameter = np.array([1, 1.5, 1], dtype=np.float32)
+                        f.append(fr)
+                """);
+        Path gsd = dir.resolve("py.gsd");
+        GsdPython.Result wrote = GsdPython.run(java.util.List.of(python, script.toString(), gsd.toString()), dir);
+        assertThat(wrote.status()).as(wrote.err()).isZero();
+        Path scene = Files.writeString(dir.resolve("s.json"), """
+                { "box": {"width": 20, "height": 20, "boundary": "periodic"},
+                  "species": [{"name": "small", "radius": 0.5, "mass": 1}, {"name": "large", "radius": 0.75, "mass": 1}],
+                  "until": 1 }
+                """);
+        Cli.ok("simulate", scene.toString(), "--from", gsd + "@1", "--until", "1e-300", "--out-state",
+                dir.resolve("state.json").toString());
+        Discs d = SceneReader.read(dir.resolve("state.json")).newDiscs();
+        assertThat(d.species).containsExactly(0, 1, 0);
+        assertThat(d.x).containsExactly(5, 15, 1.25);
+        assertThat(d.y).containsExactly(5, 15, 15);
+        assertThat(d.vx).containsExactly(1, 0, 0.5);
+        assertThat(d.radius).containsExactly(0.5, 0.75, 0.5);
+    }
+
     @ParameterizedTest
     @ValueSource(longs = {1, 2, 3, 4, 5, 6})
     void aDamagedGsdFileIsOneErrorLine(long seed) throws IOException {

@@ -40,7 +40,7 @@ public final class StateFile {
         header.put("until", until);
         String text = MAPPER.writerWithDefaultPrettyPrinter().writeValueAsString(header);
         // The header object without its closing brace, then the particles and the brace.
-        w.write(text, 0, text.lastIndexOf('}'));
+        w.write(text.substring(0, text.lastIndexOf('}')).stripTrailing());
         w.write(",\n  \"particles\" : [");
         List<Species> species = scene.species();
         String[] names = new String[species.size()];
