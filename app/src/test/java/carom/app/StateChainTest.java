@@ -142,6 +142,18 @@ class StateChainTest {
         assertThat(dir.resolve("f.csv")).doesNotExist();
     }
 
+    @ParameterizedTest
+    @org.junit.jupiter.params.provider.ValueSource(strings = {"s.json", "p.csv", "f.xyz", "f.gsd"})
+    void aSourceThatIsNoRegularFileIsRefusedUnread(String name) throws IOException, InterruptedException {
+        Path scene = Scenes.write(dir, "gas.json", Scenes.periodic());
+        Path fifo = dir.resolve(name);
+        Process mkfifo = new ProcessBuilder("mkfifo", fifo.toString()).start();
+        assertThat(mkfifo.waitFor()).isZero();
+        Cli r = Cli.run("simulate", scene.toString(), "--from", fifo.toString());
+        assertThat(r.status()).isEqualTo(Main.BAD_INPUT);
+        assertThat(r.firstErrorLine()).startsWith("error: --from ").endsWith(": not a regular file");
+    }
+
     @Test
     void aFrameIndexBeyondTheTrajectoryOrAnUnknownKindIsBadInput() throws IOException {
         Path scene = Scenes.write(dir, "gas.json", Scenes.periodic());

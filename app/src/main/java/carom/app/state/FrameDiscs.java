@@ -8,7 +8,6 @@ import carom.core.scene.DiscSource;
 import carom.core.scene.SceneBuilder;
 import carom.core.scene.Species;
 import carom.core.state.Discs;
-import java.nio.file.Files;
 import java.nio.file.Path;
 
 /**
@@ -24,7 +23,7 @@ final class FrameDiscs {
 
     /** Frame {@code k} of the extended XYZ trajectory {@code file}. */
     static DiscSource xyz(String name, Path file, int k) {
-        requireRegular(name, file);
+        FromSource.requireRegular(name, file);
         int wanted = k;
         if (k < 0) {
             long frames;
@@ -84,14 +83,5 @@ final class FrameDiscs {
             throw new BadInputException(name + ": frame " + k + " of " + frames + " frames (from 0; -1 the last)");
         }
         return (int) index;
-    }
-
-    static void requireRegular(String name, Path file) {
-        if (!Files.exists(file)) {
-            throw new BadInputException(name + ": no such file");
-        }
-        if (!Files.isRegularFile(file)) {
-            throw new BadInputException(name + ": not a regular file");
-        }
     }
 }

@@ -8,6 +8,7 @@ import carom.core.scene.SceneBuilder;
 import carom.core.scene.SceneReader;
 import carom.core.scene.Species;
 import carom.core.state.Discs;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
@@ -73,8 +74,19 @@ public final class FromSource {
                 + "or a trajectory frame (FRAMES.xyz@K, FRAMES.gsd@K)");
     }
 
+    /** Bad input unless {@code file} exists and is a regular file (a FIFO would block the read, a device never end it). */
+    static void requireRegular(String name, Path file) {
+        if (!Files.exists(file)) {
+            throw new BadInputException(name + ": no such file");
+        }
+        if (!Files.isRegularFile(file)) {
+            throw new BadInputException(name + ": not a regular file");
+        }
+    }
+
     /** The discs of the scene file {@code path}, read as strictly as any scene. */
     private static DiscSource sceneDiscs(String name, Path path) {
+        requireRegular(name, path);
         Scene source;
         try {
             source = SceneReader.read(path);

@@ -37,9 +37,7 @@ final class PackingCsv {
     }
 
     static DiscSource read(String name, Path file) {
-        if (Files.exists(file) && !Files.isRegularFile(file)) {
-            throw new BadInputException(name + ": not a regular file");
-        }
+        FromSource.requireRegular(name, file);
         try (BufferedReader in = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
             String header = in.readLine();
             boolean withSpecies = HEADER_WITH_SPECIES.equals(header);
