@@ -317,7 +317,12 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
         CheckpointFile checkpoint = saved;
         Engine engine = file.about(() -> EnginesCommand.engineNamed(checkpoint.engine()));
         file.about(() -> {
-            command.checkpoints.check(engine);
+            if (useSaved) {
+                // Checkpoints go on into the file resumed; --checkpoint-every may still set their interval.
+                command.checkpoints.checkInterval();
+            } else {
+                command.checkpoints.check(engine);
+            }
             Tunables.check(engine.name(), engine.spec().tunables(), checkpoint.tunables());
             return null;
         });

@@ -60,6 +60,16 @@ class CheckpointOutputsTest {
     }
 
     @Test
+    void checkpointEverySetsTheIntervalOfTheCheckpointsTheResumedRunGoesOnWriting() throws IOException {
+        Path ckpt = stoppedRun();
+        assertThat(Cli.run("resume", ckpt.toString(), "--checkpoint-every", "0").firstErrorLine())
+                .isEqualTo("error: " + ckpt + ": --checkpoint-every: must be a finite number > 0, got 0.0");
+        Cli.ok("resume", ckpt.toString(), "--checkpoint-every", "0.5");
+        assertThat(read("final.csv")).isEqualTo(read("straight.csv"));
+        assertThat(CheckpointFile.read(ckpt).checkpointEvery()).isEqualTo(0.5);
+    }
+
+    @Test
     void noSavedOutputsOrAnOutputOptionWritesOnlyWhatTheCommandLineSays() throws IOException {
         Path ckpt = stoppedRun();
         Cli none = Cli.ok("resume", ckpt.toString(), "--no-saved-outputs");
