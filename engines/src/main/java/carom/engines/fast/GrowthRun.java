@@ -38,9 +38,9 @@ import java.util.Map;
  *       next stage built from the state. Local clocks count from the stage's start, and are
  *       re-anchored every {@link DiscTable#RESYNC_SPANS} calendar spans as in {@code fast}, with the
  *       growth's anchor moved too ({@link DiscTable#anchorGrowth}).</li>
- *   <li><b>Thermostat.</b> At every sample time (k·every) every disc is advanced to it, the sample is
- *       handed out, and all velocities are multiplied by one factor that brings the kinetic energy
- *       back to its initial value; the next stage starts from there (its predictions are all new). A
+ *   <li><b>Thermostat.</b> At every sample time (k·every) every disc is advanced to it, all velocities
+ *       are multiplied by one factor that brings the kinetic energy back to its initial value, and the
+ *       sample is handed out (so the sample at until is the final state); the next stage starts from there (its predictions are all new). A
  *       compression ({@code energyCap} finite) also rescales whenever the kinetic energy has grown
  *       {@code energyCap} times: near jamming the collisions pump energy in faster and faster, and
  *       without that the number of collisions to a given pressure grows like the pressure itself
@@ -273,17 +273,18 @@ public final class GrowthRun {
         double at = agenda.epoch() + local;
         motion.finalRange(state, 0, n, local, at);
         boolean sampleDue = samples.next() <= at;
+        if (sampleDue || capReached) {
+            endInterval(at);
+            rescale();
+            capReached = false;
+        }
         if (sampleDue) {
+            // After the thermostat: a sample is the state the run goes on from, the last one the final state.
             Discs s = samples.state();
             copyInto(state, s);
             grownRadii(s, at);
             samples.emit(virial.total());
             agenda.sampled();
-        }
-        if (sampleDue || capReached) {
-            endInterval(at);
-            rescale();
-            capReached = false;
         }
         if (lastCompressibility > stopPressure) {
             stop(Stop.PRESSURE, at);
