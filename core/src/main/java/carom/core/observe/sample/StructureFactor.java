@@ -159,28 +159,82 @@ public final class StructureFactor implements SampledObservable {
         sampleValues = new double[(1 + pairs) * bins];
     }
 
-    /** ρ_a(k) of every species and vector, by recurrence along each direction. */
+    /**
+     * ρ_a(k) of every species and vector, by recurrence along each direction. Discs go four at a time:
+     * one disc's recurrence is a chain of dependent multiplications, four independent chains keep the
+     * multipliers busy. Each vector's sums still take the discs in id order, so the values are those of
+     * one disc at a time.
+     */
     private void computeDensities(Sample s) {
         int vectors = binOf.length;
         java.util.Arrays.fill(rhoRe, 0);
         java.util.Arrays.fill(rhoIm, 0);
         double[] re = rhoRe;
         double[] im = rhoIm;
-        for (int i = 0; i < s.n; i++) {
-            int base = s.species[i] * vectors;
-            double x = s.x[i];
-            double y = s.y[i];
-            int v = base;
+        int i = 0;
+        for (; i + 4 <= s.n; i += 4) {
+            int v0 = s.species[i] * vectors;
+            int v1 = s.species[i + 1] * vectors;
+            int v2 = s.species[i + 2] * vectors;
+            int v3 = s.species[i + 3] * vectors;
             for (int d = 0; d < steps.length; d++) {
-                double phase = stepX[d] * x + stepY[d] * y;
+                double kx = stepX[d];
+                double ky = stepY[d];
+                double p0 = kx * s.x[i] + ky * s.y[i];
+                double p1 = kx * s.x[i + 1] + ky * s.y[i + 1];
+                double p2 = kx * s.x[i + 2] + ky * s.y[i + 2];
+                double p3 = kx * s.x[i + 3] + ky * s.y[i + 3];
+                double c0 = Math.cos(p0);
+                double s0 = Math.sin(p0);
+                double c1 = Math.cos(p1);
+                double s1 = Math.sin(p1);
+                double c2 = Math.cos(p2);
+                double s2 = Math.sin(p2);
+                double c3 = Math.cos(p3);
+                double s3 = Math.sin(p3);
+                double r0 = c0;
+                double q0 = s0;
+                double r1 = c1;
+                double q1 = s1;
+                double r2 = c2;
+                double q2 = s2;
+                double r3 = c3;
+                double q3 = s3;
+                for (int j = 0; j < steps[d]; j++) {
+                    re[v0] += r0;
+                    im[v0++] += q0;
+                    re[v1] += r1;
+                    im[v1++] += q1;
+                    re[v2] += r2;
+                    im[v2++] += q2;
+                    re[v3] += r3;
+                    im[v3++] += q3;
+                    double t0 = r0 * c0 - q0 * s0;
+                    q0 = r0 * s0 + q0 * c0;
+                    r0 = t0;
+                    double t1 = r1 * c1 - q1 * s1;
+                    q1 = r1 * s1 + q1 * c1;
+                    r1 = t1;
+                    double t2 = r2 * c2 - q2 * s2;
+                    q2 = r2 * s2 + q2 * c2;
+                    r2 = t2;
+                    double t3 = r3 * c3 - q3 * s3;
+                    q3 = r3 * s3 + q3 * c3;
+                    r3 = t3;
+                }
+            }
+        }
+        for (; i < s.n; i++) {
+            int v = s.species[i] * vectors;
+            for (int d = 0; d < steps.length; d++) {
+                double phase = stepX[d] * s.x[i] + stepY[d] * s.y[i];
                 double cr = Math.cos(phase);
                 double ci = Math.sin(phase);
                 double er = cr;
                 double ei = ci;
                 for (int j = 0; j < steps[d]; j++) {
                     re[v] += er;
-                    im[v] += ei;
-                    v++;
+                    im[v++] += ei;
                     double nr = er * cr - ei * ci;
                     ei = er * ci + ei * cr;
                     er = nr;
