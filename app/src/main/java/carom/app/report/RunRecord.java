@@ -90,15 +90,21 @@ public record RunRecord(String command, String engine, String scene, String scen
                 + ", " + o.path("threads").asText() + " thread(s)");
         rows.put("pair collisions", pairs + (discs > 0 ? String.format(java.util.Locale.ROOT, " (%.3g per disc)", (double) pairs / discs) : ""));
         rows.put("wall collisions", o.path("collisions").path("wall").asText());
-        rows.put("energy drift", o.path("energyDrift").isNull() ? "undefined" : o.path("energyDrift").asText());
+        rows.put("energy drift", o.path("energyDrift").isNull() ? "undefined"
+                : String.format(java.util.Locale.ROOT, "%.3e", o.path("energyDrift").asDouble()));
         JsonNode p = o.path("pressure");
         if (p.isObject()) {
-            rows.put("Z = PA/(NkT)", p.path("Z").asText() + " ± " + p.path("Zerror").asText() + " (" + p.path("blocks").asText()
-                    + " blocks)");
+            // Z to the error's second significant digit, as a table in a paper gives it.
+            double z = p.path("Z").asDouble();
+            double error = p.path("Zerror").asDouble();
+            int decimals = error > 0 && Double.isFinite(error) ? Math.max(0, 1 - (int) Math.floor(Math.log10(error))) : 4;
+            rows.put("Z = PA/(NkT)", String.format(java.util.Locale.ROOT, "%." + decimals + "f ± %." + decimals + "f (%d blocks)",
+                    z, error, p.path("blocks").asInt()));
         }
-        rows.put("deepest overlap", o.path("finalState").path("deepestOverlap").asText() + " of a contact distance");
-        rows.put("wall seconds", o.path("wallSeconds").asText() + " (" + o.path("collisionsPerSecond").asText()
-                + " collisions per second)");
+        rows.put("deepest overlap", String.format(java.util.Locale.ROOT, "%.3g of a contact distance",
+                o.path("finalState").path("deepestOverlap").asDouble()));
+        rows.put("wall seconds", String.format(java.util.Locale.ROOT, "%.3f (%.4g collisions per second)",
+                o.path("wallSeconds").asDouble(), o.path("collisionsPerSecond").asDouble()));
         return rows;
     }
 }

@@ -29,7 +29,7 @@ class ReportSummaryTest {
         assertThat(r.status()).as(r.err()).isZero();
         String html = Files.readString(page);
         assertThat(html).contains("<h3>Summary</h3>").containsPattern("<th>pair collisions</th><td>[0-9]+ \\([0-9.e+-]+ per disc\\)</td>")
-                .containsPattern("<th>Z = PA/\\(NkT\\)</th><td>[0-9.]+ ± [0-9.eE-]+ \\(20 blocks\\)</td>")
+                .containsPattern("<th>Z = PA/\\(NkT\\)</th><td>[0-9]+\\.[0-9]+ ± 0\\.[0-9]+ \\(20 blocks\\)</td>")
                 .contains("<th>energy drift</th>");
     }
 
