@@ -17,7 +17,8 @@ import java.util.List;
  *     of cos(k·Δr) over the directions of k, at one wave number k ({@code fs.csv}:
  *     {@code species,k,lag,Fs,error}, k in inverse length units). By default k is the position of the
  *     highest peak of S(k) for kσ in [2, 12] in the scene's starting state (the first peak of a
- *     liquid's), σ the mean diameter, from {@link StructureFactor}'s wave vectors; 2π/σ in a walled box.</li>
+ *     liquid's), σ the mean diameter, from {@link StructureFactor}'s wave vectors in bins 0.1/σ wide;
+ *     2π/σ in a walled box.</li>
  * </ul>
  *
  * <p>Errors: each lag's per-origin means of a species go into {@link BlockAverages} in time order, so
@@ -30,6 +31,8 @@ public final class SpeciesDisplacement implements SampledObservable {
     /** The window of kσ where the default k of F_s is looked for. */
     public static final double PEAK_FROM_SIGMA = 2;
     public static final double PEAK_TO_SIGMA = 12;
+    /** Bins of S(k) the peak is looked for in, in units of 1/σ: one sample, so finer than S(k)'s own. */
+    static final double PEAK_BIN_WIDTH_SIGMA = 0.1;
     private static final long LAYOUT = 1;
 
     private final String key;
@@ -73,7 +76,7 @@ public final class SpeciesDisplacement implements SampledObservable {
         if (!start.box.periodic()) {
             return 2 * Math.PI / sigma;
         }
-        StructureFactor sk = new StructureFactor(speciesNames, PEAK_TO_SIGMA, StructureFactor.DEFAULT_BIN_WIDTH_SIGMA);
+        StructureFactor sk = new StructureFactor(speciesNames, PEAK_TO_SIGMA, PEAK_BIN_WIDTH_SIGMA);
         sk.accept(start);
         double[] k = sk.k();
         double[] s = sk.s();

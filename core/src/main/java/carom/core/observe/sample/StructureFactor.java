@@ -23,7 +23,9 @@ import java.util.List;
  * so a sample costs about N · (vectors) complex multiplications. An isotropic fluid's S(k) is the same
  * along every direction; a crystal's Bragg peaks show only where a direction meets them.
  *
- * <p>Defaults: bins 0.1/σ wide up to k = 20/σ, σ the first sample's mean diameter. Needs a periodic
+ * <p>Defaults: bins 0.2/σ wide up to k = 20/σ, σ the first sample's mean diameter (the vectors along a
+ * direction are a bin apart, so a bin holds about one per direction whatever its width: wider bins cost
+ * less and are as precise). Needs a periodic
  * box (walls are not translation-invariant, and the wave vectors are the periodic box's).
  */
 public final class StructureFactor implements SampledObservable {
@@ -31,7 +33,7 @@ public final class StructureFactor implements SampledObservable {
     /** kMax in units of 1/σ when not given. */
     public static final double DEFAULT_K_MAX_SIGMA = 20;
     /** Bin width in units of 1/σ. */
-    public static final double DEFAULT_BIN_WIDTH_SIGMA = 0.1;
+    public static final double DEFAULT_BIN_WIDTH_SIGMA = 0.2;
     private static final int[][] DIRECTIONS = {{1, 0}, {0, 1}, {1, 1}, {1, -1}, {1, 2}, {1, -2}, {2, 1}, {2, -1}};
     private static final long LAYOUT = 1;
 
