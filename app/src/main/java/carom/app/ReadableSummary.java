@@ -21,6 +21,11 @@ final class ReadableSummary {
     private static final int KEY_WIDTH = 22;
     /** Characters of the scene's name shown. */
     private static final int NAME_CHARS = 200;
+    /**
+     * Pair collisions per disc after which two exact engines' collision counts differ (rounding grows
+     * about fourfold per collision per disc: lab/notes/exact-engines-agreement/).
+     */
+    static final double CHAOS_HORIZON = 20;
 
     private ReadableSummary() {
     }
@@ -37,6 +42,12 @@ final class ReadableSummary {
         line(out, "until", Double.toString(r.until()));
         line(out, "threads", Integer.toString(run.threads()));
         line(out, "pair collisions", Long.toString(r.pairCollisions()));
+        double perDisc = run.discs() == 0 ? 0 : (double) r.pairCollisions() / run.discs();
+        if (r.exact() && perDisc >= CHAOS_HORIZON) {
+            // Where a user compares two engines' counts: past this horizon they differ, and both are right.
+            line(out, "  per disc", String.format(Locale.ROOT, "%.3g  (past about %.0f per disc, chaos makes exact engines' "
+                    + "counts and trajectories differ: compare long runs by pressure and energy)", perDisc, CHAOS_HORIZON));
+        }
         line(out, "wall collisions", Long.toString(r.wallCollisions()));
         line(out, "events", Long.toString(r.events()));
         line(out, "wall seconds", String.format(Locale.ROOT, "%.3f", r.wallSeconds()));

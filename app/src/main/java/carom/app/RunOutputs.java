@@ -30,9 +30,13 @@ final class RunOutputs {
         Observing observing = request.sampling().observing();
         if (observing != null && outputs.report() != null) {
             RunRecord record = record(request);
+            ObjectNode summary = SummaryJson.toJson(finished);
             files.stageFolder(outputs.report(), folder -> {
                 observing.writeInto(folder);
                 record.writeInto(folder);
+                try (java.io.Writer w = java.nio.file.Files.newBufferedWriter(folder.resolve(RunRecord.SUMMARY_FILE))) {
+                    SummaryJson.write(summary, w);
+                }
             });
         }
         if (outputs.out() != null) {
@@ -58,6 +62,7 @@ final class RunOutputs {
         RunRequest.Sampling sampling = request.sampling();
         return new RunRecord(request.settings().commandLine(), request.engine().name(), scene.name(),
                 request.settings().sceneFile(), scene.size(), scene.until(), sampling.observeEvery(),
-                List.of(sampling.observe().split(",")).stream().map(String::strip).toList(), Provenance.machine());
+                List.of(sampling.observe().split(",")).stream().map(String::strip).toList(), Provenance.machine(),
+                java.lang.management.ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage());
     }
 }

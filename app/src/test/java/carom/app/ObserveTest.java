@@ -38,7 +38,7 @@ class ObserveTest {
         try (Stream<Path> files = Files.list(report)) {
             assertThat(files.map(p -> p.getFileName().toString()).sorted()).containsExactly(
                     "gr.csv", "gr.png", "gr.svg", "msd.csv", "msd.png", "msd.svg", "pressure.csv", "pressure.png", "pressure.svg",
-                    "psi6.csv", "psi6.png", "psi6.svg", "run.json");
+                    "psi6.csv", "psi6.png", "psi6.svg", "run.json", "summary.json");
         }
         for (String key : List.of("gr", "msd", "psi6", "pressure")) {
             assertThat(ImageIO.read(report.resolve(key + ".png").toFile())).as(key).isNotNull();

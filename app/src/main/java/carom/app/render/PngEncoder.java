@@ -12,7 +12,10 @@ import java.util.Map;
 import javax.imageio.IIOImage;
 import javax.imageio.ImageIO;
 import javax.imageio.ImageWriteParam;
+import javax.imageio.ImageTypeSpecifier;
 import javax.imageio.ImageWriter;
+import javax.imageio.metadata.IIOMetadata;
+import javax.imageio.metadata.IIOMetadataNode;
 import javax.imageio.stream.ImageOutputStream;
 import javax.imageio.stream.MemoryCacheImageOutputStream;
 
@@ -20,16 +23,24 @@ import javax.imageio.stream.MemoryCacheImageOutputStream;
  * PNG bytes of a picture, kept small: a picture of discs has a few main colours and their
  * antialiased blends, so it is stored with a palette of its 256 most frequent colours (any rarer
  * colour, found only along edges, becomes the nearest of them), then deflated as hard as the JDK's
- * writer can.
+ * writer can. A comment (what made it) goes into a {@code tEXt} chunk under the keyword
+ * {@value #COMMENT_KEYWORD}, where {@code carom report} finds it.
  */
 final class PngEncoder {
     static final int PALETTE_SIZE = 256;
+    /** The PNG text keyword of the comment. */
+    public static final String COMMENT_KEYWORD = "Comment";
 
     private PngEncoder() {
     }
 
     static byte[] encode(BufferedImage rgb) {
-        return write(toPalette(rgb));
+        return encode(rgb, null);
+    }
+
+    /** The picture as PNG with {@code comment} (Latin-1 text, as PNG's tEXt holds) in it; null for none. */
+    static byte[] encode(BufferedImage rgb, String comment) {
+        return write(toPalette(rgb), comment);
     }
 
     /** The picture with a palette of its most frequent colours; exact when it has at most 256. */
@@ -90,7 +101,7 @@ final class PngEncoder {
         return best;
     }
 
-    private static byte[] write(BufferedImage image) {
+    private static byte[] write(BufferedImage image, String comment) {
         ImageWriter writer = ImageIO.getImageWritersByFormatName("png").next();
         ByteArrayOutputStream bytes = new ByteArrayOutputStream(1 << 16);
         // A memory cache, not ImageIO's default of a file in java.io.tmpdir, which a full /tmp would fail.
@@ -99,12 +110,33 @@ final class PngEncoder {
             ImageWriteParam param = writer.getDefaultWriteParam();
             param.setCompressionMode(ImageWriteParam.MODE_EXPLICIT);
             param.setCompressionQuality(0f); // 0 = smallest file; PNG is lossless either way
-            writer.write(null, new IIOImage(image, null, null), param);
+            IIOMetadata metadata = null;
+            if (comment != null) {
+                metadata = writer.getDefaultImageMetadata(ImageTypeSpecifier.createFromRenderedImage(image), param);
+                IIOMetadataNode entry = new IIOMetadataNode("tEXtEntry");
+                entry.setAttribute("keyword", COMMENT_KEYWORD);
+                entry.setAttribute("value", latin1(comment));
+                IIOMetadataNode text = new IIOMetadataNode("tEXt");
+                text.appendChild(entry);
+                IIOMetadataNode root = new IIOMetadataNode("javax_imageio_png_1.0");
+                root.appendChild(text);
+                metadata.mergeTree("javax_imageio_png_1.0", root);
+            }
+            writer.write(null, new IIOImage(image, null, metadata), param);
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         } finally {
             writer.dispose();
         }
         return bytes.toByteArray();
+    }
+
+    /** {@code text} in the characters a tEXt chunk may hold (Latin-1 printable and line feeds), others as '?'. */
+    private static String latin1(String text) {
+        StringBuilder b = new StringBuilder(text.length());
+        for (char c : text.toCharArray()) {
+            b.append(c == '\n' || (c >= 0x20 && c < 0x7f) || (c >= 0xa1 && c <= 0xff) ? c : '?');
+        }
+        return b.toString();
     }
 }

@@ -2,6 +2,7 @@ package carom.app.render;
 
 import carom.app.SceneFile;
 import carom.app.EnginesCommand;
+import carom.app.report.Provenance;
 import carom.core.BadInputException;
 import carom.core.Quoted;
 import carom.core.engine.Engine;
@@ -109,10 +110,13 @@ public final class RenderCommand implements Callable<Integer> {
             topSpeed = Math.max(topSpeed, d.maxSpeed());
         }
         Map<String, byte[]> files = new LinkedHashMap<>();
+        // What made the pictures, for carom report: as an animation's comment says it.
+        String comment = Provenance.commandLine(spec.commandLine().getParseResult().originalArgs())
+                + "\nmachine: " + Provenance.machine();
         int k = 0;
         for (Map.Entry<String, Double> f : byFile.entrySet()) {
             BufferedImage image = SceneRenderer.draw(scene, states.get(k++), timeLabel(f.getValue()), mode, topSpeed, size);
-            files.put(f.getKey(), PngEncoder.encode(image));
+            files.put(f.getKey(), PngEncoder.encode(image, comment));
         }
         for (Path p : PngFiles.writeAll(outDir, files)) {
             spec.commandLine().getOut().println(p);

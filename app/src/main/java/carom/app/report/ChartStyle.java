@@ -46,6 +46,9 @@ public final class ChartStyle {
     public static final Color GUIDE = new Color(150, 150, 150);
     public static final BasicStroke DASHED = new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f,
             new float[] {6f, 4f}, 0f);
+    /** A second kind of guide beside a dashed one (MSD's diffusive line beside its ballistic one): dash-dotted. */
+    public static final BasicStroke DASH_DOTTED = new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f,
+            new float[] {8f, 3f, 1.5f, 3f}, 0f);
     /** A guide's error band beside its dashed value: grey, dotted. */
     public static final BasicStroke DOTTED = new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f,
             new float[] {1.5f, 3f}, 0f);
@@ -106,6 +109,68 @@ public final class ChartStyle {
     public static void yAxis(XYChart chart, Axis a) {
         chart.getStyler().setYAxisLogarithmic(a.log()).setYAxisMin(a.min()).setYAxisMax(a.max());
         chart.getStyler().setYAxisDecimalPattern(pattern(a));
+    }
+
+    /**
+     * Sets {@code chart}'s x axis to a log scale drawn as a linear axis of log10 values from
+     * {@code log10Min} to {@code log10Max} (the series must be given as log10 of their values), its tick
+     * labels powers of ten ({@link #powerOfTen}). XChart's own log axis labels its decades as plain
+     * numbers (0.001, 1,000) and takes no label formatter.
+     */
+    public static void log10X(XYChart chart, double log10Min, double log10Max) {
+        chart.getStyler().setXAxisLogarithmic(false).setXAxisMin(log10Min).setXAxisMax(log10Max);
+        chart.getStyler().setxAxisTickLabelsFormattingFunction(ChartStyle::powerOfTen);
+        chart.getStyler().setXAxisTickMarkSpacingHint(decadeSpacing(0.85 * chart.getWidth(), log10Max - log10Min));
+    }
+
+    /** As {@link #log10X}, for the y axis. */
+    public static void log10Y(XYChart chart, double log10Min, double log10Max) {
+        chart.getStyler().setYAxisLogarithmic(false).setYAxisMin(log10Min).setYAxisMax(log10Max);
+        chart.getStyler().setyAxisTickLabelsFormattingFunction(ChartStyle::powerOfTen);
+        chart.getStyler().setYAxisTickMarkSpacingHint(decadeSpacing(0.75 * chart.getHeight(), log10Max - log10Min));
+    }
+
+    /**
+     * Pixels between ticks XChart is to aim at on a log10 axis about {@code pixels} long spanning
+     * {@code decades}: a tick per decade (labels 10ⁿ only) over two decades or more, else four ticks a
+     * decade; never closer than a label such as 3.2·10⁻²⁰ is wide.
+     */
+    private static int decadeSpacing(double pixels, double decades) {
+        double perTick = decades >= 2 ? 0.9 * pixels / decades : 0.9 * pixels / (4 * Math.max(decades, 0.25));
+        return (int) Math.max(MIN_DECADE_SPACING, perTick);
+    }
+
+    /** Pixels a log10 axis' tick label such as 3.2·10⁻²⁰ needs. */
+    private static final int MIN_DECADE_SPACING = 70;
+
+    /**
+     * The label of the tick at {@code log10} on a log10 axis: 10ⁿ at a whole n, else the value as m·10ⁿ
+     * with one decimal of m (3.2·10⁻²).
+     */
+    public static String powerOfTen(double log10) {
+        long n = Math.round(log10);
+        if (Math.abs(log10 - n) < 1e-9) {
+            return "10" + superscript(n);
+        }
+        long floor = (long) Math.floor(log10);
+        double mantissa = Math.pow(10, log10 - floor);
+        return String.format(java.util.Locale.ROOT, "%.1f·10%s", mantissa, superscript(floor));
+    }
+
+    private static String superscript(long n) {
+        String digits = Long.toString(n);
+        StringBuilder b = new StringBuilder(digits.length());
+        for (char c : digits.toCharArray()) {
+            b.append(c == '-' ? '⁻' : "⁰¹²³⁴⁵⁶⁷⁸⁹".charAt(c - '0'));
+        }
+        return b.toString();
+    }
+
+    /** The whole decades around positive values from {@code low} to {@code high}, as log10 ends of an axis (at least one decade). */
+    public static double[] decades(double low, double high) {
+        double from = Math.floor(Math.log10(low) + 1e-9);
+        double to = Math.ceil(Math.log10(high) - 1e-9);
+        return new double[] {from, Math.max(to, from + 1)};
     }
 
     /** Tick labels: plain numbers, but powers of ten as 1E-12 where plain ones would be long (or round to 0). */

@@ -6,7 +6,13 @@ import carom.core.observe.sample.BondOrder;
 import carom.core.observe.sample.CollisionRates;
 import carom.core.observe.sample.MeanSquaredDisplacement;
 import carom.core.observe.sample.PressureSeries;
+import carom.core.observe.sample.PartialRadialDistribution;
 import carom.core.observe.sample.RadialDistribution;
+import carom.core.observe.sample.Sample;
+import carom.core.observe.sample.SpeciesDisplacement;
+import carom.core.observe.sample.StructureFactor;
+import carom.core.scene.Scene;
+import carom.core.scene.Species;
 import java.util.List;
 
 /**
@@ -39,12 +45,48 @@ public final class ObservableCatalog {
                     "the pair-collision rate per disc, 2P/(N·Δt), and the wall-collision rate over each interval "
                             + "between consecutive samples (engines that tell collisions)",
                     List.of("t0", "t1", "pairRate", "wallRate"), (scene, interval) -> new CollisionRates(),
-                    CollisionRates::restore, ObservablePlots::collisionRates, rates -> rates));
+                    CollisionRates::restore, ObservablePlots::collisionRates, rates -> rates),
+            new ObservableSpec<>(PartialRadialDistribution.KEY,
+                    "the partial radial distribution function g_ab(r) of each pair of species, against each pair's own "
+                            + "contact distance σ_ab = R_a + R_b, averaged over the samples, with block-average errors",
+                    List.of("a", "b", "sigma", "r", "g", "error"),
+                    (scene, interval) -> new PartialRadialDistribution(speciesNames(scene)),
+                    PartialRadialDistribution::restore, ObservablePlots::partialRadialDistribution),
+            new ObservableSpec<>(SpeciesDisplacement.MSD_KEY,
+                    "the mean squared displacement of each mobile species against lag, as msd, with block-average errors",
+                    List.of("species", "lag", "msd", "error"),
+                    (scene, interval) -> SpeciesDisplacement.meanSquared(scene.species(), interval),
+                    SpeciesDisplacement::restoreMeanSquared, ObservablePlots::speciesDisplacement),
+            new ObservableSpec<>(StructureFactor.KEY,
+                    "the static structure factor S(k) and the partial S_ab(k) of each pair of species, direct sums over "
+                            + "the periodic box's wave vectors binned by |k|, averaged over the samples, with block-average errors",
+                    List.of("a", "b", "k", "S", "error"), ObservableCatalog::structureFactor,
+                    StructureFactor::restore, ObservablePlots::structureFactor),
+            new ObservableSpec<>(SpeciesDisplacement.FS_KEY,
+                    "the self-intermediate scattering function F_s(k, t) of each mobile species against lag, at the first "
+                            + "peak of the starting state's S(k), with block-average errors",
+                    List.of("species", "k", "lag", "Fs", "error"),
+                    (scene, interval) -> SpeciesDisplacement.selfScattering(scene.species(), interval,
+                            SpeciesDisplacement.firstPeak(Sample.of(0, scene.box(), scene.newDiscs()), speciesNames(scene))),
+                    SpeciesDisplacement::restoreSelfScattering, ObservablePlots::selfScattering));
 
     /** The keys, in the order listed. */
     public static final List<String> KEYS = ALL.stream().map(ObservableSpec::key).toList();
 
     private ObservableCatalog() {
+    }
+
+    private static List<String> speciesNames(Scene scene) {
+        return scene.species().stream().map(Species::name).toList();
+    }
+
+    /** S(k) of a periodic scene; bad input between walls, whose box has no wave vectors. */
+    private static StructureFactor structureFactor(Scene scene, double interval) {
+        if (!scene.box().periodic()) {
+            throw new BadInputException("--observe " + StructureFactor.KEY + ": the structure factor needs a periodic box, "
+                    + "and this scene has walls");
+        }
+        return new StructureFactor(speciesNames(scene));
     }
 
     /** The observable named {@code key}, or null. */
@@ -61,8 +103,10 @@ public final class ObservableCatalog {
     public static ObservableSpec<?> named(String key) {
         ObservableSpec<?> spec = find(key);
         if (spec == null) {
-            throw new BadInputException("--observe: unknown observable " + Quoted.of(key) + " (known: "
-                    + String.join(", ", KEYS) + ")");
+            String nearest = NearestName.to(key, KEYS);
+            throw new BadInputException("--observe: unknown observable " + Quoted.of(key)
+                    + (nearest == null ? "" : "; did you mean " + Quoted.of(nearest) + "?")
+                    + " (known: " + String.join(", ", KEYS) + ")");
         }
         return spec;
     }

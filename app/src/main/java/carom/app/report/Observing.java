@@ -117,6 +117,11 @@ public final class Observing implements Sampler {
         }
     }
 
+    /** The chosen observables, in the order named. */
+    List<SampledObservable> observables() {
+        return chosen.stream().<SampledObservable>map(Chosen::observable).toList();
+    }
+
     /** Every observable's state so far, for a checkpoint, in the order named. */
     public List<ObservableState> states() {
         return chosen.stream().map(c -> c.observable().state()).toList();

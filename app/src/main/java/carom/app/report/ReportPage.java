@@ -12,7 +12,8 @@ import java.util.Set;
 /**
  * {@code carom report}'s page: one HTML file that needs nothing else to be read (images embedded as
  * data URIs, CSS inline, no script, nothing from the network). A section per input: what made it
- * (command, machine), then its report rendered from Markdown with its plots in place, the observables'
+ * (command, machine; labels for a quick run or a loaded machine; the run's summary table: collisions,
+ * energy drift, Z with its error), then its report rendered from Markdown with its plots in place, the observables'
  * plots and tables, the animations, the plots the report does not show, and every CSV as a table
  * (folded, first {@link #MAX_ROWS} rows). All text from the inputs is escaped; the page is polyglot
  * markup (also well-formed XML).
@@ -40,6 +41,8 @@ final class ReportPage {
             dl.made-by dd { margin: 0; }
             details { margin: 0.5em 0; }
             summary { cursor: pointer; }
+            p.label { display: inline-block; background: #fff3cd; border: 1px solid #e0c36a; padding: 2px 8px; margin: 0.3em 0; }
+            table.summary th { text-align: left; }
             """;
 
     private ReportPage() {
@@ -68,7 +71,17 @@ final class ReportPage {
     private static void section(Writer w, ReportSource s, String id) throws IOException {
         w.write("<section id=\"" + id + "\">\n<h2>" + Html.escape(s.path().toString()) + " <small>("
                 + Html.escape(s.kind()) + ")</small></h2>\n");
+        for (String label : s.labels()) {
+            w.write("<p class=\"label\">" + Html.escape(label) + "</p>\n");
+        }
         madeBy(w, s.provenance());
+        if (!s.summary().isEmpty()) {
+            w.write("<h3>Summary</h3>\n<table class=\"summary\">\n");
+            for (Map.Entry<String, String> row : s.summary().entrySet()) {
+                w.write("<tr><th>" + Html.escape(row.getKey()) + "</th><td>" + Html.escape(row.getValue()) + "</td></tr>\n");
+            }
+            w.write("</table>\n");
+        }
         Set<Path> shown = new HashSet<>();
         if (s.markdown() != null) {
             String text = ReportSource.text(s.markdown());

@@ -25,12 +25,12 @@ import org.w3c.dom.NodeList;
 
 /**
  * One input of {@code carom report}: a folder that {@code experiment} (report.md), {@code study accuracy}
- * (accuracy.md), {@code simulate --report} (run.json, KEY.csv, KEY.png) or {@code animate} (a GIF) wrote,
- * or one GIF that {@code animate} wrote; what it holds and what made it, as far as it records that. A
+ * (accuracy.md), {@code simulate --report} (run.json, KEY.csv, KEY.png), {@code animate} (a GIF) or
+ * {@code render} (PNGs that say so in their comment) wrote, or one GIF that {@code animate} wrote; what it holds and what made it, as far as it records that. A
  * folder with nothing of carom's in it is bad input.
  */
 record ReportSource(Path path, String kind, Path markdown, Map<String, String> provenance, List<String> observables,
-                    List<Path> csvs, List<Path> pngs, List<Gif> gifs) {
+                    List<Path> csvs, List<Path> pngs, List<Gif> gifs, Map<String, String> summary, List<String> labels) {
     /** An animation: its file, frames, delay per frame (hundredths of a second) and the comment animate wrote. */
     record Gif(Path file, int frames, int delayCentiseconds, String comment) {
     }
@@ -80,7 +80,8 @@ record ReportSource(Path path, String kind, Path markdown, Map<String, String> p
             if (gif == null || !gif.comment().startsWith("carom animate")) {
                 throw new BadInputException(shown + " is neither a folder nor a GIF that 'carom animate' wrote");
             }
-            return new ReportSource(path, "animation", null, provenanceOf(gif), List.of(), List.of(), List.of(), List.of(gif));
+            return new ReportSource(path, "animation", null, provenanceOf(gif), List.of(), List.of(), List.of(), List.of(gif),
+                    Map.of(), List.of());
         }
         if (!Files.isDirectory(path)) {
             throw new BadInputException(shown + " does not exist");
@@ -112,24 +113,37 @@ record ReportSource(Path path, String kind, Path markdown, Map<String, String> p
             if (plainFile(path.resolve(EXPERIMENT_REPORT)) || plainFile(path.resolve(STUDY_REPORT))) {
                 boolean experiment = plainFile(path.resolve(EXPERIMENT_REPORT));
                 Path md = path.resolve(experiment ? EXPERIMENT_REPORT : STUDY_REPORT);
+                String markdown = text(md);
+                Map<String, String> provenance = provenanceOf(markdown);
                 return new ReportSource(path, experiment ? "experiment" : "study accuracy", md,
-                        provenanceOf(text(md)), List.of(), csvs, pngs, gifs);
+                        provenance, List.of(), csvs, pngs, gifs, Map.of(), labelsOf(markdown, provenance.get("command")));
             }
             if (plainFile(path.resolve(RunRecord.FILE)) || !observables.isEmpty()) {
                 Path run = path.resolve(RunRecord.FILE);
                 Map<String, String> provenance = plainFile(run) ? RunRecord.read(run) : Map.of();
-                return new ReportSource(path, "simulate --report", null, provenance, observables, csvs, pngs, gifs);
+                Path summaryFile = path.resolve(RunRecord.SUMMARY_FILE);
+                Map<String, String> summary = plainFile(summaryFile) ? RunRecord.summary(summaryFile) : Map.of();
+                String loaded = plainFile(run) ? RunRecord.loaded(run) : null;
+                return new ReportSource(path, "simulate --report", null, provenance, observables, csvs, pngs, gifs, summary,
+                        loaded == null ? List.of() : List.of(loaded));
             }
         } catch (IOException e) {
             throw new BadInputException(shown + ": cannot read what carom wrote: " + Quoted.bare(String.valueOf(e.getMessage())));
         }
         List<Gif> ours = gifs.stream().filter(g -> g.comment().startsWith("carom animate")).toList();
         if (ours.isEmpty()) {
+            List<String> renders = pngs.stream().map(ReportSource::pngComment).filter(c -> c.startsWith("carom render")).toList();
+            if (!renders.isEmpty()) {
+                // The pictures of one render command share its comment; of several, none is shown.
+                Map<String, String> provenance = renders.stream().distinct().count() == 1
+                        ? provenanceOfComment(renders.getFirst()) : Map.of();
+                return new ReportSource(path, "render", null, provenance, List.of(), csvs, pngs, gifs, Map.of(), List.of());
+            }
             throw new BadInputException(shown + " holds nothing carom wrote (report.md, accuracy.md, run.json, "
-                    + "observables' CSVs or a GIF of 'carom animate')");
+                    + "observables' CSVs, a GIF of 'carom animate' or PNGs of 'carom render')");
         }
         Map<String, String> provenance = ours.size() == 1 ? provenanceOf(ours.getFirst()) : Map.of();
-        return new ReportSource(path, "animation", null, provenance, List.of(), csvs, pngs, gifs);
+        return new ReportSource(path, "animation", null, provenance, List.of(), csvs, pngs, gifs, Map.of(), List.of());
     }
 
     private static Path realPath(Path file) {
@@ -150,6 +164,25 @@ record ReportSource(Path path, String kind, Path markdown, Map<String, String> p
         }
     }
 
+    /**
+     * What a reader must know before trusting an experiment's or a study's figures: a quick run (its
+     * command has {@code --quick}: short runs, to try the command) and a shared machine (the report's
+     * own "shared: the load average was ..." sentence).
+     */
+    static List<String> labelsOf(String markdown, String command) {
+        List<String> labels = new ArrayList<>();
+        if (command != null && command.matches(".*\\s--quick(\\s.*)?")) {
+            labels.add("quick run: to try the command, not to measure (short runs, few repetitions)");
+        }
+        Matcher shared = SHARED.matcher(markdown);
+        if (shared.find()) {
+            labels.add("loaded machine: " + shared.group(1));
+        }
+        return labels;
+    }
+
+    private static final Pattern SHARED = Pattern.compile("(shared: the load average was [^\\n]*?\\.)(?:\\s|$)");
+
     /** The command (the report's fenced command line) and the machine (its table row or list item). */
     static Map<String, String> provenanceOf(String markdown) {
         Map<String, String> p = new LinkedHashMap<>();
@@ -168,13 +201,46 @@ record ReportSource(Path path, String kind, Path markdown, Map<String, String> p
         return p;
     }
 
-    /** A GIF's comment from animate: the command line, then "machine: ...". */
+    /** A GIF's comment from animate (or a PNG's from render): the command line, then "machine: ...". */
     private static Map<String, String> provenanceOf(Gif gif) {
+        return provenanceOfComment(gif.comment());
+    }
+
+    private static Map<String, String> provenanceOfComment(String comment) {
         Map<String, String> p = new LinkedHashMap<>();
-        String[] lines = gif.comment().split("\n", 2);
+        String[] lines = comment.split("\n", 2);
         p.put("command", lines[0]);
         p.put("machine", lines.length > 1 ? lines[1].replaceFirst("^machine: ", "") : "");
         return p;
+    }
+
+    /** The comment a PNG carries in its tEXt chunks (as render writes it), or "" if none or it cannot be read. */
+    static String pngComment(Path file) {
+        try {
+            if (Files.size(file) > MAX_IMAGE_BYTES) {
+                return "";
+            }
+        } catch (IOException e) {
+            return "";
+        }
+        Iterator<ImageReader> readers = ImageIO.getImageReadersByFormatName("png");
+        ImageReader reader = readers.next();
+        try (ImageInputStream in = ImageIO.createImageInputStream(file.toFile())) {
+            reader.setInput(in);
+            IIOMetadataNode root = (IIOMetadataNode) reader.getImageMetadata(0).getAsTree("javax_imageio_png_1.0");
+            NodeList entries = root.getElementsByTagName("tEXtEntry");
+            for (int k = 0; k < entries.getLength(); k++) {
+                IIOMetadataNode entry = (IIOMetadataNode) entries.item(k);
+                if ("Comment".equals(entry.getAttribute("keyword"))) {
+                    return entry.getAttribute("value");
+                }
+            }
+            return "";
+        } catch (IOException | RuntimeException e) {
+            return "";
+        } finally {
+            reader.dispose();
+        }
     }
 
     /** The GIF's frames, delay and comment, or null if it is not a GIF that can be read (or one too large to embed). */

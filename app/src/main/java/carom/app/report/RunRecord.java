@@ -16,8 +16,10 @@ import java.util.Map;
  * tables and plots. Written with the report, read back by the page.
  */
 public record RunRecord(String command, String engine, String scene, String sceneFile, int discs, double until,
-                        double every, List<String> observables, String machine) {
+                        double every, List<String> observables, String machine, double loadAverage) {
     public static final String FILE = "run.json";
+    /** The run's summary beside it, as {@code --summary} writes it, for the page's table. */
+    public static final String SUMMARY_FILE = "summary.json";
     private static final ObjectMapper JSON = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
 
     /** Writes this record as {@link #FILE} into {@code folder}. */
@@ -32,7 +34,11 @@ public record RunRecord(String command, String engine, String scene, String scen
         o.put("until", until);
         o.put("every", every);
         o.putPOJO("observables", observables);
+        o.put("cores", Runtime.getRuntime().availableProcessors());
         o.put("machine", machine);
+        if (loadAverage >= 0) {
+            o.put("load_average", loadAverage);
+        }
         JSON.writeValue(folder.resolve(FILE).toFile(), o);
     }
 
@@ -51,7 +57,54 @@ public record RunRecord(String command, String engine, String scene, String scen
         shown.put("scene", o.path("scene").asText() + " (" + o.path("scene_file").asText() + ", "
                 + o.path("discs").asText() + " discs, until t = " + o.path("until").asText() + ")");
         shown.put("samples", "every " + o.path("every").asText() + " of simulated time");
-        shown.put("machine", o.path("machine").asText());
+        shown.put("machine", o.path("machine").asText()
+                + (o.has("load_average") ? ", load average " + o.path("load_average").asText() + " at the end" : ""));
         return shown;
+    }
+
+    /**
+     * Whether the run.json says the machine was loaded: a load average above its cores (timings then
+     * say little), with the figures; null if not or not recorded.
+     */
+    static String loaded(Path file) throws IOException {
+        JsonNode o = JSON.readTree(ReportSource.text(file));
+        double load = o.path("load_average").asDouble(-1);
+        int cores = o.path("cores").asInt(0);
+        return cores > 0 && load > cores ? String.format(java.util.Locale.ROOT, "loaded machine: load average %.2f on %d cores, "
+                + "timings are not the engine's", load, cores) : null;
+    }
+
+    /**
+     * The rows of the page's summary table from a run's {@link #SUMMARY_FILE}: collisions (and per disc),
+     * the energy drift, Z with its error, the time taken; bad input if it is not a summary carom wrote.
+     */
+    static Map<String, String> summary(Path file) throws IOException {
+        JsonNode o = JSON.readTree(ReportSource.text(file));
+        if (o == null || !o.isObject() || !o.has("collisions") || !o.has("engine")) {
+            throw new IOException("not a summary.json that 'carom simulate' wrote");
+        }
+        Map<String, String> rows = new LinkedHashMap<>();
+        long pairs = o.path("collisions").path("pair").asLong();
+        long discs = o.path("particles").asLong();
+        rows.put("engine", o.path("engine").asText() + (o.path("exact").asBoolean() ? " (exact)" : " (relaxed)")
+                + ", " + o.path("threads").asText() + " thread(s)");
+        rows.put("pair collisions", pairs + (discs > 0 ? String.format(java.util.Locale.ROOT, " (%.3g per disc)", (double) pairs / discs) : ""));
+        rows.put("wall collisions", o.path("collisions").path("wall").asText());
+        rows.put("energy drift", o.path("energyDrift").isNull() ? "undefined"
+                : String.format(java.util.Locale.ROOT, "%.3e", o.path("energyDrift").asDouble()));
+        JsonNode p = o.path("pressure");
+        if (p.isObject()) {
+            // Z to the error's second significant digit, as a table in a paper gives it.
+            double z = p.path("Z").asDouble();
+            double error = p.path("Zerror").asDouble();
+            int decimals = error > 0 && Double.isFinite(error) ? Math.max(0, 1 - (int) Math.floor(Math.log10(error))) : 4;
+            rows.put("Z = PA/(NkT)", String.format(java.util.Locale.ROOT, "%." + decimals + "f ± %." + decimals + "f (%d blocks)",
+                    z, error, p.path("blocks").asInt()));
+        }
+        rows.put("deepest overlap", String.format(java.util.Locale.ROOT, "%.3g of a contact distance",
+                o.path("finalState").path("deepestOverlap").asDouble()));
+        rows.put("wall seconds", String.format(java.util.Locale.ROOT, "%.3f (%.4g collisions per second)",
+                o.path("wallSeconds").asDouble(), o.path("collisionsPerSecond").asDouble()));
+        return rows;
     }
 }

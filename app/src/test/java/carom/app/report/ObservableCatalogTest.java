@@ -92,6 +92,16 @@ class ObservableCatalogTest {
                 .hasMessage("--observe: unknown observable 'rdf' (known: " + String.join(", ", ObservableCatalog.KEYS) + ")");
     }
 
+    /** A name in other letter case, or a letter or two off a known one, gets a suggestion; one far from all gets none. */
+    @ParameterizedTest(name = "{0} -> {1}")
+    @org.junit.jupiter.params.provider.CsvSource({"Gr, gr", "PSI6, psi6", "msd_species, msd-species", "presure, pressure",
+        "sq, sk", "collisons, collisions"})
+    void aMistypedNameGetsADidYouMean(String given, String meant) {
+        assertThatThrownBy(() -> Observing.of(ObservableFeed.SCENE, given, 1)).isInstanceOf(BadInputException.class)
+                .hasMessage("--observe: unknown observable '" + given + "'; did you mean '" + meant + "'? (known: "
+                        + String.join(", ", ObservableCatalog.KEYS) + ")");
+    }
+
     /** Only observables of collisions ask the engine for them; a run without any pays nothing. */
     @Test
     void onlyObservablesOfCollisionsNeedTheEngineToTellThem() {

@@ -22,6 +22,21 @@ final class NeighbourScan {
     private final CellLists lists = new CellLists();
     private double[] sx = new double[0];
     private double[] sy = new double[0];
+    /** Species of the discs in cell order. */
+    private int[] ss = new int[0];
+
+    /**
+     * How {@link #histogram} bins a pair: the pair's class from its two species (a table of
+     * {@code speciesCount²} entries, symmetric), then the class's bins: the pair goes to
+     * {@code offset[c] + floor(r · perWidth[c])} while that is below {@code offset[c] + bins[c]}.
+     */
+    record PairBins(int speciesCount, int[] classOf, double[] perWidth, int[] bins, int[] offset) {
+        /** Every pair in one class of {@code bins} bins of width 1/{@code perWidth}, discs of up to {@code speciesCount} species. */
+        static PairBins single(int speciesCount, double perWidth, int bins) {
+            return new PairBins(speciesCount, new int[speciesCount * speciesCount], new double[] {perWidth},
+                    new int[] {bins}, new int[] {0});
+        }
+    }
 
     /** Bins the sample's discs into cells at least {@code cellSize} wide; false if there is no pair. */
     private boolean prepare(Sample s, double cellSize) {
@@ -40,33 +55,43 @@ final class NeighbourScan {
         if (sx.length != n) {
             sx = new double[n];
             sy = new double[n];
+            ss = new int[n];
         }
         int[] items = lists.items;
         for (int m = 0; m < n; m++) {
             sx[m] = s.x[items[m]];
             sy[m] = s.y[items[m]];
+            ss[m] = s.species[items[m]];
         }
         return true;
     }
 
     /**
-     * Adds to {@code counts[k]} the pairs with k ≤ r · perWidth < k + 1 and r < cutoff: the g(r)
-     * histogram, the costliest loop of the observables, so the binning is written into it and the cells
+     * Adds each pair closer than {@code cutoff} to its bin of {@code counts} as {@code binning} says
+     * (for one class: {@code counts[k]} counts the pairs with k ≤ r · perWidth < k + 1): the g(r)
+     * histograms, the costliest loop of the observables, so the binning is written into it and the cells
      * are half the cutoff wide: a cell meets the 12 cells ahead of it in its 5 x 5 neighbourhood (and
      * itself), which looks at about 30% fewer candidate pairs than 3 x 3 cells a cutoff wide. A
      * periodic grid with fewer than 3 cells along a side (only when the cap on cells coarsens it) takes
      * the 3 x 3 path.
      */
-    void histogram(Sample s, double cutoff, double perWidth, int[] counts) {
+    void histogram(Sample s, double cutoff, PairBins binning, int[] counts) {
         if (!prepare(s, 0.5 * cutoff)) {
             return;
         }
+        int species = binning.speciesCount();
+        int[] classOf = binning.classOf();
+        double[] perWidth = binning.perWidth();
+        int[] binsOf = binning.bins();
+        int[] offsetOf = binning.offset();
         if (grid.periodic && (grid.cols < 3 || grid.rows < 3)) {
             // Only for a few discs in a long narrow box, where rebuilding the grid each sample costs little.
+            int[] sp = s.species;
             scan(s, cutoff, (i, j, dx, dy, r2) -> {
-                int bin = (int) (Math.sqrt(r2) * perWidth);
-                if (bin < counts.length) {
-                    counts[bin]++;
+                int c = classOf[sp[i] * species + sp[j]];
+                int bin = (int) (Math.sqrt(r2) * perWidth[c]);
+                if (bin < binsOf[c]) {
+                    counts[offsetOf[c] + bin]++;
                 }
             });
             return;
@@ -78,7 +103,6 @@ final class NeighbourScan {
         int[] start = lists.start;
         int cols = grid.cols;
         int rows = grid.rows;
-        int bins = counts.length;
         for (int row = 0; row < rows; row++) {
             for (int col = 0; col < cols; col++) {
                 int c = row * cols + col;
@@ -119,14 +143,16 @@ final class NeighbourScan {
                         for (int a = aFrom; a < aTo; a++) {
                             double xa = sx[a] - shiftX;
                             double ya = sy[a] - shiftY;
+                            int row0 = ss[a] * species;
                             for (int b = self ? a + 1 : start[other]; b < bTo; b++) {
                                 double dx = sx[b] - xa;
                                 double dy = sy[b] - ya;
                                 double r2 = dx * dx + dy * dy;
                                 if (r2 < cut2) {
-                                    int bin = (int) (Math.sqrt(r2) * perWidth);
-                                    if (bin < bins) {
-                                        counts[bin]++;
+                                    int pairClass = classOf[row0 + ss[b]];
+                                    int bin = (int) (Math.sqrt(r2) * perWidth[pairClass]);
+                                    if (bin < binsOf[pairClass]) {
+                                        counts[offsetOf[pairClass] + bin]++;
                                     }
                                 }
                             }

@@ -22,6 +22,8 @@ import java.util.List;
 public final class PressureSeries implements SampledObservable {
     public static final String KEY = "pressure";
     private static final long LAYOUT = 1;
+    /** Blocks of consecutive intervals for the error bar of the mean Z (fewer if there are fewer intervals). */
+    public static final int BLOCKS = 20;
 
     /** Mass of each species, +∞ for fixed ones (which carry no kinetic energy). */
     private final double[] speciesMass;
@@ -101,6 +103,53 @@ public final class PressureSeries implements SampledObservable {
     /** Z of each interval. */
     public double[] compressibilities() {
         return z.toArray();
+    }
+
+    /** The mean Z over the intervals with a finite Z (NaN with none). */
+    public double meanCompressibility() {
+        double sum = 0;
+        int n = 0;
+        for (int k = 0; k < z.size(); k++) {
+            if (Double.isFinite(z.get(k))) {
+                sum += z.get(k);
+                n++;
+            }
+        }
+        return n == 0 ? Double.NaN : sum / n;
+    }
+
+    /** The blocks {@link #meanError} is made of: {@link #BLOCKS}, or one per finite interval if there are fewer. */
+    public int blocks() {
+        return (int) Math.min(BLOCKS, java.util.Arrays.stream(z.toArray()).filter(Double::isFinite).count());
+    }
+
+    /**
+     * The standard error of {@link #meanCompressibility}: the standard deviation of the means of
+     * {@link #blocks} blocks of consecutive finite intervals over the square root of their number; NaN
+     * with fewer than two blocks.
+     */
+    public double meanError() {
+        double[] finite = java.util.Arrays.stream(z.toArray()).filter(Double::isFinite).toArray();
+        int m = finite.length;
+        int b = blocks();
+        if (b < 2) {
+            return Double.NaN;
+        }
+        double sum = 0;
+        double sumSquares = 0;
+        for (int k = 0; k < b; k++) {
+            int from = (int) ((long) k * m / b);
+            int to = (int) ((long) (k + 1) * m / b);
+            double block = 0;
+            for (int i = from; i < to; i++) {
+                block += finite[i];
+            }
+            block /= to - from;
+            sum += block;
+            sumSquares += block * block;
+        }
+        double mean = sum / b;
+        return Math.sqrt(Math.max(0, (sumSquares - b * mean * mean) / (b - 1)) / b);
     }
 
     /** Virial reported since the latest sample. */

@@ -36,6 +36,8 @@ public final class RadialDistribution implements SampledObservable {
     private final double rangeInContacts;
     private final int binsPerContact;
     private final NeighbourScan scan = new NeighbourScan();
+    /** All pairs in one class, for the sample's species (made at the first sample). */
+    private NeighbourScan.PairBins binning;
     /** One sample's pair counts per bin (scratch). */
     private int[] sampleCounts = new int[0];
 
@@ -83,8 +85,12 @@ public final class RadialDistribution implements SampledObservable {
             samples++;
             return;
         }
+        int species = s.speciesCount();
+        if (binning == null || binning.speciesCount() != species) {
+            binning = NeighbourScan.PairBins.single(species, 1 / binWidth, bins);
+        }
         java.util.Arrays.fill(sampleCounts, 0);
-        scan.histogram(s, bins * binWidth, 1 / binWidth, sampleCounts);
+        scan.histogram(s, bins * binWidth, binning, sampleCounts);
         int[] c = sampleCounts;
         for (int k = 0; k < bins; k++) {
             counts[k] += c[k];

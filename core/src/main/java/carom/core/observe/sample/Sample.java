@@ -141,6 +141,15 @@ public final class Sample {
         return n == 0 ? 0 : 2 * sum / n;
     }
 
+    /** One more than the largest species index: the species a table by species needs (0 without discs). */
+    int speciesCount() {
+        int m = -1;
+        for (int i = 0; i < n; i++) {
+            m = Math.max(m, species[i]);
+        }
+        return m + 1;
+    }
+
     double maxRadius() {
         double m = 0;
         for (int i = 0; i < n; i++) {

@@ -29,6 +29,15 @@ final class StateCodec {
             return this;
         }
 
+        /** A string, as its length and its UTF-16 units. */
+        Out put(String v) {
+            put(v.length());
+            for (int i = 0; i < v.length(); i++) {
+                put(v.charAt(i));
+            }
+            return this;
+        }
+
         Out put(double v) {
             reserveDoubles(1);
             doubles[doubleCount++] = v;
@@ -103,6 +112,23 @@ final class StateCodec {
                 throw new IllegalArgumentException(key + " state: negative size");
             }
             return v;
+        }
+
+        /** A string {@link Out#put(String)} wrote. */
+        String nextString() {
+            int length = nextSize();
+            if (length > longs.length - nextLong) {
+                throw truncated();
+            }
+            StringBuilder b = new StringBuilder(length);
+            for (int i = 0; i < length; i++) {
+                long c = nextLong();
+                if (c < 0 || c > Character.MAX_VALUE) {
+                    throw new IllegalArgumentException(key + " state: not a character");
+                }
+                b.append((char) c);
+            }
+            return b.toString();
         }
 
         double nextDouble() {
