@@ -1,9 +1,25 @@
 package carom.core.scene;
 
-/** The simulation box [0,width] x [0,height] and what its edges do. */
-public record Box(double width, double height, BoundaryKind boundary) {
+/**
+ * The simulation box [0,width] x [0,height] and what its edges do. A Lees-Edwards box is periodic
+ * ({@link #periodic}: both axes wrap) and sheared: its image above moves with x velocity
+ * {@code shearRate * height} relative to it, the one below with the opposite; {@code shearRate} is 0
+ * for every other boundary.
+ */
+public record Box(double width, double height, BoundaryKind boundary, double shearRate) {
+    /** A box that is not sheared. */
+    public Box(double width, double height, BoundaryKind boundary) {
+        this(width, height, boundary, 0);
+    }
+
+    /** Whether both axes wrap (periodic, or Lees-Edwards). */
     public boolean periodic() {
-        return boundary == BoundaryKind.PERIODIC;
+        return boundary != BoundaryKind.WALLS;
+    }
+
+    /** Whether the images above and below slide (Lees-Edwards boundaries). */
+    public boolean sheared() {
+        return boundary == BoundaryKind.LEES_EDWARDS;
     }
 
     public double area() {

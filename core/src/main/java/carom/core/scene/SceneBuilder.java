@@ -45,6 +45,12 @@ public final class SceneBuilder {
         return this;
     }
 
+    /** A box sheared at {@code shearRate} (Lees-Edwards boundaries; 0 for any other boundary). */
+    public SceneBuilder box(double width, double height, BoundaryKind boundary, double shearRate) {
+        this.box = new Box(width, height, boundary, shearRate);
+        return this;
+    }
+
     /** Adds a species and returns this builder; its index is the number of species added before it. */
     public SceneBuilder species(Species s) {
         species.add(s);
@@ -153,6 +159,7 @@ public final class SceneBuilder {
         }
         requirePositive("until", until);
         Effect.check(effects);
+        checkShear();
         for (int b = 0; b < blocks.size(); b++) {
             GenerateBlock block = blocks.get(b);
             String path = "generate[" + b + "]";
@@ -186,6 +193,20 @@ public final class SceneBuilder {
                 case VelocityDistribution.AtRest r -> {
                 }
             }
+        }
+    }
+
+    /** A sheared box takes a finite shear rate, and straight flight of rigid discs (no gravity, no growth). */
+    private void checkShear() {
+        if (!box.sheared()) {
+            return;
+        }
+        requireFinite("box.shearRate", box.shearRate());
+        if (effects.hasGravity()) {
+            throw new BadInputException("box.boundary: a lees-edwards box is not supported under gravity");
+        }
+        if (effects.grows()) {
+            throw new BadInputException("box.boundary: a lees-edwards box is not supported with growth");
         }
     }
 

@@ -512,9 +512,56 @@ class SceneReaderTest {
 
     @ParameterizedTest
     @ValueSource(strings = {"wall", "Walls", "periodical", "open", ""})
-    void unknownBoundariesListTheTwoKnownOnes(String boundary) {
+    void unknownBoundariesListTheKnownOnes(String boundary) {
         rejected(base(root -> at(root, "/box").put("boundary", boundary)),
-                "box.boundary: unknown boundary '" + boundary + "' (known: walls, periodic)");
+                "box.boundary: unknown boundary '" + boundary + "' (known: walls, periodic, lees-edwards)");
+    }
+
+    /** BASE in a Lees-Edwards box sheared at {@code shearRate}, without gravity. */
+    private static String sheared(String shearRate) {
+        return base(root -> {
+            at(root, "/box").put("boundary", "lees-edwards").set("shearRate", value(shearRate));
+            at(root, "/effects").remove("gravity");
+        });
+    }
+
+    @Test
+    void aLeesEdwardsBoxIsPeriodicAndShearedAtItsRate() {
+        Box box = SceneReader.parse(sheared("-0.75")).box();
+        assertThat(box.boundary()).isEqualTo(BoundaryKind.LEES_EDWARDS);
+        assertThat(box.periodic()).isTrue();
+        assertThat(box.sheared()).isTrue();
+        assertThat(box.shearRate()).isEqualTo(-0.75);
+        assertThat(SceneReader.parse(base(root -> at(root, "/effects").remove("gravity"))).box().shearRate()).isZero();
+    }
+
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', textBlock = """
+            "fast"  | box.shearRate: must be a number
+            [1]     | box.shearRate: must be a number
+            """)
+    void badShearRatesNameTheirPath(String shearRate, String message) {
+        rejected(sheared(shearRate), message);
+    }
+
+    @Test
+    void aShearRateNeedsALeesEdwardsBoxAndOneNeedsARate() {
+        rejected(base(root -> at(root, "/box").put("shearRate", 1)),
+                "box.shearRate: only a lees-edwards box is sheared (boundary is 'walls')");
+        rejected(base(root -> {
+            at(root, "/box").put("boundary", "lees-edwards");
+            at(root, "/effects").remove("gravity");
+        }), "box.shearRate: missing");
+    }
+
+    @Test
+    void aLeesEdwardsBoxRefusesGravityAndGrowth() {
+        rejected(base(root -> at(root, "/box").put("boundary", "lees-edwards").put("shearRate", 1)),
+                "box.boundary: a lees-edwards box is not supported under gravity");
+        rejected(base(root -> {
+            at(root, "/box").put("boundary", "lees-edwards").put("shearRate", 1);
+            at(root, "/").set("effects", value("{\"growth\": 0.1}"));
+        }), "box.boundary: a lees-edwards box is not supported with growth");
     }
 
     @Test
