@@ -155,6 +155,7 @@ final class FastRun {
         motion.restoreRestCounts(in);
         in.end();
         agenda.resumeAt(time, epoch, resyncAt);
+        table.boundary.anchor(epoch);
         long before = pairCollisions + wallCollisions;
         return finish(started).resumedAfter(before);
     }
@@ -286,6 +287,7 @@ final class FastRun {
             resyncs++;
             motion.rebase(now, null, n);
             agenda.rebased(agenda.epoch() + now, agenda.resyncLocal());
+            table.boundary.anchor(agenda.epoch());
         }
         replan();
     }
