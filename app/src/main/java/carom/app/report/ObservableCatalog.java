@@ -7,6 +7,7 @@ import carom.core.observe.sample.CollisionRates;
 import carom.core.observe.sample.MeanSquaredDisplacement;
 import carom.core.observe.sample.PressureSeries;
 import carom.core.observe.sample.RadialDistribution;
+import carom.core.observe.sample.StressTensor;
 import java.util.List;
 
 /**
@@ -39,7 +40,13 @@ public final class ObservableCatalog {
                     "the pair-collision rate per disc, 2P/(N·Δt), and the wall-collision rate over each interval "
                             + "between consecutive samples (engines that tell collisions)",
                     List.of("t0", "t1", "pairRate", "wallRate"), (scene, interval) -> new CollisionRates(),
-                    CollisionRates::restore, ObservablePlots::collisionRates, rates -> rates));
+                    CollisionRates::restore, ObservablePlots::collisionRates, rates -> rates),
+            new ObservableSpec<>(StressTensor.KEY,
+                    "the pressure tensor Pxx, Pyy, Pxy over each interval between consecutive samples: kinetic part "
+                            + "from peculiar velocities vx − γ̇·y, collisional part from each collision's impulse "
+                            + "(engines that tell collisions)",
+                    List.of("t0", "t1", "Pxx", "Pyy", "Pxy"), (scene, interval) -> StressTensor.of(scene.species()),
+                    StressTensor::restore, ObservablePlots::stress, stress -> stress));
 
     /** The keys, in the order listed. */
     public static final List<String> KEYS = ALL.stream().map(ObservableSpec::key).toList();
