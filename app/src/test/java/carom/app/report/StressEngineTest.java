@@ -86,4 +86,48 @@ class StressEngineTest {
         assertThat(Math.abs(mean[StressTensor.XY])).isGreaterThan(3 * error[StressTensor.XY]);
         assertThat(mean[StressTensor.XX]).isCloseTo(mean[StressTensor.YY], within(0.1 * mean[StressTensor.YY]));
     }
+
+    /** The kinetic energy of the mobile discs in the streaming frame, per disc: kT. */
+    private static double peculiarTemperature(Discs d, double shearRate) {
+        double sum = 0;
+        for (int i = 0; i < d.n; i++) {
+            double cx = d.vx[i] - shearRate * d.y[i];
+            sum += 0.5 * d.mass(i) * (cx * cx + d.vy[i] * d.vy[i]);
+        }
+        return sum / d.n;
+    }
+
+    /**
+     * The sheared box's thermostat keeps the peculiar temperature at its value at every sample, taking
+     * out the viscous heating (reported), where the same run without it heats up; the energy account
+     * closes: the final kinetic energy is the start's, plus what shear put in, less what was removed.
+     */
+    @ParameterizedTest(name = "thermostat {0}")
+    @CsvSource({"true", "false"})
+    void theThermostatTakesOutTheViscousHeating(boolean thermostat) {
+        double shearRate = 0.3;
+        Scene gas = StandardScenes.gas(900, 0.4, true, 8, 5);
+        Discs d = gas.newDiscs();
+        SceneBuilder b = SceneBuilder.create("sheared").box(gas.box().width(), gas.box().height(), BoundaryKind.LEES_EDWARDS,
+                shearRate, thermostat ? 1.0 : 0).species(gas.species().getFirst());
+        for (int i = 0; i < d.n; i++) {
+            b.disc(0, d.x[i], d.y[i], d.vx[i] + shearRate * d.y[i], d.vy[i]);
+        }
+        Scene scene = b.until(8).build();
+        double[] hottest = {0};
+        RunResult r = EngineCatalog.byName("fast").run(scene, RunOptions.until(8).withSamples(0.1,
+                (t, state, virialSum) -> hottest[0] = Math.max(hottest[0], peculiarTemperature(state, shearRate))));
+        double end = peculiarTemperature(r.finalState(), shearRate);
+        if (thermostat) {
+            assertThat(r.counters().get("rescalings")).isEqualTo(80);
+            assertThat(r.energyRemoved()).isPositive();
+            // Heating within one interval of 0.1 only.
+            assertThat(hottest[0]).isBetween(0.999, 1.05);
+            assertThat(end).isBetween(0.999, 1.05);
+        } else {
+            assertThat(r.counters()).doesNotContainKey("rescalings");
+            assertThat(r.energyRemoved()).isZero();
+            assertThat(end).isGreaterThan(1.2);
+        }
+    }
 }

@@ -47,7 +47,12 @@ public final class SceneBuilder {
 
     /** A box sheared at {@code shearRate} (Lees-Edwards boundaries; 0 for any other boundary). */
     public SceneBuilder box(double width, double height, BoundaryKind boundary, double shearRate) {
-        this.box = new Box(width, height, boundary, shearRate);
+        return box(width, height, boundary, shearRate, 0);
+    }
+
+    /** A sheared box whose thermostat keeps the peculiar temperature {@code thermostat} (0: none). */
+    public SceneBuilder box(double width, double height, BoundaryKind boundary, double shearRate, double thermostat) {
+        this.box = new Box(width, height, boundary, shearRate, thermostat);
         return this;
     }
 
@@ -202,6 +207,7 @@ public final class SceneBuilder {
             return;
         }
         requireFinite("box.shearRate", box.shearRate());
+        requireFinite("box.thermostat", box.thermostat());
         if (effects.hasGravity()) {
             throw new BadInputException("box.boundary: a lees-edwards box is not supported under gravity");
         }

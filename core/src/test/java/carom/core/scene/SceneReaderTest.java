@@ -555,6 +555,21 @@ class SceneReaderTest {
     }
 
     @Test
+    void aShearedBoxMayHoldAThermostatOfPositiveTemperature() {
+        String json = base(root -> {
+            at(root, "/box").put("boundary", "lees-edwards").put("shearRate", 1).put("thermostat", 2.5);
+            at(root, "/effects").remove("gravity");
+        });
+        assertThat(SceneReader.parse(json).box().thermostat()).isEqualTo(2.5);
+        assertThat(SceneReader.parse(json).box().thermostatted()).isTrue();
+        assertThat(SceneReader.parse(sheared("1")).box().thermostatted()).isFalse();
+        rejected(json.replace("2.5", "0"), "box.thermostat: must be a finite number > 0, got 0.0");
+        rejected(json.replace("2.5", "\"hot\""), "box.thermostat: must be a number");
+        rejected(base(root -> at(root, "/box").put("boundary", "periodic").put("thermostat", 1)),
+                "box.thermostat: only a lees-edwards box is sheared (boundary is 'periodic')");
+    }
+
+    @Test
     void aLeesEdwardsBoxRefusesGravityAndGrowth() {
         rejected(base(root -> at(root, "/box").put("boundary", "lees-edwards").put("shearRate", 1)),
                 "box.boundary: a lees-edwards box is not supported under gravity");

@@ -360,6 +360,46 @@ public sealed class DiscMotion permits GrowingMotion {
     }
 
     /**
+     * The thermostat of a sheared box: every disc at one clock, their peculiar velocities (vx less
+     * {@code shearRate}·y, and vy) scaled so that the mobile discs' peculiar kinetic energy is
+     * {@code mobile}·{@code kT}; every trajectory changed, so every prediction is stale. Returns the
+     * kinetic energy taken out (in the box's frame). Nothing changes without peculiar motion.
+     */
+    public double rescalePeculiar(double shearRate, double kT) {
+        double peculiar = 0;
+        double frame = 0;
+        int mobile = 0;
+        for (int i = 0; i < table.n; i++) {
+            double im = invMass(i);
+            if (im > 0) {
+                int at = i * stride;
+                double cx = rec[at + VX] - shearRate * rec[at + Y];
+                double cy = rec[at + VY];
+                peculiar += 0.5 * (cx * cx + cy * cy) / im;
+                frame += 0.5 * (rec[at + VX] * rec[at + VX] + cy * cy) / im;
+                mobile++;
+            }
+        }
+        if (!(peculiar > 0)) {
+            return 0;
+        }
+        double scale = Math.sqrt(mobile * kT / peculiar);
+        double after = 0;
+        for (int i = 0; i < table.n; i++) {
+            double im = invMass(i);
+            if (im > 0) {
+                int at = i * stride;
+                double streaming = shearRate * rec[at + Y];
+                rec[at + VX] = streaming + scale * (rec[at + VX] - streaming);
+                rec[at + VY] *= scale;
+                after += 0.5 * (rec[at + VX] * rec[at + VX] + rec[at + VY] * rec[at + VY]) / im;
+                ir[i * IS + COUNT]++;
+            }
+        }
+        return frame - after;
+    }
+
+    /**
      * Every disc at local {@code local} (absolute {@code until}), in original id order, periodic
      * positions wrapped into the box (serial: advances every disc).
      */
