@@ -4,7 +4,6 @@ import carom.core.BadInputException;
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
 import carom.core.physics.GrowthLaw;
-import carom.core.physics.LeesEdwards;
 import carom.core.physics.Physics;
 import carom.core.physics.Restitution;
 import carom.core.scene.Scene;
@@ -163,7 +162,8 @@ public final class DiscTable {
         this.boundary = physics.boundary;
         this.walls = boundary instanceof Boundary.Walls w ? w : null;
         this.periodic = walls == null;
-        this.slidingRows = boundary instanceof LeesEdwards;
+        // From the box, not by a type test on the boundary: a run without shear never loads LeesEdwards.
+        this.slidingRows = scene.box().sheared();
         this.restitution = physics.restitution;
         this.acceleration = flight.maxAcceleration();
         if (!(cellFactor >= 1) || Double.isInfinite(cellFactor)) {
