@@ -137,7 +137,8 @@ public final class RandomScenes {
      * Seeded random small scenes in a Lees-Edwards box: six to thirty discs of two species, shear rates
      * from -1.5 to 1.5 (some runs slide the images by more than a width), pair restitution 1 in half of
      * them and in [0.6, 1) otherwise (with the TC model in a quarter), some boxes only four diameters
-     * high, velocities up to 2 per component. Horizons of 1 to 2.
+     * high, velocities up to 2 per component, a thermostat at kT = 1 in a third of them (it acts only at
+     * samples, so not in a run without). Horizons of 1 to 2.
      */
     public static Scene sheared(long seed) {
         SplittableRandom random = new SplittableRandom(seed);
@@ -148,7 +149,7 @@ public final class RandomScenes {
         double restitution = random.nextBoolean() ? 1 : 0.6 + 0.4 * random.nextDouble();
         double tc = random.nextInt(4) == 0 ? 1e-3 : 0;
         SceneBuilder b = SceneBuilder.create(String.format("sheared-%d-rate%.2f-e%.2f-tc%s", seed, shearRate, restitution, tc))
-                .box(width, height, BoundaryKind.LEES_EDWARDS, shearRate)
+                .box(width, height, BoundaryKind.LEES_EDWARDS, shearRate, seed % 3 == 0 ? 1.0 : 0)
                 .species(Species.mobile("small", radii[0], 1.0))
                 .species(Species.mobile("large", radii[1], 1 + 3 * random.nextDouble()))
                 .effects(Effects.NONE.withRestitution(restitution, 1).withTc(tc));
