@@ -201,7 +201,7 @@ public final class SceneBuilder {
         }
     }
 
-    /** A sheared box takes a finite shear rate, and straight flight of rigid discs (no gravity, no growth). */
+    /** A sheared box takes a finite shear rate, straight flight of rigid discs (no gravity, no growth), and no fixed discs. */
     private void checkShear() {
         if (!box.sheared()) {
             return;
@@ -213,6 +213,13 @@ public final class SceneBuilder {
         }
         if (effects.grows()) {
             throw new BadInputException("box.boundary: a lees-edwards box is not supported with growth");
+        }
+        for (int i = 0; i < species.size(); i++) {
+            if (species.get(i).fixed()) {
+                // A fixed disc's images slide with the box's: two of them would pass through each other.
+                throw new BadInputException("species[" + i + "]: a lees-edwards box cannot hold fixed discs"
+                        + " (their sliding images would pass through each other)");
+            }
         }
     }
 

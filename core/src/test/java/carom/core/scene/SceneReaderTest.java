@@ -517,12 +517,27 @@ class SceneReaderTest {
                 "box.boundary: unknown boundary '" + boundary + "' (known: walls, periodic, lees-edwards)");
     }
 
-    /** BASE in a Lees-Edwards box sheared at {@code shearRate}, without gravity. */
+    /** BASE in a Lees-Edwards box sheared at {@code shearRate}, without gravity and without its peg. */
     private static String sheared(String shearRate) {
         return base(root -> {
             at(root, "/box").put("boundary", "lees-edwards").set("shearRate", value(shearRate));
-            at(root, "/effects").remove("gravity");
+            withoutPegs(root);
         });
+    }
+
+    /** BASE's root without gravity, the fixed species and its disc: what a sheared box can hold. */
+    private static void withoutPegs(ObjectNode root) {
+        at(root, "/effects").remove("gravity");
+        ((ArrayNode) root.get("particles")).remove(2);
+        ((ArrayNode) root.get("species")).remove(1);
+    }
+
+    @Test
+    void aLeesEdwardsBoxRefusesFixedDiscs() {
+        rejected(base(root -> {
+            at(root, "/box").put("boundary", "lees-edwards").put("shearRate", 1);
+            at(root, "/effects").remove("gravity");
+        }), "species[1]: a lees-edwards box cannot hold fixed discs");
     }
 
     @Test
@@ -550,7 +565,7 @@ class SceneReaderTest {
                 "box.shearRate: only a lees-edwards box is sheared (boundary is 'walls')");
         rejected(base(root -> {
             at(root, "/box").put("boundary", "lees-edwards");
-            at(root, "/effects").remove("gravity");
+            withoutPegs(root);
         }), "box.shearRate: missing");
     }
 
@@ -558,7 +573,7 @@ class SceneReaderTest {
     void aShearedBoxMayHoldAThermostatOfPositiveTemperature() {
         String json = base(root -> {
             at(root, "/box").put("boundary", "lees-edwards").put("shearRate", 1).put("thermostat", 2.5);
-            at(root, "/effects").remove("gravity");
+            withoutPegs(root);
         });
         assertThat(SceneReader.parse(json).box().thermostat()).isEqualTo(2.5);
         assertThat(SceneReader.parse(json).box().thermostatted()).isTrue();
@@ -575,6 +590,7 @@ class SceneReaderTest {
                 "box.boundary: a lees-edwards box is not supported under gravity");
         rejected(base(root -> {
             at(root, "/box").put("boundary", "lees-edwards").put("shearRate", 1);
+            withoutPegs(root);
             at(root, "/").set("effects", value("{\"growth\": 0.1}"));
         }), "box.boundary: a lees-edwards box is not supported with growth");
     }
