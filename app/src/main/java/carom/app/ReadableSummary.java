@@ -64,6 +64,10 @@ final class ReadableSummary {
             line(out, "energy put to rest", String.format(Locale.ROOT, "%s  (%d discs fell asleep, %d woke)",
                     r.energyPutToRest(), r.counter(Counter.SLEEPS, 0), r.counter(Counter.WAKES, 0)));
         }
+        if (r.has(Counter.RESCALINGS) && !r.has(Counter.GROWTH_STAGES)) {
+            line(out, "energy removed", String.format(Locale.ROOT, "%s  (thermostat, %d rescalings)",
+                    r.energyRemoved(), r.counter(Counter.RESCALINGS, 0)));
+        }
         line(out, "momentum initial", vector(r.momentumStart()));
         line(out, "momentum final", vector(r.momentumEnd()));
         Pressure p = r.pressure();

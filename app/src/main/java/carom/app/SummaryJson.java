@@ -57,6 +57,10 @@ final class SummaryJson {
             // Resting contact: kinetic energy taken out by discs falling asleep (part of the drift).
             number(energy, "putToRest", r.energyPutToRest());
         }
+        if (r.has(Counter.RESCALINGS) && !r.has(Counter.GROWTH_STAGES)) {
+            // A sheared box's thermostat: kinetic energy taken out at its rescalings (part of the drift).
+            number(energy, "removedByThermostat", r.energyRemoved());
+        }
         number(root, "energyDrift", total.drift());
 
         ObjectNode momentum = root.putObject("momentum");

@@ -97,8 +97,8 @@ public final class AnimateCommand implements Callable<Integer> {
             description = "Pixels of the box's longer side, " + MIN_SIZE + " to " + MAX_SIZE + " (default ${DEFAULT-VALUE}).")
     int size;
 
-    @Option(names = "--color", paramLabel = "species|speed", defaultValue = "species",
-            description = "Colour mobile discs by species (default) or by speed, as 'render' does.")
+    @Option(names = "--color", paramLabel = "species|speed|vx", defaultValue = "species",
+            description = "Colour mobile discs by species (default), by speed or by x velocity, as 'render' does.")
     String color;
 
     /** The raw stderr, for the progress bar (which must know whether it is a terminal). */
@@ -112,7 +112,7 @@ public final class AnimateCommand implements Callable<Integer> {
     public Integer call() {
         ColourMode mode = ColourMode.parse(color);
         if (mode == null) {
-            throw new BadInputException("--color: unknown colour mode " + Quoted.of(color) + " (known: species, speed)");
+            throw new BadInputException("--color: unknown colour mode " + Quoted.of(color) + " (known: species, speed, vx)");
         }
         if (!(fps >= MIN_FPS) || fps > MAX_FPS) {
             throw new BadInputException("--fps: must be a number from 100/" + MAX_DELAY + " (a GIF shows a frame at most "
@@ -166,7 +166,7 @@ public final class AnimateCommand implements Callable<Integer> {
         long frames = frameCount(scene.until(), dt);
         int threads = EnginesCommand.defaultThreads(engine);
         double topSpeed = 0;
-        if (mode == ColourMode.SPEED) {
+        if (mode != ColourMode.SPECIES) {
             double[] top = {0};
             run(engine, scene, threads, dt, (t, d, v) -> top[0] = Math.max(top[0], d.maxSpeed()));
             topSpeed = top[0];

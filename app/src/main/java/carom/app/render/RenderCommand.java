@@ -62,8 +62,8 @@ public final class RenderCommand implements Callable<Integer> {
             description = "Engine to run (see 'carom engines'); default: ${DEFAULT-VALUE}.")
     String engineName;
 
-    @Option(names = "--color", paramLabel = "species|speed", defaultValue = "species",
-            description = "Colour mobile discs by species (default) or by speed.")
+    @Option(names = "--color", paramLabel = "species|speed|vx", defaultValue = "species",
+            description = "Colour mobile discs by species (default), by speed, or by x velocity.")
     String color;
 
     @Option(names = "--size", paramLabel = "PIXELS", defaultValue = "" + DEFAULT_SIZE,
@@ -78,7 +78,7 @@ public final class RenderCommand implements Callable<Integer> {
         List<Double> times = parseTimes(at);
         SceneRenderer.ColourMode mode = SceneRenderer.ColourMode.parse(color);
         if (mode == null) {
-            throw new BadInputException("--color: unknown colour mode " + Quoted.of(color) + " (known: species, speed)");
+            throw new BadInputException("--color: unknown colour mode " + Quoted.of(color) + " (known: species, speed, vx)");
         }
         if (size < MIN_SIZE || size > MAX_SIZE) {
             throw new BadInputException("--size: must be between " + MIN_SIZE + " and " + MAX_SIZE + " pixels, got " + size);

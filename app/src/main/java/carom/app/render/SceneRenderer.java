@@ -27,13 +27,15 @@ import java.util.function.IntFunction;
 public final class SceneRenderer {
     /** How mobile discs are coloured. */
     public enum ColourMode {
-        SPECIES, SPEED;
+        SPECIES, SPEED,
+        /** By x velocity, from −top to +top speed (a sheared flow's profile). */
+        VX;
 
         String label() {
             return name().toLowerCase(Locale.ROOT);
         }
 
-        /** The mode named {@code s} ("species" or "speed"), or null. */
+        /** The mode named {@code s} ("species", "speed" or "vx"), or null. */
         public static ColourMode parse(String s) {
             for (ColourMode m : values()) {
                 if (m.label().equals(s)) {
@@ -121,12 +123,18 @@ public final class SceneRenderer {
     public static BufferedImage draw(Subject scene, Discs discs, String timeLabel, ColourMode mode, double topSpeed, int size) {
         int[] mobileRank = mobileRanks(scene.species());
         double speedScale = topSpeed > 0 ? 1.0 / topSpeed : 0;
-        IntFunction<Color> fillOf = mode == ColourMode.SPEED
-                ? i -> Colours.speed(Math.hypot(discs.vx[i], discs.vy[i]) * speedScale)
-                : i -> Colours.species(mobileRank[discs.species[i]]);
-        Key key = mode == ColourMode.SPEED
-                ? (g, fm, layout, x, baseline) -> drawSpeedKey(g, fm, layout, x, baseline, topSpeed, scene.hasFixedDiscs())
-                : (g, fm, layout, x, baseline) -> drawSpeciesKey(g, fm, layout, x, baseline, scene.species());
+        IntFunction<Color> fillOf = switch (mode) {
+            case SPEED -> i -> Colours.speed(Math.hypot(discs.vx[i], discs.vy[i]) * speedScale);
+            case VX -> i -> Colours.speed(0.5 + 0.5 * discs.vx[i] * speedScale);
+            case SPECIES -> i -> Colours.species(mobileRank[discs.species[i]]);
+        };
+        Key key = switch (mode) {
+            case SPEED -> (g, fm, layout, x, baseline) -> drawBarKey(g, fm, layout, x, baseline, "speed 0",
+                    formatSpeed(topSpeed), scene.hasFixedDiscs());
+            case VX -> (g, fm, layout, x, baseline) -> drawBarKey(g, fm, layout, x, baseline,
+                    "vx -" + formatSpeed(topSpeed), "+" + formatSpeed(topSpeed), scene.hasFixedDiscs());
+            case SPECIES -> (g, fm, layout, x, baseline) -> drawSpeciesKey(g, fm, layout, x, baseline, scene.species());
+        };
         return draw(scene, discs, timeLabel, fillOf, key, size);
     }
 
@@ -295,11 +303,10 @@ public final class SceneRenderer {
     }
 
     /** "speed 0 [colour bar] top", the bar as long as the room allows. */
-    private static void drawSpeedKey(Graphics2D g, FontMetrics fm, Layout layout, int x, int baseline,
-                                     double topSpeed, boolean fixedToo) {
+    /** The colour bar of the speed map from {@code lo} to {@code hi}, and the fixed discs' dot if there is room. */
+    private static void drawBarKey(Graphics2D g, FontMetrics fm, Layout layout, int x, int baseline,
+                                   String lo, String hi, boolean fixedToo) {
         g.setColor(Colours.TEXT);
-        String lo = "speed 0";
-        String hi = formatSpeed(topSpeed);
         g.drawString(lo, x, baseline);
         int barX = x + fm.stringWidth(lo) + layout.fontPx() / 2;
         int room = layout.width() - layout.margin() - barX - fm.stringWidth(hi) - layout.fontPx() / 2;

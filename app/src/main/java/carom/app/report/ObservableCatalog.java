@@ -13,6 +13,7 @@ import carom.core.observe.sample.SpeciesDisplacement;
 import carom.core.observe.sample.StructureFactor;
 import carom.core.scene.Scene;
 import carom.core.scene.Species;
+import carom.core.observe.sample.StressTensor;
 import java.util.List;
 
 /**
@@ -68,7 +69,13 @@ public final class ObservableCatalog {
                     List.of("species", "k", "lag", "Fs", "error"),
                     (scene, interval) -> SpeciesDisplacement.selfScattering(scene.species(), interval,
                             SpeciesDisplacement.firstPeak(Sample.of(0, scene.box(), scene.newDiscs()), speciesNames(scene))),
-                    SpeciesDisplacement::restoreSelfScattering, ObservablePlots::selfScattering));
+                    SpeciesDisplacement::restoreSelfScattering, ObservablePlots::selfScattering),
+            new ObservableSpec<>(StressTensor.KEY,
+                    "the pressure tensor Pxx, Pyy, Pxy over each interval between consecutive samples: kinetic part "
+                            + "from peculiar velocities vx − γ̇·y, collisional part from each collision's impulse "
+                            + "(engines that tell collisions)",
+                    List.of("t0", "t1", "Pxx", "Pyy", "Pxy"), (scene, interval) -> StressTensor.of(scene.species()),
+                    StressTensor::restore, ObservablePlots::stress, stress -> stress));
 
     /** The keys, in the order listed. */
     public static final List<String> KEYS = ALL.stream().map(ObservableSpec::key).toList();

@@ -8,6 +8,7 @@ import carom.core.observe.sample.PressureSeries;
 import carom.core.observe.sample.RadialDistribution;
 import carom.core.observe.sample.SpeciesDisplacement;
 import carom.core.observe.sample.StructureFactor;
+import carom.core.observe.sample.StressTensor;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.util.ArrayList;
@@ -43,6 +44,8 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
  *     block error.</li>
  * <li>{@code collisions.png}: the pair-collision rate per disc of each sample interval at its midpoint,
  *     with the run's mean and its block error bar.</li>
+ * <li>{@code stress.png}: Pxx, Pyy and Pxy of each sample interval at its midpoint, the mean Pxy and its
+ *     block error bar in the title.</li>
  * </ul>
  * An observable without data yet still gets a plot that says so.
  */
@@ -352,6 +355,38 @@ public final class ObservablePlots {
 
     private static double max(double[] v) {
         return java.util.Arrays.stream(v).max().orElse(Double.NaN);
+    }
+
+    static XYChart stress(StressTensor stress) {
+        double[] t0 = stress.intervalStarts();
+        double[] t1 = stress.intervalEnds();
+        double[] mean = stress.means();
+        double[] error = stress.errors();
+        String title = "Pressure tensor per sample interval";
+        if (t0.length > 0) {
+            title += Double.isFinite(error[StressTensor.XY])
+                    ? String.format(": mean Pxy %s ± %s (%d blocks)", number(mean[StressTensor.XY]),
+                    number(error[StressTensor.XY]), stress.blocks())
+                    : String.format(": mean Pxy %s", number(mean[StressTensor.XY]));
+        }
+        XYChart chart = chart(title, "time t, middle of each interval (scene time unit)",
+                "pressure tensor component (force per scene length)");
+        if (t0.length > 0) {
+            double[] x = new double[t0.length];
+            for (int k = 0; k < x.length; k++) {
+                x[k] = 0.5 * (t0[k] + t1[k]);
+            }
+            String[] names = {"Pxx", "Pyy", "Pxy"};
+            for (int c = 0; c < 3; c++) {
+                XYSeries s = chart.addSeries(names[c], x, stress.component(c));
+                Color color = ChartStyle.PALETTE[c % ChartStyle.PALETTE.length];
+                s.setLineColor(color);
+                s.setMarkerColor(color);
+                s.setLineStyle(new BasicStroke(2f));
+                s.setMarker(x.length <= 60 ? SeriesMarkers.CIRCLE : SeriesMarkers.NONE);
+            }
+        }
+        return finish(chart);
     }
 
     private static XYChart chart(String title, String xTitle, String yTitle) {

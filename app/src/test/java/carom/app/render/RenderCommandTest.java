@@ -213,6 +213,20 @@ class RenderCommandTest {
         assertThat(pixel(b, layout.px(5), layout.py(2.5))).isEqualTo(Colours.FIXED_FILL);
     }
 
+    /** By x velocity: from −top speed to +top speed, so the fastest disc (vx = 1 = top) gets the top colour. */
+    @Test
+    void xVelocityColoursSpanMinusToPlusTheTopSpeed() {
+        Path scene = scene("s.json", WALLED);
+        Path byVx = dir.resolve("vx");
+        Run r = carom("render", scene.toString(), "--at", "0", "--out", byVx.toString(), "--size", "400", "--color", "vx");
+        assertThat(r.status()).as(r.err()).isZero();
+        BufferedImage b = read(byVx.resolve("peg-and-ball-t0.png"));
+        SceneRenderer.Layout layout = SceneRenderer.Layout.of(SceneReader.parse(WALLED).box(), 400);
+        assertThat(pixel(b, layout.px(2), layout.py(4))).isEqualTo(Colours.speed(1.0));
+        assertThat(pixel(b, layout.px(8), layout.py(1))).isEqualTo(Colours.speed(0.5 + 0.5 * 0.25));
+        assertThat(pixel(b, layout.px(5), layout.py(2.5))).isEqualTo(Colours.FIXED_FILL);
+    }
+
     @Test
     void createsTheOutputDirectoryAndLeavesNoTemporaryFiles() {
         Path scene = scene("s.json", WALLED);

@@ -14,5 +14,7 @@ public enum Capability {
     /** Runs on the {@code --threads} it is given; without, on one thread whatever is asked. */
     THREADS,
     /** Runs on several JVMs: {@code --nodes K} starts workers, {@code --seed-nodes} joins running ones ({@link Engine#overWorkers}). */
-    NODES
+    NODES,
+    /** Simulates a sheared box (Lees-Edwards boundaries); a scene with one is refused by any other engine ({@link EngineSpec#checkSupports}). */
+    LEES_EDWARDS
 }

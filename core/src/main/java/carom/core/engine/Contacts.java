@@ -46,8 +46,9 @@ public final class Contacts {
     public double pair(Discs d, Restitution restitution, int a, int b, double now, double time, int idA, int idB) {
         flight.advance(d, a, now);
         flight.advance(d, b, now);
-        double dx = boundary.separationX(d.x[b] - d.x[a]);
-        double dy = boundary.separationY(d.y[b] - d.y[a]);
+        double rawDy = d.y[b] - d.y[a];
+        double dx = boundary.imageSeparationX(d.x[b] - d.x[a], rawDy, now);
+        double dy = boundary.separationY(rawDy);
         double e = restitution.pair(a, b, time);
         boolean aMobile = d.invMass[a] > 0;
         if (gravity && aMobile != d.invMass[b] > 0) {
@@ -66,7 +67,7 @@ public final class Contacts {
                 sleepers.wake(d, support);
             }
         }
-        return PairLaw.collide(d, a, b, dx, dy, e);
+        return PairLaw.collide(d.vx, a, b, d.vy, a, b, d.invMass[a], d.invMass[b], dx, dy, boundary.imageVelocityX(rawDy), e);
     }
 
     /** Reflects disc i of {@code d} off a wall at {@code now}, or puts it to sleep there. */

@@ -32,7 +32,7 @@ public final class Counter {
     // Runs with growth.
     public static final Counter GROWTH_STAGES = new Counter("growthStages",
             "stages of a growth run: cell grids rebuilt as the discs grew, and at samples");
-    public static final Counter RESCALINGS = new Counter("rescalings", "thermostat rescalings of the kinetic energy (growth runs)");
+    public static final Counter RESCALINGS = new Counter("rescalings", "thermostat rescalings of the kinetic energy (growth runs; a sheared box's thermostat)");
 
     // Exact engines under gravity: resting contact.
     public static final Counter SLEEPS = new Counter("sleeps",

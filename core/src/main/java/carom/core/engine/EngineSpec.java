@@ -95,9 +95,15 @@ public record EngineSpec(String name, String description, boolean exact, Set<Cap
 
     /**
      * Throws {@link BadInputException} if {@code scene} switches on an effect this engine does not
-     * simulate, naming the effect's key and the shipped engines that do simulate it.
+     * simulate, or is sheared and this engine cannot shear ({@link Capability#LEES_EDWARDS}), naming the
+     * effect's key (or the box's boundary) and the shipped engines that do simulate it.
      */
     public void checkSupports(Scene scene) {
+        if (scene.box().sheared() && !can(Capability.LEES_EDWARDS)) {
+            List<String> shearing = shipped().stream().filter(s -> s.can(Capability.LEES_EDWARDS)).map(EngineSpec::name).toList();
+            throw new BadInputException("box.boundary: engine " + name + " does not simulate a lees-edwards (sheared) box"
+                    + " (engines that do: " + (shearing.isEmpty() ? "none" : String.join(", ", shearing)) + ")");
+        }
         for (Effect effect : Effect.of(scene.effects())) {
             if (!simulates(effect)) {
                 List<String> simulating = shipped().stream().filter(s -> s.simulates(effect)).map(EngineSpec::name).toList();

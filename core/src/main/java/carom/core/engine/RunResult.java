@@ -28,13 +28,15 @@ import java.util.Map;
  * @param energyPutToRest    kinetic energy the discs had when they fell asleep (resting contact under
  *                           gravity, {@link carom.core.physics.RestRule}), summed over the run; 0 if
  *                           none did
+ * @param energyRemoved      kinetic energy a sheared box's thermostat took out at its rescalings, summed
+ *                           over the run (negative if it put energy in); 0 without one
  */
 public record RunResult(String engine, boolean exact, Discs finalState, double until,
                         long pairCollisions, long wallCollisions, long events,
                         double kineticEnergyStart, double kineticEnergyEnd,
                         double[] momentumStart, double[] momentumEnd,
                         Pressure pressure, long causalityViolations, double wallSeconds,
-                        Map<String, Long> counters, double energyPutToRest) {
+                        Map<String, Long> counters, double energyPutToRest, double energyRemoved) {
     /**
      * Starts the result of a run of {@code engine} (exact or not) that left {@code finalState} at
      * {@code until}; the other parts are named on the builder, and those not named are 0 (null for
@@ -63,6 +65,7 @@ public record RunResult(String engine, boolean exact, Discs finalState, double u
         private double wallSeconds;
         private Map<String, Long> counters = Map.of();
         private double energyPutToRest;
+        private double energyRemoved;
 
         private Builder(String engine, boolean exact, Discs finalState, double until) {
             this.engine = engine;
@@ -128,10 +131,17 @@ public record RunResult(String engine, boolean exact, Discs finalState, double u
             return this;
         }
 
+        /** Kinetic energy a sheared box's thermostat took out, summed over the run. */
+        public Builder energyRemoved(double energy) {
+            energyRemoved = energy;
+            return this;
+        }
+
         public RunResult build() {
             return new RunResult(engine, exact, finalState, until, pairCollisions, wallCollisions,
                     events < 0 ? pairCollisions + wallCollisions : events, kineticEnergyStart, kineticEnergyEnd,
-                    momentumStart, momentumEnd, pressure, causalityViolations, wallSeconds, counters, energyPutToRest);
+                    momentumStart, momentumEnd, pressure, causalityViolations, wallSeconds, counters, energyPutToRest,
+                    energyRemoved);
         }
     }
 
@@ -150,7 +160,7 @@ public record RunResult(String engine, boolean exact, Discs finalState, double u
         more.put(Counter.COLLISIONS_BEFORE_RESUME.key, collisionsBefore);
         return new RunResult(engine, exact, finalState, until, pairCollisions, wallCollisions, events,
                 kineticEnergyStart, kineticEnergyEnd, momentumStart, momentumEnd, pressure, causalityViolations,
-                wallSeconds, Map.copyOf(more), energyPutToRest);
+                wallSeconds, Map.copyOf(more), energyPutToRest, energyRemoved);
     }
 
     /** Causality violations per million collisions (0 for exact engines). */

@@ -8,6 +8,10 @@ package carom.core.grid;
  * neighbourhood wraps; when an axis has fewer than three cells the wrapped neighbours coincide, and
  * the table lists each only once so that no pair is ever visited twice.
  *
+ * <p>Sliding rows ({@link #withSlidingRows}, for Lees-Edwards boxes): the image above and below slides
+ * along x, so the cells across the top and bottom that neighbour a cell change as it slides; there
+ * every cell of the bottom row neighbours every cell of the top row, and the rest is as periodic.
+ *
  * <p>Cell index = row * cols + col, row 0 at the bottom.
  */
 public final class CellGrid {
@@ -18,6 +22,8 @@ public final class CellGrid {
     public final int rows;
     public final double cellWidth;
     public final double cellHeight;
+    /** Whether the top and bottom rows neighbour each other whole ({@link #withSlidingRows}). */
+    public final boolean slidingRows;
     private final double colsPerUnit;
     private final double rowsPerUnit;
     /**
@@ -32,6 +38,11 @@ public final class CellGrid {
     }
 
     private CellGrid(double width, double height, boolean periodic, int cols, int rows) {
+        this(width, height, periodic, cols, rows, false);
+    }
+
+    private CellGrid(double width, double height, boolean periodic, int cols, int rows, boolean slidingRows) {
+        this.slidingRows = slidingRows;
         this.width = width;
         this.height = height;
         this.periodic = periodic;
@@ -78,6 +89,17 @@ public final class CellGrid {
         return new CellGrid(width, height, periodic, (int) cols, (int) rows);
     }
 
+    /**
+     * This periodic grid with sliding rows: every cell of the top row neighbours every cell of the
+     * bottom row (and the reverse), whatever the slide, instead of the three across.
+     */
+    public CellGrid withSlidingRows() {
+        if (!periodic) {
+            throw new IllegalStateException("only a periodic grid has sliding rows");
+        }
+        return new CellGrid(width, height, true, cols, rows, true);
+    }
+
     private static long cellsAlong(double length, double minCellSize) {
         double k = Math.floor(length / minCellSize);
         if (!(k >= 1)) {
@@ -111,6 +133,9 @@ public final class CellGrid {
     }
 
     private Neighbourhood buildNeighbours() {
+        if (slidingRows) {
+            return buildSlidingNeighbours();
+        }
         int cells = cols * rows;
         int[] start = new int[cells + 1];
         // Wrapped neighbours coincide only on a periodic axis of fewer than three cells.
@@ -145,6 +170,37 @@ public final class CellGrid {
         }
         start[cells] = k;
         return new Neighbourhood(start, k == list.length ? list : java.util.Arrays.copyOf(list, k));
+    }
+
+    /** {@link #buildNeighbours} with sliding rows: across the top or bottom, the whole row; each neighbour once. */
+    private Neighbourhood buildSlidingNeighbours() {
+        int cells = cols * rows;
+        int[] start = new int[cells + 1];
+        int[] list = new int[Math.toIntExact(Math.min((long) cells * cells, 9L * cells + 6L * cols * cols))];
+        boolean[] listed = new boolean[cells];
+        int k = 0;
+        for (int r = 0; r < rows; r++) {
+            for (int c = 0; c < cols; c++) {
+                int cell = r * cols + c;
+                start[cell] = k;
+                for (int dr = -1; dr <= 1; dr++) {
+                    int nr = Math.floorMod(r + dr, rows);
+                    boolean across = r + dr < 0 || r + dr >= rows;
+                    for (int dc = across ? -c : -1; dc <= (across ? cols - 1 - c : 1); dc++) {
+                        int neighbour = nr * cols + Math.floorMod(c + dc, cols);
+                        if (!listed[neighbour]) {
+                            listed[neighbour] = true;
+                            list[k++] = neighbour;
+                        }
+                    }
+                }
+                for (int q = start[cell]; q < k; q++) {
+                    listed[list[q]] = false;
+                }
+            }
+        }
+        start[cells] = k;
+        return new Neighbourhood(start, java.util.Arrays.copyOf(list, k));
     }
 
     /** Entries of the table when no two neighbours of a cell coincide: a product of the axes' counts. */

@@ -15,6 +15,9 @@ import carom.core.state.Discs;
  * in. Z = PA/(NkT) is the same expression either way. Neither holds under gravity or with fixed discs
  * (their forces add virial terms the pair sum lacks); Z is then the pair-virial value only.
  *
+ * <p>In a sheared (Lees-Edwards) box kT is the peculiar one, from the velocities less the streaming
+ * velocity shearRate·y, at the run's start and end.
+ *
  * <p>Blocks are by simulated time so that block means are independent enough to give an honest error
  * bar (standard error of the block means). Single writer; no allocation per collision.
  */
@@ -136,8 +139,25 @@ public final class VirialAccumulator {
      */
     public static Pressure pressureOf(VirialAccumulator virial, Scene scene, Discs finalState,
                                       double energyStart, double energyEnd) {
+        if (scene.box().sheared()) {
+            // kT is the peculiar one: the streaming velocity shearRate·y carries no pressure.
+            energyStart = peculiarKineticEnergy(scene.newDiscs(), scene.box().shearRate());
+            energyEnd = peculiarKineticEnergy(finalState, scene.box().shearRate());
+        }
         return virial.pressure(Observables.mobileCount(finalState), 0.5 * (energyStart + energyEnd),
                 pressureArea(scene, finalState));
+    }
+
+    /** The kinetic energy of the mobile discs of {@code d} in the streaming frame: vx less shearRate·y. */
+    static double peculiarKineticEnergy(Discs d, double shearRate) {
+        double sum = 0;
+        for (int i = 0; i < d.n; i++) {
+            if (d.invMass[i] > 0) {
+                double cx = d.vx[i] - shearRate * d.y[i];
+                sum += 0.5 * (cx * cx + d.vy[i] * d.vy[i]) / d.invMass[i];
+            }
+        }
+        return sum;
     }
 
     /**

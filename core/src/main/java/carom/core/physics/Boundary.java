@@ -4,11 +4,18 @@ import carom.core.scene.Box;
 import carom.core.state.Discs;
 
 /**
- * What the box's edges do: reflecting walls or periodic wrap. Chosen once per scene; each run sees
- * exactly one implementation, so the JIT inlines these calls on the hot path.
+ * What the box's edges do: reflecting walls, periodic wrap, or periodic wrap with sliding images
+ * ({@link LeesEdwards}). Chosen once per scene; each run sees exactly one implementation, so the JIT
+ * inlines these calls on the hot path.
  *
  * <p>Walls are numbered {@link #LEFT}, {@link #RIGHT}, {@link #BOTTOM}, {@link #TOP}; a periodic box has
  * none.
+ *
+ * <p>Pairs and images: the separation of a pair is taken from the raw difference of positions in the
+ * box, rj - ri. Walls and periodic boxes see it through {@link #separationX} and {@link #separationY}
+ * alone; where images slide, the x separation and the relative x velocity of the image depend on which
+ * y image it is ({@link #imageSeparationX}, {@link #imageVelocityX}), and code that carries out or
+ * predicts a pair goes through those (or {@link #timeToContact}).
  */
 public abstract sealed class Boundary permits Boundary.Walls, Boundary.Periodic {
     public static final int LEFT = 0;
@@ -25,6 +32,9 @@ public abstract sealed class Boundary permits Boundary.Walls, Boundary.Periodic 
     }
 
     public static Boundary of(Box box) {
+        if (box.sheared()) {
+            return new LeesEdwards(box.width(), box.height(), box.shearRate());
+        }
         return box.periodic() ? new Periodic(box.width(), box.height()) : new Walls(box.width(), box.height());
     }
 
@@ -55,6 +65,47 @@ public abstract sealed class Boundary permits Boundary.Walls, Boundary.Periodic 
 
     public final boolean periodic() {
         return this instanceof Periodic;
+    }
+
+    /**
+     * Time from local {@code now} until two discs in straight relative motion first touch while
+     * approaching, or +Infinity: raw separation (dx, dy) = rj - ri, relative velocity (dvx, dvy) =
+     * vj - vi, contact distance sigma. Here through the nearest image ({@link PairLaw#timeToContact});
+     * where images slide, through every image the pair can meet.
+     */
+    public double timeToContact(double dx, double dy, double dvx, double dvy, double sigma, double now) {
+        return PairLaw.timeToContact(separationX(dx), separationY(dy), dvx, dvy, sigma);
+    }
+
+    /**
+     * The x separation from disc i to the nearest image of disc j at local {@code now}, for the raw
+     * separation (dx, dy): {@link #separationX} unless images slide, where the image above or below is
+     * shifted by the offset.
+     */
+    public double imageSeparationX(double dx, double dy, double now) {
+        return separationX(dx);
+    }
+
+    /** How much faster along x the nearest image of j moves than j, for the raw y separation dy: 0 unless images slide. */
+    public double imageVelocityX(double dy) {
+        return 0;
+    }
+
+    /**
+     * Brings disc i (its clock local {@code now}) back into the box: {@link #wrapX} and {@link #wrapY},
+     * and where images slide, the shift and the change of x velocity of a crossing through the top or
+     * bottom.
+     */
+    public void wrap(Discs d, int i, double now) {
+        d.x[i] = wrapX(d.x[i]);
+        d.y[i] = wrapY(d.y[i]);
+    }
+
+    /**
+     * Tells a boundary whose images slide that local time 0 is absolute time {@code epoch} (engines call
+     * it whenever they re-anchor clocks, and at their start); nothing elsewhere.
+     */
+    public void anchor(double epoch) {
     }
 
     /** Four reflecting walls around [0,width] x [0,height]. */
@@ -113,9 +164,9 @@ public abstract sealed class Boundary permits Boundary.Walls, Boundary.Periodic 
     }
 
     /** Both axes wrap; separations are taken to the nearest image. */
-    public static final class Periodic extends Boundary {
-        private final double invWidth;
-        private final double invHeight;
+    public static sealed class Periodic extends Boundary permits LeesEdwards {
+        final double invWidth;
+        final double invHeight;
 
         Periodic(double width, double height) {
             super(width, height);

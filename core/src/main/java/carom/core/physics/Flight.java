@@ -108,11 +108,8 @@ public abstract sealed class Flight permits Flight.Straight, Flight.Parabolic {
 
         @Override
         public double timeToContact(Discs d, int i, int j, double now, double horizon, Boundary boundary) {
-            double xi = x(d, i, now);
-            double yi = y(d, i, now);
-            double dx = boundary.separationX(x(d, j, now) - xi);
-            double dy = boundary.separationY(y(d, j, now) - yi);
-            return PairLaw.timeToContact(dx, dy, d.vx[j] - d.vx[i], d.vy[j] - d.vy[i], d.radius[i] + d.radius[j]);
+            return boundary.timeToContact(x(d, j, now) - x(d, i, now), y(d, j, now) - y(d, i, now),
+                    d.vx[j] - d.vx[i], d.vy[j] - d.vy[i], d.radius[i] + d.radius[j], now);
         }
 
         @Override

@@ -96,10 +96,20 @@ public final class PairLaw {
      */
     public static double collide(double[] vx, int ix, int jx, double[] vy, int iy, int jy, double invMi,
                                  double invMj, double dx, double dy, double e) {
+        return collide(vx, ix, jx, vy, iy, jy, invMi, invMj, dx, dy, 0, e);
+    }
+
+    /**
+     * The same collision with disc j seen through an image that moves {@code imageVx} faster along x
+     * than j (a sliding image, {@link Boundary#imageVelocityX}; 0 otherwise): the impulse comes from the
+     * image's relative velocity and changes both discs' own velocities.
+     */
+    public static double collide(double[] vx, int ix, int jx, double[] vy, int iy, int jy, double invMi,
+                                 double invMj, double dx, double dy, double imageVx, double e) {
         double dist = Math.sqrt(dx * dx + dy * dy);
         double nx = dx / dist;
         double ny = dy / dist;
-        double u = (vx[ix] - vx[jx]) * nx + (vy[iy] - vy[jy]) * ny;
+        double u = (vx[ix] - (vx[jx] + imageVx)) * nx + (vy[iy] - vy[jy]) * ny;
         if (!(u > 0)) {
             return 0;
         }

@@ -49,6 +49,17 @@ public final class SceneBuilder {
         return this;
     }
 
+    /** A box sheared at {@code shearRate} (Lees-Edwards boundaries; 0 for any other boundary). */
+    public SceneBuilder box(double width, double height, BoundaryKind boundary, double shearRate) {
+        return box(width, height, boundary, shearRate, 0);
+    }
+
+    /** A sheared box whose thermostat keeps the peculiar temperature {@code thermostat} (0: none). */
+    public SceneBuilder box(double width, double height, BoundaryKind boundary, double shearRate, double thermostat) {
+        this.box = new Box(width, height, boundary, shearRate, thermostat);
+        return this;
+    }
+
     /** Adds a species and returns this builder; its index is the number of species added before it. */
     public SceneBuilder species(Species s) {
         species.add(s);
@@ -207,6 +218,7 @@ public final class SceneBuilder {
         }
         requirePositive("until", until);
         Effect.check(effects);
+        checkShear();
         for (int b = 0; b < blocks.size(); b++) {
             GenerateBlock block = blocks.get(b);
             String path = "generate[" + b + "]";
@@ -239,6 +251,28 @@ public final class SceneBuilder {
                 case VelocityDistribution.Maxwell m -> requireNonNegative(path + ".velocity.temperature", m.temperature());
                 case VelocityDistribution.AtRest r -> {
                 }
+            }
+        }
+    }
+
+    /** A sheared box takes a finite shear rate, straight flight of rigid discs (no gravity, no growth), and no fixed discs. */
+    private void checkShear() {
+        if (!box.sheared()) {
+            return;
+        }
+        requireFinite("box.shearRate", box.shearRate());
+        requireFinite("box.thermostat", box.thermostat());
+        if (effects.hasGravity()) {
+            throw new BadInputException("box.boundary: a lees-edwards box is not supported under gravity");
+        }
+        if (effects.grows()) {
+            throw new BadInputException("box.boundary: a lees-edwards box is not supported with growth");
+        }
+        for (int i = 0; i < species.size(); i++) {
+            if (species.get(i).fixed()) {
+                // A fixed disc's images slide with the box's: two of them would pass through each other.
+                throw new BadInputException("species[" + i + "]: a lees-edwards box cannot hold fixed discs"
+                        + " (their sliding images would pass through each other)");
             }
         }
     }

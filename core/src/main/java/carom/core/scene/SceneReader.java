@@ -61,7 +61,7 @@ public final class SceneReader {
 
     private static final Set<String> TOP_KEYS =
             Set.of("name", "box", "species", "particles", "generate", "effects", "until");
-    private static final Set<String> BOX_KEYS = Set.of("width", "height", "boundary");
+    private static final Set<String> BOX_KEYS = Set.of("width", "height", "boundary", "shearRate", "thermostat");
     private static final Set<String> SPECIES_KEYS = Set.of("name", "radius", "mass", "fixed");
     private static final Set<String> PARTICLE_KEYS = Set.of("species", "x", "y", "vx", "vy", "radius");
     private static final Set<String> GENERATE_KEYS = Set.of("species", "fractions", "count", "layout", "jitter", "velocity", "seed");
@@ -300,9 +300,28 @@ public final class SceneReader {
             }
         }
         if (kind == null) {
-            throw new BadInputException("box.boundary: unknown boundary " + Quoted.of(boundary) + " (known: walls, periodic)");
+            throw new BadInputException("box.boundary: unknown boundary " + Quoted.of(boundary)
+                    + " (known: walls, periodic, lees-edwards)");
         }
-        builder.box(width, height, kind);
+        JsonNode shearRate = box.get("shearRate");
+        if (kind != BoundaryKind.LEES_EDWARDS) {
+            for (String key : List.of("shearRate", "thermostat")) {
+                if (box.get(key) != null) {
+                    throw new BadInputException("box." + key + ": only a lees-edwards box is sheared (boundary is "
+                            + Quoted.of(boundary) + ")");
+                }
+            }
+            builder.box(width, height, kind);
+            return;
+        }
+        double thermostat = 0;
+        if (box.get("thermostat") != null) {
+            thermostat = number(box.get("thermostat"), "box.thermostat");
+            if (!(thermostat > 0)) {
+                throw new BadInputException("box.thermostat: must be a finite number > 0, got " + thermostat);
+            }
+        }
+        builder.box(width, height, kind, requiredNumber(box, "box", "shearRate"), thermostat);
     }
 
     /** Adds every species to the builder, records each name's index and returns the species in order. */

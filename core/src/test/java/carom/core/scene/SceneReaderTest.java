@@ -512,9 +512,87 @@ class SceneReaderTest {
 
     @ParameterizedTest
     @ValueSource(strings = {"wall", "Walls", "periodical", "open", ""})
-    void unknownBoundariesListTheTwoKnownOnes(String boundary) {
+    void unknownBoundariesListTheKnownOnes(String boundary) {
         rejected(base(root -> at(root, "/box").put("boundary", boundary)),
-                "box.boundary: unknown boundary '" + boundary + "' (known: walls, periodic)");
+                "box.boundary: unknown boundary '" + boundary + "' (known: walls, periodic, lees-edwards)");
+    }
+
+    /** BASE in a Lees-Edwards box sheared at {@code shearRate}, without gravity and without its peg. */
+    private static String sheared(String shearRate) {
+        return base(root -> {
+            at(root, "/box").put("boundary", "lees-edwards").set("shearRate", value(shearRate));
+            withoutPegs(root);
+        });
+    }
+
+    /** BASE's root without gravity, the fixed species and its disc: what a sheared box can hold. */
+    private static void withoutPegs(ObjectNode root) {
+        at(root, "/effects").remove("gravity");
+        ((ArrayNode) root.get("particles")).remove(2);
+        ((ArrayNode) root.get("species")).remove(1);
+    }
+
+    @Test
+    void aLeesEdwardsBoxRefusesFixedDiscs() {
+        rejected(base(root -> {
+            at(root, "/box").put("boundary", "lees-edwards").put("shearRate", 1);
+            at(root, "/effects").remove("gravity");
+        }), "species[1]: a lees-edwards box cannot hold fixed discs");
+    }
+
+    @Test
+    void aLeesEdwardsBoxIsPeriodicAndShearedAtItsRate() {
+        Box box = SceneReader.parse(sheared("-0.75")).box();
+        assertThat(box.boundary()).isEqualTo(BoundaryKind.LEES_EDWARDS);
+        assertThat(box.periodic()).isTrue();
+        assertThat(box.sheared()).isTrue();
+        assertThat(box.shearRate()).isEqualTo(-0.75);
+        assertThat(SceneReader.parse(base(root -> at(root, "/effects").remove("gravity"))).box().shearRate()).isZero();
+    }
+
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', textBlock = """
+            "fast"  | box.shearRate: must be a number
+            [1]     | box.shearRate: must be a number
+            """)
+    void badShearRatesNameTheirPath(String shearRate, String message) {
+        rejected(sheared(shearRate), message);
+    }
+
+    @Test
+    void aShearRateNeedsALeesEdwardsBoxAndOneNeedsARate() {
+        rejected(base(root -> at(root, "/box").put("shearRate", 1)),
+                "box.shearRate: only a lees-edwards box is sheared (boundary is 'walls')");
+        rejected(base(root -> {
+            at(root, "/box").put("boundary", "lees-edwards");
+            withoutPegs(root);
+        }), "box.shearRate: missing");
+    }
+
+    @Test
+    void aShearedBoxMayHoldAThermostatOfPositiveTemperature() {
+        String json = base(root -> {
+            at(root, "/box").put("boundary", "lees-edwards").put("shearRate", 1).put("thermostat", 2.5);
+            withoutPegs(root);
+        });
+        assertThat(SceneReader.parse(json).box().thermostat()).isEqualTo(2.5);
+        assertThat(SceneReader.parse(json).box().thermostatted()).isTrue();
+        assertThat(SceneReader.parse(sheared("1")).box().thermostatted()).isFalse();
+        rejected(json.replace("2.5", "0"), "box.thermostat: must be a finite number > 0, got 0.0");
+        rejected(json.replace("2.5", "\"hot\""), "box.thermostat: must be a number");
+        rejected(base(root -> at(root, "/box").put("boundary", "periodic").put("thermostat", 1)),
+                "box.thermostat: only a lees-edwards box is sheared (boundary is 'periodic')");
+    }
+
+    @Test
+    void aLeesEdwardsBoxRefusesGravityAndGrowth() {
+        rejected(base(root -> at(root, "/box").put("boundary", "lees-edwards").put("shearRate", 1)),
+                "box.boundary: a lees-edwards box is not supported under gravity");
+        rejected(base(root -> {
+            at(root, "/box").put("boundary", "lees-edwards").put("shearRate", 1);
+            withoutPegs(root);
+            at(root, "/").set("effects", value("{\"growth\": 0.1}"));
+        }), "box.boundary: a lees-edwards box is not supported with growth");
     }
 
     @Test

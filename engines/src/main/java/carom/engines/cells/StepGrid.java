@@ -35,8 +35,10 @@ public final class StepGrid {
      */
     public static StepGrid plan(Box box, double maxDiameter, double cellFactor, int discs) {
         boolean periodic = box.periodic();
-        CellGrid grid = CellGrid.covering(box.width(), box.height(), cellFactor * maxDiameter, periodic,
+        CellGrid covering = CellGrid.covering(box.width(), box.height(), cellFactor * maxDiameter, periodic,
                 4L * discs + 16);
+        // Sliding images: the cells across the top and bottom that neighbour a cell move with the slide.
+        CellGrid grid = box.sheared() ? covering.withSlidingRows() : covering;
         double slack = Math.min(
                 axisSlack(grid.cols, grid.cellWidth, box.width(), maxDiameter, periodic),
                 axisSlack(grid.rows, grid.cellHeight, box.height(), maxDiameter, periodic));

@@ -78,6 +78,11 @@ final class FastRun {
     /** Where checkpoints go (null: none). */
     private final Checkpoints checkpoints;
     private static final String STATE_TAG = "fast/1";
+    /** A sheared box's thermostat temperature (0: none), its rescalings and the energy they took out. */
+    private final double thermostat;
+    private long rescalings;
+    private double energyRemoved;
+
     /** A run with neighbour lists saves them too. */
     private static final String LISTS_STATE_TAG = "fast/lists/1";
 
@@ -108,6 +113,7 @@ final class FastRun {
         this.samples = SampleSchedule.of(scene, options);
         this.checkpoints = options.checkpoints();
         this.agenda = RunAgenda.inline(until, samples, checkpoints, options.progress());
+        this.thermostat = scene.box().thermostat();
     }
 
     RunResult run() {
@@ -153,8 +159,13 @@ final class FastRun {
         }
         queue.restore(in);
         motion.restoreRestCounts(in);
+        if (thermostat > 0) {
+            rescalings = in.getLong();
+            energyRemoved = in.getDouble();
+        }
         in.end();
         agenda.resumeAt(time, epoch, resyncAt);
+        table.boundary.anchor(epoch);
         long before = pairCollisions + wallCollisions;
         return finish(started).resumedAfter(before);
     }
@@ -174,6 +185,9 @@ final class FastRun {
         }
         queue.save(out);
         motion.saveRestCounts(out);
+        if (thermostat > 0) {
+            out.putLong(rescalings).putDouble(energyRemoved);
+        }
         checkpoints.save(time, out.bytes());
     }
 
@@ -205,6 +219,9 @@ final class FastRun {
             counters.put(Counter.SLEEPS.key, motion.sleeps());
             counters.put(Counter.WAKES.key, motion.wakes());
         }
+        if (thermostat > 0) {
+            counters.put(Counter.RESCALINGS.key, rescalings);
+        }
         return RunResult.of("fast", true, out, until)
                 .collisions(step.pairCollisions(), step.wallCollisions())
                 .events(step.events())
@@ -214,6 +231,7 @@ final class FastRun {
                 .wallSeconds(seconds)
                 .counters(Map.copyOf(counters))
                 .energyPutToRest(motion.energyPutToRest())
+                .energyRemoved(energyRemoved)
                 .build();
     }
 
@@ -286,6 +304,7 @@ final class FastRun {
             resyncs++;
             motion.rebase(now, null, n);
             agenda.rebased(agenda.epoch() + now, agenda.resyncLocal());
+            table.boundary.anchor(agenda.epoch());
         }
         replan();
     }
@@ -295,9 +314,29 @@ final class FastRun {
      * Events at exactly a sample's time come after it; the sample at {@code until} is the final state.
      */
     private void sample() {
-        motion.stateAt(samples.state(), 0, n, samples.next() - agenda.epoch());
+        double time = samples.next();
+        motion.stateAt(samples.state(), 0, n, time - agenda.epoch());
         samples.emit(virial.total());
         agenda.sampled();
+        if (thermostat > 0 && time < until) {
+            rescale(time - agenda.epoch());
+        }
+    }
+
+    /**
+     * The sheared box's thermostat after the sample at local {@code now}: every disc advanced there
+     * and time re-anchored (as a resync does), the peculiar velocities rescaled to the thermostat's
+     * temperature ({@link DiscMotion#rescalePeculiar}), every disc predicted again and the calendar
+     * rebuilt. The sample sees the state before; the sample at until is not followed by one.
+     */
+    private void rescale(double now) {
+        motion.rebase(now, null, n);
+        agenda.rebased(agenda.epoch() + now, agenda.resyncLocal());
+        table.boundary.anchor(agenda.epoch());
+        energyRemoved += motion.rescalePeculiar(scene.box().shearRate(), thermostat);
+        rescalings++;
+        table.predictFirstEvents(i -> step.predictFull(i, 0));
+        replan();
     }
 
     /** Sizes the calendar from the mean event delay (trimmed of far outliers) and rebuilds it at local 0. */

@@ -91,11 +91,13 @@ public sealed class CellPredictor permits GrowingPredictor {
     private final boolean[] edgeRow;
 
     /** Cells a border cell's {@link #scan} visits (row-major index) and the image shift of their discs. */
-    private final int[] visitCell = new int[9];
+    private final int[] visitCell;
     /** The first disc of each cell a {@link #scan} visits. */
-    private final int[] heads = new int[9];
-    private final double[] visitShiftX = new double[9];
-    private final double[] visitShiftY = new double[9];
+    private final int[] heads;
+    private final double[] visitShiftX;
+    private final double[] visitShiftY;
+    /** Lees-Edwards boundaries: across the top and bottom a border cell sees the whole row ({@link DiscTable#slidingRows}). */
+    private final boolean slidingRows;
     /** Earliest event found so far by the prediction under way, and its candidate code. */
     double found;
     int foundP;
@@ -151,6 +153,13 @@ public sealed class CellPredictor permits GrowingPredictor {
         this.walls = table.walls;
         this.around = table.around;
         this.ahead = table.ahead;
+        this.slidingRows = table.slidingRows;
+        // A border cell visits 9 cells, or with sliding rows 3 in its own row and whole rows across.
+        int visits = slidingRows ? 3 + 2 * Math.max(3, cols) : 9;
+        this.visitCell = new int[visits];
+        this.heads = new int[visits];
+        this.visitShiftX = new double[visits];
+        this.visitShiftY = new double[visits];
         this.table = table;
         this.colBlock = filter == null ? null : filter.colBlock();
         this.rowBlock = filter == null ? null : filter.rowBlock();
@@ -306,6 +315,13 @@ public sealed class CellPredictor permits GrowingPredictor {
         } else {
             int m = 0;
             for (int dr = -1; dr <= 1; dr++) {
+                if (slidingRows && (row + dr < 0 || row + dr >= rows)) {
+                    // The row across the top or bottom slides: every cell of it may hold a neighbour.
+                    for (int c = 0; c < cols; c++) {
+                        m = visit(c, row + dr, m);
+                    }
+                    continue;
+                }
                 for (int dc = -1; dc <= 1; dc++) {
                     m = visit(col + dc, row + dr, m);
                 }

@@ -23,6 +23,7 @@ import carom.core.engine.StallGuard;
 import carom.core.observe.CollisionObserver;
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
+import carom.core.physics.LeesEdwards;
 import carom.core.physics.PairLaw;
 import carom.core.physics.Restitution;
 import carom.core.scene.Scene;
@@ -60,6 +61,8 @@ public sealed class DiscMotion permits GrowingMotion {
     private final double width;
     private final double height;
     private final boolean straight;
+    /** Lees-Edwards boundaries: crossings through the top and bottom slide the disc ({@link DiscTable#slidingRows}). */
+    private final boolean slidingRows;
     private final Flight flight;
     final Boundary boundary;
     final Restitution restitution;
@@ -117,6 +120,7 @@ public sealed class DiscMotion permits GrowingMotion {
         this.width = table.width;
         this.height = table.height;
         this.straight = table.straight;
+        this.slidingRows = table.slidingRows;
         this.flight = table.flight;
         this.boundary = table.boundary;
         this.restitution = table.restitution;
@@ -200,8 +204,9 @@ public sealed class DiscMotion permits GrowingMotion {
     private void tellPair(int a, int b, double abs, double virial) {
         int at = a * stride;
         int bt = b * stride;
-        double dx = boundary.separationX(rec[bt + X] - rec[at + X]);
-        double dy = boundary.separationY(rec[bt + Y] - rec[at + Y]);
+        double rawDy = rec[bt + Y] - rec[at + Y];
+        double dx = boundary.imageSeparationX(rec[bt + X] - rec[at + X], rawDy, rec[at + T]);
+        double dy = boundary.separationY(rawDy);
         double dist = Math.sqrt(dx * dx + dy * dy);
         collisions.pair(abs, sceneIds[a], sceneIds[b], dx, dy, dx / dist, dy / dist, virial / dist);
     }
@@ -212,8 +217,9 @@ public sealed class DiscMotion permits GrowingMotion {
         advance(b, now);
         int at = a * stride;
         int bt = b * stride;
-        double dx = boundary.separationX(rec[bt + X] - rec[at + X]);
-        double dy = boundary.separationY(rec[bt + Y] - rec[at + Y]);
+        double rawDy = rec[bt + Y] - rec[at + Y];
+        double dx = boundary.imageSeparationX(rec[bt + X] - rec[at + X], rawDy, now);
+        double dy = boundary.separationY(rawDy);
         double e = restitution.pair(a, b, abs);
         boolean aMobile = invMass(a) > 0;
         boolean bMobile = invMass(b) > 0;
@@ -234,7 +240,8 @@ public sealed class DiscMotion permits GrowingMotion {
             }
         }
         // On the records, not through the pair window: no copies in and out at every collision.
-        double w = PairLaw.collide(rec, at + VX, bt + VX, rec, at + VY, bt + VY, invMass(a), invMass(b), dx, dy, e);
+        double w = PairLaw.collide(rec, at + VX, bt + VX, rec, at + VY, bt + VY, invMass(a), invMass(b), dx, dy,
+                boundary.imageVelocityX(rawDy), e);
         if (aMobile) {
             restitution.collided(a, abs);
             ir[a * IS + COUNT]++;
@@ -353,6 +360,46 @@ public sealed class DiscMotion permits GrowingMotion {
     }
 
     /**
+     * The thermostat of a sheared box: every disc at one clock, their peculiar velocities (vx less
+     * {@code shearRate}·y, and vy) scaled so that the mobile discs' peculiar kinetic energy is
+     * {@code mobile}·{@code kT}; every trajectory changed, so every prediction is stale. Returns the
+     * kinetic energy taken out (in the box's frame). Nothing changes without peculiar motion.
+     */
+    public double rescalePeculiar(double shearRate, double kT) {
+        double peculiar = 0;
+        double frame = 0;
+        int mobile = 0;
+        for (int i = 0; i < table.n; i++) {
+            double im = invMass(i);
+            if (im > 0) {
+                int at = i * stride;
+                double cx = rec[at + VX] - shearRate * rec[at + Y];
+                double cy = rec[at + VY];
+                peculiar += 0.5 * (cx * cx + cy * cy) / im;
+                frame += 0.5 * (rec[at + VX] * rec[at + VX] + cy * cy) / im;
+                mobile++;
+            }
+        }
+        if (!(peculiar > 0)) {
+            return 0;
+        }
+        double scale = Math.sqrt(mobile * kT / peculiar);
+        double after = 0;
+        for (int i = 0; i < table.n; i++) {
+            double im = invMass(i);
+            if (im > 0) {
+                int at = i * stride;
+                double streaming = shearRate * rec[at + Y];
+                rec[at + VX] = streaming + scale * (rec[at + VX] - streaming);
+                rec[at + VY] *= scale;
+                after += 0.5 * (rec[at + VX] * rec[at + VX] + rec[at + VY] * rec[at + VY]) / im;
+                ir[i * IS + COUNT]++;
+            }
+        }
+        return frame - after;
+    }
+
+    /**
      * Every disc at local {@code local} (absolute {@code until}), in original id order, periodic
      * positions wrapped into the box (serial: advances every disc).
      */
@@ -459,17 +506,34 @@ public sealed class DiscMotion permits GrowingMotion {
                 if (--row < 0) {
                     row = rows - 1;
                     rec[i * stride + Y] += height;
+                    col = slidingRows ? slide(i, -1) : col;
                 }
             }
             default -> {
                 if (++row == rows) {
                     row = 0;
                     rec[i * stride + Y] -= height;
+                    col = slidingRows ? slide(i, 1) : col;
                 }
             }
         }
         relink(i, old, col, row);
         return row << AXIS_BITS | col;
+    }
+
+    /**
+     * Disc i (advanced to its clock) has just passed {@code passed} images up (1 out through the top, -1
+     * through the bottom) of a box whose images slide: its x moves back by the offset, its x velocity
+     * by the image speed (what the boundary's {@link Boundary#wrap} does to a disc outside), and its
+     * trajectory changed, so predictions against it are stale. Returns its new column, from its wrapped x.
+     */
+    private int slide(int i, int passed) {
+        int at = i * stride;
+        LeesEdwards le = (LeesEdwards) boundary;
+        rec[at + X] = boundary.wrapX(rec[at + X] - passed * le.offset(rec[at + T]));
+        rec[at + VX] -= passed * le.imageSpeed;
+        ir[i * IS + COUNT]++;
+        return table.colOf(rec[at + X]);
     }
 
     /**

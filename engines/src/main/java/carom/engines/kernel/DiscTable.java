@@ -65,6 +65,13 @@ public final class DiscTable {
     public final Flight flight;
     public final Boundary boundary;
     public final boolean periodic;
+    /**
+     * Lees-Edwards boundaries (the images above and below slide): the top and bottom rows of cells see
+     * each other whole ({@link CellPredictor}), a crossing re-predicts in full, a crossing through the
+     * top or bottom shifts the disc and changes its x velocity ({@link DiscMotion}), and contacts go
+     * through the boundary's law ({@link Boundary#timeToContact}), never {@link #straightImages}.
+     */
+    public final boolean slidingRows;
     /** Grid columns and rows: cell (col, row) is {@code row * cols + col}. */
     public final int cols;
     public final int rows;
@@ -155,6 +162,8 @@ public final class DiscTable {
         this.boundary = physics.boundary;
         this.walls = boundary instanceof Boundary.Walls w ? w : null;
         this.periodic = walls == null;
+        // From the box, not by a type test on the boundary: a run without shear never loads LeesEdwards.
+        this.slidingRows = scene.box().sheared();
         this.restitution = physics.restitution;
         this.acceleration = flight.maxAcceleration();
         if (!(cellFactor >= 1) || Double.isInfinite(cellFactor)) {
@@ -181,8 +190,8 @@ public final class DiscTable {
         this.recheckX = periodic && cols < 4 ? 0.5 * (0.5 * width - maxDiameter) : 0;
         this.recheckY = periodic && rows < 4 ? 0.5 * (0.5 * height - maxDiameter) : 0;
         this.straight = flight instanceof Flight.Straight;
-        this.straightImages = straight && recheckX == 0 && recheckY == 0;
-        this.fullOnCross = (acceleration > 0 && scene.hasFixedDiscs()) || recheckX > 0 || recheckY > 0;
+        this.straightImages = straight && recheckX == 0 && recheckY == 0 && !slidingRows;
+        this.fullOnCross = (acceleration > 0 && scene.hasFixedDiscs()) || recheckX > 0 || recheckY > 0 || slidingRows;
         this.cellHead = new int[cols * rows];
         this.around = new int[] {-cols - 1, -cols, -cols + 1, -1, 0, 1, cols - 1, cols, cols + 1};
         this.ahead = new int[5][];

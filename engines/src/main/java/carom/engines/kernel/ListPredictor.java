@@ -88,7 +88,7 @@ public final class ListPredictor {
     public ListPredictor(DiscMotion motion, double skin, double largestDiameter) {
         DiscTable t = motion.table;
         if (!t.listsAllowed()) {
-            throw new BadInputException("--option skin: neighbour lists need straight flight (no gravity, no growth) and"
+            throw new BadInputException("--option skin: neighbour lists need straight flight (no gravity, no growth, no sheared box) and"
                     + " at least 4 cells of a diameter plus the skin along each periodic axis");
         }
         double need = largestDiameter + skin;

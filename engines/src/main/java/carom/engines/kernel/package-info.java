@@ -99,7 +99,9 @@
  *       planned (before, the first predictions set it).</li>
  *   <li>Periodic positions stay within rounding of their logical cell: at a crossing through the box
  *       edge the position moves by exactly one box length, never by {@code wrapX}, whose rounding
- *       could put the disc on the wrong side of its cell.</li>
+ *       could put the disc on the wrong side of its cell. With sliding images (Lees-Edwards) a crossing
+ *       through the top or bottom also moves x back by the offset, wrapped, and takes the new column
+ *       from it; the x velocity changes there, so the disc's counter is bumped.</li>
  *   <li>Threads: the table is shared; a thread changes only the discs it owns, through its own
  *       {@code DiscMotion}, {@code CellPredictor} and {@code CalendarQueue} (their scratch is
  *       per thread); ownership changes only while the other threads wait.</li>

@@ -23,7 +23,7 @@ public final class SerialEngine implements Engine {
     /** What this engine is and can do. */
     public static final EngineSpec SPEC = EngineSpec.exact("serial",
             "the thesis's single-thread time-stepped grid algorithm with its six-linked bucket queue (reference)")
-            .withCapabilities(Capability.CHECKPOINTS, Capability.COLLISION_OBSERVERS)
+            .withCapabilities(Capability.CHECKPOINTS, Capability.COLLISION_OBSERVERS, Capability.LEES_EDWARDS)
             .withTunables(List.of(StepGridTunables.CELL_FACTOR, Tunables.AUDIT_ENERGY))
             .withCounters(List.of(StepGridCounters.EARLY_STEP_ENDS));
 

@@ -231,6 +231,7 @@ final class SerialRun {
     /** Runs one step from local time 0 (absolute {@code epoch}); returns its length. */
     private double step(double epoch, double remaining) {
         steps++;
+        boundary.anchor(epoch);
         Object stepEvent = EngineEvents.stepStarted();
         long collisionsBefore = pairCollisions + wallCollisions;
         stepEnd = stepGrid.stepLength(d.maxSpeed(), acceleration, remaining);
@@ -247,8 +248,7 @@ final class SerialRun {
         EngineEvents.stepFinished(stepEvent, "serial", steps, epoch, epoch + end, pairCollisions + wallCollisions - collisionsBefore);
         for (int i = 0; i < n; i++) {
             flight.advance(d, i, end);
-            d.x[i] = boundary.wrapX(d.x[i]);
-            d.y[i] = boundary.wrapY(d.y[i]);
+            boundary.wrap(d, i, end);
             d.t[i] = 0;
         }
         return end;
@@ -301,7 +301,7 @@ final class SerialRun {
         boolean bMobile = bWasMobile || d.invMass[b] > 0;
         pairCollisions++;
         if (collisions != null) {
-            tellPair(epoch + now, a, b, w);
+            tellPair(epoch + now, now, a, b, w);
         }
         if (aMobile) {
             restitution.collided(a, epoch + now);
@@ -341,9 +341,10 @@ final class SerialRun {
      * Tells the observer of the pair collision just resolved (both discs at the contact): the impulse
      * is the virial over the distance, 0 for a disc that came to rest on the contact.
      */
-    private void tellPair(double time, int a, int b, double virial) {
-        double dx = boundary.separationX(d.x[b] - d.x[a]);
-        double dy = boundary.separationY(d.y[b] - d.y[a]);
+    private void tellPair(double time, double now, int a, int b, double virial) {
+        double rawDy = d.y[b] - d.y[a];
+        double dx = boundary.imageSeparationX(d.x[b] - d.x[a], rawDy, now);
+        double dy = boundary.separationY(rawDy);
         double dist = Math.sqrt(dx * dx + dy * dy);
         collisions.pair(time, a, b, dx, dy, dx / dist, dy / dist, virial / dist);
     }

@@ -27,6 +27,11 @@ import carom.core.state.Discs;
  * never looks further ahead than a pair could move before another image might come into contact; when
  * nothing happens within that window it advances every disc to its end and looks again.
  *
+ * <p>Lees-Edwards boxes ({@link Sliding}): the judge tests every image a pair can meet before the end,
+ * three rows (j itself, its image above shifted by the offset with the image speed added to its x
+ * velocity, its image below) of x images one width apart, without the boundary law the engines use;
+ * a disc that leaves through the top or bottom re-enters with the shift and the change of velocity.
+ *
  * <p>Resting contact: under gravity a disc that comes to rest on a wall, a fixed disc or a sleeping
  * disc ({@link RestRule}, the law the engines share) falls asleep: velocity 0, inverse mass 0 (so the
  * laws above treat it as fixed) until a disc that stays awake hits it, which wakes it. The judge keeps
@@ -55,6 +60,7 @@ public final class BruteForceReference {
         double gx = scene.effects().gravityX();
         double gy = scene.effects().gravityY();
         double[] awakeInvMass = d.invMass.clone();
+        Sliding sliding = scene.box().sheared() ? new Sliding(scene, until) : null;
         long stuckLimit = Math.max(100_000L, 10L * d.n);
         // Periodic: a pair can meet another image than its nearest one only after their separation changed
         // by at least half the box minus the contact distance along some axis.
@@ -84,7 +90,8 @@ public final class BruteForceReference {
                     }
                 }
                 for (int j = i + 1; j < d.n; j++) {
-                    double t = flight.timeToContact(d, i, j, now, until, boundary);
+                    double t = sliding != null ? sliding.timeToContact(d, i, j, now)
+                            : flight.timeToContact(d, i, j, now, until, boundary);
                     if (t < best) {
                         best = t;
                         bestA = i;
@@ -99,18 +106,18 @@ public final class BruteForceReference {
                 double window = imageWindow(d, periodicLimit, acceleration);
                 if (next > now + window && now + window < until) {
                     now += window;
-                    advanceAll(d, flight, boundary, now);
+                    advanceAll(d, flight, boundary, sliding, now);
                     events--;
                     continue;
                 }
             }
             if (bestA < 0 || next > until) {
-                advanceAll(d, flight, boundary, until);
+                advanceAll(d, flight, boundary, sliding, until);
                 // Sleeping discs end at rest, with their own mass.
                 System.arraycopy(awakeInvMass, 0, d.invMass, 0, d.n);
                 return new Result(d, pairs, wallHits);
             }
-            advanceAll(d, flight, boundary, next);
+            advanceAll(d, flight, boundary, sliding, next);
             now = next;
             if (now != lastTime) {
                 lastTime = now;
@@ -125,6 +132,13 @@ public final class BruteForceReference {
                 int b = bestB;
                 double dx = boundary.separationX(d.x[b] - d.x[a]);
                 double dy = boundary.separationY(d.y[b] - d.y[a]);
+                double imageVx = 0;
+                if (sliding != null) {
+                    int row = sliding.touchingRow(d, a, b, now);
+                    dx = sliding.imageDx(d, a, b, row, now);
+                    dy = d.y[b] + row * sliding.height - d.y[a];
+                    imageVx = row * sliding.imageSpeed;
+                }
                 double e = restitution.pair(a, b, now);
                 boolean aMobile = d.invMass[a] > 0;
                 boolean bMobile = d.invMass[b] > 0;
@@ -145,7 +159,7 @@ public final class BruteForceReference {
                         bMobile = true;
                     }
                 }
-                PairLaw.collide(d, a, b, dx, dy, e);
+                PairLaw.collide(d.vx, a, b, d.vy, a, b, d.invMass[a], d.invMass[b], dx, dy, imageVx, e);
                 if (aMobile) {
                     restitution.collided(a, now);
                 }
@@ -187,12 +201,90 @@ public final class BruteForceReference {
         d.invMass[i] = 0;
     }
 
-    /** Every disc to absolute time {@code time} (its clock becomes {@code time}), periodic positions wrapped. */
-    private static void advanceAll(Discs d, Flight flight, Boundary boundary, double time) {
+    /**
+     * Every disc to absolute time {@code time} (its clock becomes {@code time}), periodic positions
+     * wrapped (in a Lees-Edwards box, with the shift and velocity change of the top and bottom).
+     */
+    private static void advanceAll(Discs d, Flight flight, Boundary boundary, Sliding sliding, double time) {
         for (int i = 0; i < d.n; i++) {
             flight.advance(d, i, time);
+            if (sliding != null) {
+                sliding.reenter(d, i, time);
+            }
             d.x[i] = boundary.wrapX(d.x[i]);
             d.y[i] = boundary.wrapY(d.y[i]);
+        }
+    }
+
+    /**
+     * The judge's own Lees-Edwards images: the image above j is at (xj + s t, yj + H) with x velocity
+     * vxj + s, s = shearRate * height, at absolute time t (no reduction: the judge's runs are short);
+     * the image below at minus that.
+     */
+    private static final class Sliding {
+        final double width;
+        final double height;
+        final double imageSpeed;
+        final double until;
+
+        Sliding(Scene scene, double until) {
+            this.width = scene.box().width();
+            this.height = scene.box().height();
+            this.imageSpeed = scene.box().shearRate() * height;
+            this.until = until;
+        }
+
+        /** The earliest contact of i with any image of j before the end, from absolute time now. */
+        double timeToContact(Discs d, int i, int j, double now) {
+            double best = Double.POSITIVE_INFINITY;
+            double sigma = d.radius[i] + d.radius[j];
+            double dvy = d.vy[j] - d.vy[i];
+            for (int row = -1; row <= 1; row++) {
+                double dx = d.x[j] + row * imageSpeed * now - d.x[i];
+                double dy = d.y[j] + row * height - d.y[i];
+                double dvx = d.vx[j] + row * imageSpeed - d.vx[i];
+                double reach = Math.abs(dvx) * (until - now) + sigma;
+                long lo = (long) Math.floor((-dx - reach) / width) - 1;
+                long hi = (long) Math.ceil((-dx + reach) / width) + 1;
+                for (long m = lo; m <= hi; m++) {
+                    best = Math.min(best, PairLaw.timeToContact(dx + m * width, dy, dvx, dvy, sigma));
+                }
+            }
+            return best;
+        }
+
+        /** The y image row of j that touches i now (the nearest one). */
+        int touchingRow(Discs d, int a, int b, double now) {
+            int row = 0;
+            double nearest = Double.POSITIVE_INFINITY;
+            for (int r = -1; r <= 1; r++) {
+                double dx = imageDx(d, a, b, r, now);
+                double dy = d.y[b] + r * height - d.y[a];
+                if (dx * dx + dy * dy < nearest) {
+                    nearest = dx * dx + dy * dy;
+                    row = r;
+                }
+            }
+            return row;
+        }
+
+        /** The x separation from a to the nearest x image of b's image in {@code row}. */
+        double imageDx(Discs d, int a, int b, int row, double now) {
+            double dx = d.x[b] + row * imageSpeed * now - d.x[a];
+            return dx - width * Math.rint(dx / width);
+        }
+
+        /** Disc i out through the top comes back at the bottom shifted back with vx - s, and the reverse. */
+        void reenter(Discs d, int i, double now) {
+            if (d.y[i] >= height) {
+                d.y[i] -= height;
+                d.x[i] -= imageSpeed * now;
+                d.vx[i] -= imageSpeed;
+            } else if (d.y[i] < 0) {
+                d.y[i] += height;
+                d.x[i] += imageSpeed * now;
+                d.vx[i] += imageSpeed;
+            }
         }
     }
 

@@ -39,4 +39,8 @@ class CatalogContractsTest {
     @Nested
     class Samples extends ExactEngineSamplesContract {
     }
+
+    @Nested
+    class ShearAgainstReference extends ExactEngineShearAgainstReferenceContract {
+    }
 }

@@ -13,7 +13,8 @@ public enum Contract {
     EFFECTS_AGAINST_REFERENCE(EngineSpec::exact),
     EFFECTS(EngineSpec::exact),
     RESTING_CONTACT(EngineSpec::exact),
-    SAMPLES(spec -> spec.exact() && spec.can(Capability.SAMPLES));
+    SAMPLES(spec -> spec.exact() && spec.can(Capability.SAMPLES)),
+    SHEAR_AGAINST_REFERENCE(spec -> spec.exact() && spec.can(Capability.LEES_EDWARDS));
 
     private final Predicate<EngineSpec> appliesTo;
 

@@ -35,9 +35,10 @@ public abstract class ExactEngineCheckpointContract extends VariantContract {
         return RunOptions.until(until);
     }
 
-    /** Whether the variant runs this scene at all (an engine that refuses some effects skips them). */
+    /** Whether the variant runs this scene at all (an engine that refuses some effects, or shear, skips them). */
     private boolean runs(Scene scene) {
-        return variant().scenes().test(scene);
+        return variant().scenes().test(scene)
+                && (!scene.box().sheared() || engine().spec().can(carom.core.engine.Capability.LEES_EDWARDS));
     }
 
     /** A saved checkpoint. */
@@ -76,10 +77,11 @@ public abstract class ExactEngineCheckpointContract extends VariantContract {
         return LongStream.range(1, 7).boxed();
     }
 
-    /** Small scenes: plain, with effects (gravity, restitution, TC, pegs), dense periodic and walled, mixed masses. */
+    /** Small scenes: plain, with effects (gravity, restitution, TC, pegs), dense periodic and walled, mixed masses, sheared. */
     static List<Scene> scenes(long seed) {
         return List.of(RandomScenes.small(seed), RandomScenes.effects(seed),
-                RandomScenes.dense(300, 0.6, seed % 2 == 0, seed, 1.0), RandomScenes.lightAmongHeavy(seed));
+                RandomScenes.dense(300, 0.6, seed % 2 == 0, seed, 1.0), RandomScenes.lightAmongHeavy(seed),
+                RandomScenes.sheared(seed));
     }
 
     @ParameterizedTest(name = "{0}, seed {1}")

@@ -134,6 +134,56 @@ public final class RandomScenes {
     }
 
     /**
+     * Seeded random small scenes in a Lees-Edwards box: six to thirty discs of two species, shear rates
+     * from -1.5 to 1.5 (some runs slide the images by more than a width), pair restitution 1 in half of
+     * them and in [0.6, 1) otherwise (with the TC model in a quarter), some boxes only four diameters
+     * high, velocities up to 2 per component, a thermostat at kT = 1 in a third of them (it acts only at
+     * samples, so not in a run without). Horizons of 1 to 2.
+     */
+    public static Scene sheared(long seed) {
+        SplittableRandom random = new SplittableRandom(seed);
+        double width = 5 + 6 * random.nextDouble();
+        double height = random.nextInt(4) == 0 ? 4.2 + random.nextDouble() : 5 + 6 * random.nextDouble();
+        double[] radii = {0.2 + 0.1 * random.nextDouble(), 0.35 + 0.15 * random.nextDouble()};
+        double shearRate = 3 * (random.nextDouble() - 0.5);
+        double restitution = random.nextBoolean() ? 1 : 0.6 + 0.4 * random.nextDouble();
+        double tc = random.nextInt(4) == 0 ? 1e-3 : 0;
+        SceneBuilder b = SceneBuilder.create(String.format("sheared-%d-rate%.2f-e%.2f-tc%s", seed, shearRate, restitution, tc))
+                .box(width, height, BoundaryKind.LEES_EDWARDS, shearRate, seed % 3 == 0 ? 1.0 : 0)
+                .species(Species.mobile("small", radii[0], 1.0))
+                .species(Species.mobile("large", radii[1], 1 + 3 * random.nextDouble()))
+                .effects(Effects.NONE.withRestitution(restitution, 1).withTc(tc));
+        int count = 6 + random.nextInt(25);
+        double[] xs = new double[count];
+        double[] ys = new double[count];
+        double[] rs = new double[count];
+        int placed = 0;
+        for (int attempt = 0; placed < count && attempt < 10_000; attempt++) {
+            int species = random.nextInt(2);
+            double r = radii[species];
+            double x = width * random.nextDouble();
+            double y = height * random.nextDouble();
+            boolean free = true;
+            for (int k = 0; k < placed && free; k++) {
+                double dx = x - xs[k];
+                double dy = y - ys[k];
+                dx -= width * Math.rint(dx / width);
+                dy -= height * Math.rint(dy / height);
+                free = dx * dx + dy * dy > (r + rs[k] + 0.01) * (r + rs[k] + 0.01);
+            }
+            if (!free) {
+                continue;
+            }
+            xs[placed] = x;
+            ys[placed] = y;
+            rs[placed] = r;
+            placed++;
+            b.disc(species, x, y, 2 * (2 * random.nextDouble() - 1), 2 * (2 * random.nextDouble() - 1));
+        }
+        return b.until(1 + random.nextDouble()).build();
+    }
+
+    /**
      * {@code n} equal discs (radius 0.5, mass 1) at packing fraction {@code phi} in a square box, on
      * SPEC's lattice with jitter 0.5 and Maxwell velocities at temperature 1 (kT = 1 per disc).
      * {@code n} should be a perfect square so the lattice fits up to phi = pi/4 (0.785).
