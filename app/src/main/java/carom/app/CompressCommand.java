@@ -176,9 +176,7 @@ final class CompressCommand implements Callable<Integer> {
     private static RunResult rescaled(RunResult r, double kinetic) {
         Discs d = r.finalState();
         GrowthStages.rescale(d, kinetic);
-        return new RunResult(r.engine(), r.exact(), d, r.until(), r.pairCollisions(), r.wallCollisions(), r.events(),
-                r.kineticEnergyStart(), Observables.kineticEnergy(d), r.momentumStart(), Observables.momentum(d),
-                r.pressure(), r.causalityViolations(), r.wallSeconds(), r.counters(), r.energyPutToRest());
+        return r.withFinalState(d, Observables.kineticEnergy(d), Observables.momentum(d));
     }
 
     /** Bad input unless {@code output} (if given) can be written and is not the scene file. */

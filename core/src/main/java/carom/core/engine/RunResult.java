@@ -154,6 +154,13 @@ public record RunResult(String engine, boolean exact, Discs finalState, double u
         return wallSeconds > 0 ? (collisions() - counter(Counter.COLLISIONS_BEFORE_RESUME, 0)) / wallSeconds : 0;
     }
 
+    /** This result with another final state (the same run's, changed afterwards: a rescaling), its kinetic energy and momentum. */
+    public RunResult withFinalState(Discs state, double kineticEnergy, double[] momentum) {
+        return new RunResult(engine, exact, state, until, pairCollisions, wallCollisions, events, kineticEnergyStart,
+                kineticEnergy, momentumStart, momentum, pressure, causalityViolations, wallSeconds, counters,
+                energyPutToRest, energyRemoved);
+    }
+
     /** This result of a run resumed from a checkpoint taken after {@code collisionsBefore} collisions. */
     public RunResult resumedAfter(long collisionsBefore) {
         Map<String, Long> more = new java.util.HashMap<>(counters == null ? Map.of() : counters);
