@@ -1,6 +1,7 @@
 package carom.core.observe.sample;
 
 import java.util.Arrays;
+import java.util.function.IntToDoubleFunction;
 
 /**
  * The mean of a vector of values over samples, with each component's standard error from block
@@ -95,19 +96,28 @@ final class BlockAverages {
 
     /** The standard error of {@link #mean}(k) from the complete blocks (NaN with fewer than two). */
     double error(int k) {
-        if (complete < 2) {
+        return standardError(complete, b -> blocks[b * width + k] / blockLength);
+    }
+
+    /**
+     * The standard error of the mean of {@code count} block means ({@code blockMean} of 0 to count - 1):
+     * their standard deviation over the square root of their number; NaN with fewer than two. Every
+     * observable's error bar is this formula, over blocks it chooses.
+     */
+    static double standardError(int count, IntToDoubleFunction blockMean) {
+        if (count < 2) {
             return Double.NaN;
         }
         double sum = 0;
         double sumSquares = 0;
-        for (int b = 0; b < complete; b++) {
-            double m = blocks[b * width + k] / blockLength;
+        for (int b = 0; b < count; b++) {
+            double m = blockMean.applyAsDouble(b);
             sum += m;
             sumSquares += m * m;
         }
-        double mean = sum / complete;
-        double variance = Math.max(0, (sumSquares - complete * mean * mean) / (complete - 1));
-        return Math.sqrt(variance / complete);
+        double mean = sum / count;
+        double variance = Math.max(0, (sumSquares - count * mean * mean) / (count - 1));
+        return Math.sqrt(variance / count);
     }
 
     /** Appends this to a checkpoint's state. */

@@ -136,19 +136,7 @@ public final class CollisionRates implements SampledObservable, CollisionObserve
     public double pairRateError() {
         int m = pairs.size();
         int b = blocks();
-        if (b < 2) {
-            return Double.NaN;
-        }
-        double sum = 0;
-        double sumSquares = 0;
-        for (int k = 0; k < b; k++) {
-            double rate = blockRate((int) ((long) k * m / b), (int) ((long) (k + 1) * m / b));
-            sum += rate;
-            sumSquares += rate * rate;
-        }
-        double mean = sum / b;
-        double variance = Math.max(0, (sumSquares - b * mean * mean) / (b - 1));
-        return Math.sqrt(variance / b);
+        return BlockAverages.standardError(b, k -> blockRate((int) ((long) k * m / b), (int) ((long) (k + 1) * m / b)));
     }
 
     /** The pair rate over intervals [from, to). */

@@ -132,24 +132,15 @@ public final class PressureSeries implements SampledObservable {
         double[] finite = java.util.Arrays.stream(z.toArray()).filter(Double::isFinite).toArray();
         int m = finite.length;
         int b = blocks();
-        if (b < 2) {
-            return Double.NaN;
-        }
-        double sum = 0;
-        double sumSquares = 0;
-        for (int k = 0; k < b; k++) {
+        return BlockAverages.standardError(b, k -> {
             int from = (int) ((long) k * m / b);
             int to = (int) ((long) (k + 1) * m / b);
             double block = 0;
             for (int i = from; i < to; i++) {
                 block += finite[i];
             }
-            block /= to - from;
-            sum += block;
-            sumSquares += block * block;
-        }
-        double mean = sum / b;
-        return Math.sqrt(Math.max(0, (sumSquares - b * mean * mean) / (b - 1)) / b);
+            return block / (to - from);
+        });
     }
 
     /** Virial reported since the latest sample. */

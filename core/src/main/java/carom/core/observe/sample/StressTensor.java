@@ -157,19 +157,9 @@ public final class StressTensor implements SampledObservable, CollisionObserver 
         int m = starts.size();
         int b = blocks();
         for (int c = 0; c < 3; c++) {
-            if (b < 2) {
-                error[c] = Double.NaN;
-                continue;
-            }
-            double sum = 0;
-            double sumSquares = 0;
-            for (int k = 0; k < b; k++) {
-                double v = blockMean(c, (int) ((long) k * m / b), (int) ((long) (k + 1) * m / b));
-                sum += v;
-                sumSquares += v * v;
-            }
-            double mean = sum / b;
-            error[c] = Math.sqrt(Math.max(0, (sumSquares - b * mean * mean) / (b - 1)) / b);
+            int component = c;
+            error[c] = BlockAverages.standardError(b,
+                    k -> blockMean(component, (int) ((long) k * m / b), (int) ((long) (k + 1) * m / b)));
         }
         return error;
     }
