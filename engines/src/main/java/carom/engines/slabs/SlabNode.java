@@ -313,6 +313,7 @@ public final class SlabNode {
         domain.restore(in, savedUntil);
         marks.restore(in);
         in.end();
+        domain.queue.check();
     }
 
     /**
