@@ -64,9 +64,9 @@ import java.util.function.Supplier;
  * coordinator only, like any node.
  *
  * <p>What a node accepts. A run starts with a {@link Host} from a coordinator this node may serve
- * ({@link #create}: the coordinator's own JVM, the one coordinator of a {@code --nodes} worker, or a
- * member of the cluster, reachable and not leaving, for {@code carom node}, and then not while another
- * such coordinator's run is on: a refused one is answered with {@link Failed}); it carries the run's secret number, and from then on the node carries
+ * ({@link #create}: the coordinator's own JVM, the one coordinator of a {@code --nodes} worker, or, for
+ * {@code carom node}, any coordinator while no other that is a member of the cluster, reachable and not
+ * leaving, has a run on: a refused one is answered with {@link Failed}); it carries the run's secret number, and from then on the node carries
  * out only commands sealed with it ({@link ForRun}). Everything else (a command of no run or of
  * another, a message of no kind it knows) is refused: written to standard error (the first
  * {@link #REFUSALS_SHOWN}, then every thousandth) and otherwise ignored. A command of the run is
@@ -123,7 +123,7 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
     /** Node actors this guardian spawned for the current run ({@link Host}). */
     private final java.util.List<ActorRef<NodeCommand>> beside = new java.util.ArrayList<>();
 
-    /** The guardian of a {@code carom node} JVM: serves runs of any coordinator that is a member of the cluster, one at a time. */
+    /** The guardian of a {@code carom node} JVM: serves runs of one coordinator at a time. */
     static Behavior<NodeCommand> create() {
         return guardian(Hosting.CLUSTER_MEMBERS, null);
     }
@@ -361,9 +361,8 @@ final class NodeActor extends AbstractBehavior<NodeCommand> {
                 return at.equals(onlyCoordinator) ? null : "this worker serves the coordinator at " + onlyCoordinator + " only";
             }
             default -> {
-                if (!serving(from)) {
-                    return "not a member of the cluster that is reachable and not leaving";
-                }
+                // Not required to be a member yet: a coordinator that has just joined may not be in this
+                // node's view of the cluster when its Host comes. What keeps strangers out is TLS.
                 if (coordinator != null && !coordinator.equals(from) && serving(coordinator)) {
                     return "the run of " + coordinator + " is on";
                 }
