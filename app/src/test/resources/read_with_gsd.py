@@ -44,6 +44,8 @@ with gsd.hoomd.open(path, "r") as trajectory:
             "image": [int(v) for v in frame.particles.image.ravel()],
             "time": float(frame.log["carom/time"][0]),
             "collisions": int(frame.log["carom/collisions"][0]),
+            # JSON has no NaN: frame 0's Z (no interval ends there) comes as null.
+            "Z": None if np.isnan(frame.log["carom/Z"][0]) else float(frame.log["carom/Z"][0]),
         })
 out["rdf"] = {"r": [float(v) for v in rdf.bin_centers], "g": [float(v) for v in rdf.rdf]}
 out["psi6"] = psi6

@@ -32,12 +32,17 @@ final class CheckpointOptions {
             }
             return;
         }
-        if (every != null) {
-            OptionChecks.positiveFinite("--checkpoint-every", every);
-        }
+        checkInterval();
         if (!engine.spec().can(Capability.CHECKPOINTS)) {
             throw new BadInputException("--checkpoint: engine " + engine.name() + " cannot save and resume a run "
                     + "(engines that can: " + EngineCatalog.namesThatCan(Capability.CHECKPOINTS) + ")");
+        }
+    }
+
+    /** Bad input unless {@code --checkpoint-every}, if given, is a finite number > 0. */
+    void checkInterval() {
+        if (every != null) {
+            OptionChecks.positiveFinite("--checkpoint-every", every);
         }
     }
 

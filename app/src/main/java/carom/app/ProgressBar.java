@@ -15,9 +15,17 @@ import java.util.Locale;
  *
  * <p>{@link #forCount} makes the same bar count units of work instead ({@code 12/30 runs}), with a
  * status line of what is running; {@code carom experiment} uses it.
+ *
+ * <p>When the process's stderr is not a terminal (a batch job, a pipe, a log file), a run's bar prints a
+ * status line instead, every {@value #STATUS_VARIABLE} seconds (default {@value #DEFAULT_STATUS_SECONDS};
+ * 0 for none), {@code progress: t=4.2/10 (42%)  3.1e+05 coll/s  ~12s left}, so that a long job shows
+ * it is alive; the first comes after one period, so short runs print none.
  */
 public final class ProgressBar implements ProgressListener, AutoCloseable {
     static final long DELAY_MILLIS = 2000;
+    /** The environment variable that sets the seconds between status lines on a stderr that is no terminal. */
+    static final String STATUS_VARIABLE = "CAROM_STATUS_EVERY";
+    static final long DEFAULT_STATUS_SECONDS = 10;
     private static final long PERIOD_MILLIS = 200;
     private static final int WIDTH = 30;
 
@@ -37,12 +45,17 @@ public final class ProgressBar implements ProgressListener, AutoCloseable {
     /** Length of what is on screen, to erase it; touched only by the painter until it has stopped. */
     private int drawn;
 
-    private ProgressBar(PrintStream err, double until, String unit, boolean visible) {
+    /** Milliseconds between status lines, or 0 when this bar draws on a terminal (or not at all). */
+    private final long statusMillis;
+
+    private ProgressBar(PrintStream err, double until, String unit, boolean visible, long statusMillis) {
         this.err = err;
         this.until = until;
         this.unit = unit;
-        if (visible) {
-            painter = new Thread(this::paint, "carom-progress");
+        this.statusMillis = statusMillis;
+        if (visible || statusMillis > 0) {
+            Runnable work = visible ? this::paint : this::printStatus;
+            painter = new Thread(work, "carom-progress");
             painter.setDaemon(true);
             painter.start();
         } else {
@@ -51,16 +64,41 @@ public final class ProgressBar implements ProgressListener, AutoCloseable {
     }
 
     /**
-     * A bar that shows when {@code err} is the process's stderr and a terminal; otherwise (tests, pipes,
-     * files) one that only records the time and never draws.
+     * A bar that shows when {@code err} is the process's stderr and a terminal; status lines every
+     * {@value #STATUS_VARIABLE} seconds when it is the process's stderr and no terminal; otherwise (tests)
+     * one that only records the time and never draws.
      */
     public static ProgressBar forRun(PrintStream err, double until) {
-        return new ProgressBar(err, until, null, visibleOn(err));
+        boolean visible = visibleOn(err);
+        return new ProgressBar(err, until, null, visible, visible || err != System.err ? 0 : statusMillis(System.getenv()));
+    }
+
+    /** A run's progress as status lines on {@code err} every {@code periodMillis}, whatever {@code err} is. */
+    static ProgressBar statusLines(PrintStream err, double until, long periodMillis) {
+        return new ProgressBar(err, until, null, false, periodMillis);
+    }
+
+    /**
+     * The period of status lines {@code environment}'s {@value #STATUS_VARIABLE} asks for, in milliseconds (0:
+     * none); the default when it is unset or not a number of seconds >= 0.
+     */
+    static long statusMillis(java.util.Map<String, String> environment) {
+        String value = environment.get(STATUS_VARIABLE);
+        double seconds = DEFAULT_STATUS_SECONDS;
+        if (value != null) {
+            try {
+                double parsed = Double.parseDouble(value.strip());
+                seconds = parsed >= 0 && parsed < 1e9 ? parsed : seconds;
+            } catch (NumberFormatException e) {
+                // the default
+            }
+        }
+        return Math.round(seconds * 1000);
     }
 
     /** A bar counting {@code total} units of work named {@code unit}, shown as {@link #forRun}'s is. */
     public static ProgressBar forCount(PrintStream err, long total, String unit) {
-        return new ProgressBar(err, total, unit, visibleOn(err));
+        return new ProgressBar(err, total, unit, visibleOn(err), 0);
     }
 
     private static boolean visibleOn(PrintStream err) {
@@ -69,7 +107,7 @@ public final class ProgressBar implements ProgressListener, AutoCloseable {
 
     /** Whether this bar draws (stderr is a terminal), so that callers print progress lines otherwise. */
     public boolean visible() {
-        return painter != null;
+        return painter != null && statusMillis == 0;
     }
 
     @Override
@@ -129,6 +167,29 @@ public final class ProgressBar implements ProgressListener, AutoCloseable {
         } catch (InterruptedException e) {
             // close() asks us to stop.
         }
+    }
+
+    /** Status lines, for a stderr that is no terminal: the simulated time, the rate, the time left. */
+    private void printStatus() {
+        try {
+            while (!Thread.currentThread().isInterrupted()) {
+                Thread.sleep(statusMillis);
+                String line = statusLine(time, until, rate(), System.nanoTime() - startNanos);
+                synchronized (this) {
+                    err.print(line + System.lineSeparator());
+                    err.flush();
+                }
+            }
+        } catch (InterruptedException e) {
+            // close() asks us to stop.
+        }
+    }
+
+    /** {@code progress: t=4.2/10 (42%)  3.1e+05 coll/s  ~12s left}. */
+    static String statusLine(double t, double until, String rate, long elapsedNanos) {
+        double fraction = until > 0 ? Math.max(0, Math.min(1, t / until)) : 0;
+        return "progress: t=" + compact(t) + "/" + compact(until) + " (" + (int) Math.floor(100 * fraction) + "%)"
+                + rate + timeLeft(fraction, elapsedNanos);
     }
 
     /**

@@ -6,6 +6,7 @@ import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
@@ -13,7 +14,10 @@ import picocli.CommandLine.Spec;
  * {@code carom resume FILE.ckpt}: continues a run from a checkpoint ({@code simulate --checkpoint}) to
  * its end time or {@code --until}, on the engine and settings the checkpoint names, and writes what
  * {@code simulate} would: the final state, the summary, samples from the checkpoint on, the observables
- * accumulated over the whole run, further checkpoints. The result is the bits of one run that never
+ * accumulated over the whole run, further checkpoints. Given no output option, it writes the outputs the
+ * run was asked for, which the checkpoint keeps ({@link carom.app.checkpoint.SavedOutputs}), and goes on
+ * checkpointing into the file it resumes, unless the run had already finished (a checkpoint at its end
+ * time) or {@code --no-saved-outputs} is given. The result is the bits of one run that never
  * stopped. The checkpoint is read and checked whole before anything runs ({@link RunRequest#resume}); a
  * damaged one, one of another format version, or a scene file given instead, is bad input.
  *
@@ -45,6 +49,11 @@ final class ResumeCommand implements Callable<Integer> {
 
     @Mixin
     LongRunOption allowLong;
+
+    @Option(names = "--no-saved-outputs",
+            description = "Write none of the outputs the run was asked for (the checkpoint keeps them, and resume writes "
+                    + "them when no output option is given); print the readable summary unless an output option is given.")
+    boolean noSavedOutputs;
 
     private final Charset stdoutCharset;
     private final PrintStream err;

@@ -8,6 +8,7 @@ import carom.core.Quoted;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.engine.RunStopped;
+import carom.core.engine.SampleSchedule;
 import carom.core.engine.Sampler;
 import carom.core.observe.CollisionObserver;
 import carom.core.observe.jfr.CaromRecording;
@@ -16,6 +17,7 @@ import java.io.PrintStream;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
 import java.nio.charset.Charset;
+import java.util.List;
 import java.util.Locale;
 import java.util.Objects;
 import java.util.stream.Stream;
@@ -57,8 +59,8 @@ final class RunExecution {
             try (ProgressBar bar = ProgressBar.forRun(streams.err(), request.scene().until())
                     .withStatus(progressNote(request.settings().start()));
                  TrajectoryOutput frames = outputs.trajectory() == null ? null
-                         : TrajectoryOutput.open(outputs.trajectory(), files, request.scene(), request.sampling().every(),
-                         request.engine())) {
+                         : TrajectoryOutput.open(outputs.trajectory(), files, request.scene(),
+                         request.sampling().trajectoryEvery(), request.engine())) {
                 result = run(request, bar, frames);
             } catch (IOException e) {
                 throw new UncheckedIOException("cannot write the trajectory: " + e.getMessage(), e);
@@ -70,8 +72,10 @@ final class RunExecution {
             RunOutputs.stage(files, request, result, streams);
             files.commit();
         } catch (RunStopped stopped) {
+            List<String> kept = checkpoints.outputs().asOptions();
             streams.err().println("stopped at t = " + stopped.time() + "; continue with: carom resume "
-                    + outputs.checkpoint());
+                    + outputs.checkpoint() + (kept.isEmpty() ? "" : " (it writes " + String.join(", ", kept)
+                    + ", as this run was asked to; --no-saved-outputs: none)"));
             return StopSignals.exitStatus(checkpoints.stopSignal());
         }
         return 0;
@@ -95,6 +99,21 @@ final class RunExecution {
         };
     }
 
+    /**
+     * {@code sampler} told only the samples at k·{@code interval}, when the run's samples merge two series;
+     * {@code sampler} itself otherwise.
+     */
+    private static Sampler only(RunRequest.Sampling sampling, double interval, Sampler sampler) {
+        if (!sampling.merged()) {
+            return sampler;
+        }
+        return (t, state, virialSum) -> {
+            if (SampleSchedule.isMultiple(t, interval)) {
+                sampler.sample(t, state, virialSum);
+            }
+        };
+    }
+
     /** The progress bar's note: for a fresh run, the collisions expected. */
     private static String progressNote(RunRequest.Start start) {
         return start instanceof RunRequest.Start.Fresh fresh
@@ -111,13 +130,15 @@ final class RunExecution {
         RunRequest.Sampling sampling = request.sampling();
         RunOptions options = RunOptions.until(request.scene().until()).withThreads(settings.threads()).withProgress(bar).withTunables(settings.tunables());
         Observing observing = sampling.observing();
-        Sampler sampler = Observing.both(frames == null ? null : frames.sampler(), observing);
+        Sampler sampler = Observing.both(frames == null ? null : only(sampling, sampling.trajectoryEvery(), frames.sampler()),
+                observing == null ? null : only(sampling, sampling.observeEvery(), observing));
         if (sampler == null && sampling.sampled() && request.scene().effects().grows()) {
-            // With growth, --every is also the thermostat's interval: sample for it alone.
+            // With growth, the samples are also the thermostat's times: sample for it alone.
             sampler = (t, state, virialSum) -> { };
         }
         if (sampler != null) {
-            options = options.withSamples(sampling.every(), sampler);
+            options = sampling.merged() ? options.withSamples(sampling.every(), sampling.otherEvery(), sampler)
+                    : options.withSamples(sampling.every(), sampler);
         }
         CollisionObserver collisions = CollisionObserver.all(Stream.of(frames == null ? null : frames.collisions(),
                 observing == null ? null : observing.collisions()).filter(Objects::nonNull).toList());

@@ -3,6 +3,7 @@ package carom.app;
 import carom.app.report.Observing;
 import carom.app.report.Provenance;
 import carom.app.report.RunRecord;
+import carom.app.state.StateFile;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -37,6 +38,10 @@ final class RunOutputs {
         if (outputs.out() != null) {
             files.stage(outputs.out(), w -> FinalStateCsv.write(result.finalState(), w));
         }
+        if (outputs.outState() != null) {
+            files.stage(outputs.outState(), w -> StateFile.write(request.settings().sceneText(), scene,
+                    result.finalState(), result.until(), w));
+        }
         if (outputs.summary() != null) {
             // Staged last, so renamed last: a summary on disk means the files it describes are there too.
             ObjectNode json = SummaryJson.toJson(finished);
@@ -52,7 +57,7 @@ final class RunOutputs {
         Scene scene = request.scene();
         RunRequest.Sampling sampling = request.sampling();
         return new RunRecord(request.settings().commandLine(), request.engine().name(), scene.name(),
-                request.settings().sceneFile(), scene.size(), scene.until(), sampling.every(),
+                request.settings().sceneFile(), scene.size(), scene.until(), sampling.observeEvery(),
                 List.of(sampling.observe().split(",")).stream().map(String::strip).toList(), Provenance.machine());
     }
 }

@@ -2,18 +2,23 @@ package carom.app;
 
 import carom.app.checkpoint.CheckpointFile;
 import carom.app.checkpoint.RunCheckpoints;
+import carom.app.checkpoint.SavedOutputs;
 import carom.app.report.Observing;
 import carom.app.report.Provenance;
+import carom.app.state.FromSource;
+import carom.app.state.StateFile;
 import carom.core.BadInputException;
 import carom.core.Quoted;
 import carom.core.engine.Capability;
 import carom.core.engine.Engine;
 import carom.core.engine.Tunables;
 import carom.core.engine.WorkEstimate;
+import carom.core.scene.DiscSource;
 import carom.core.scene.Scene;
 import carom.core.scene.SceneReader;
 import carom.engines.EngineCatalog;
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
@@ -43,8 +48,10 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
      * @param sceneFile the scene file's name as the run's record keeps it
      * @param threads the worker threads asked of the engine
      * @param tunables the engine's settings, checked
+     * @param sceneText the scene file's text, for {@code --out-state} (null when not asked for)
      */
-    record Settings(String commandLine, String sceneFile, int threads, Map<String, String> tunables, Start start) {
+    record Settings(String commandLine, String sceneFile, int threads, Map<String, String> tunables, Start start,
+                    String sceneText) {
     }
 
     /** How the engine begins: a fresh run of the scene, or one continued from a checkpoint's engine state. */
@@ -59,23 +66,73 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
     }
 
     /**
-     * What the run's samples are for.
+     * What the run's samples are for. The engine samples at k·every and, if {@code otherEvery} is not NaN,
+     * at k·otherEvery too (then {@code every} is the trajectory's interval and {@code otherEvery} the
+     * observables'); a checkpoint keeps both, so a resumed run samples at the same times.
      *
-     * @param every the sample interval, NaN for a run without samples
+     * @param every the first sample interval, NaN for a run without samples
+     * @param otherEvery the second sample interval, NaN for one series only
+     * @param trajectoryEvery the interval of the trajectory's frames, NaN for no trajectory
      * @param observe the observables' keys as given (comma-separated), or null for none
      * @param observing the observables fed by the samples, or null for none
      */
-    record Sampling(double every, String observe, Observing observing) {
+    record Sampling(double every, double otherEvery, double trajectoryEvery, String observe, Observing observing) {
         boolean sampled() {
             return every > 0;
+        }
+
+        /** The observables' interval: the second series if there are two, else the only one. */
+        double observeEvery() {
+            return Double.isNaN(otherEvery) ? every : otherEvery;
+        }
+
+        /** Whether the engine's samples merge two series, so that each sampler takes only its own. */
+        boolean merged() {
+            return !Double.isNaN(otherEvery);
+        }
+
+        /**
+         * The engine's series for a trajectory every {@code frames} and observables every {@code samples}
+         * (each NaN when not asked for), or every {@code thermostat} alone (growth without either).
+         */
+        static Sampling of(double frames, double samples, double thermostat, String observe, Observing observing) {
+            double first = !Double.isNaN(frames) ? frames : !Double.isNaN(samples) ? samples : thermostat;
+            double second = !Double.isNaN(frames) && !Double.isNaN(samples) && frames != samples ? samples : Double.NaN;
+            return new Sampling(first, second, frames, observe, observing);
         }
     }
 
     /** The files the run writes, each null when not asked for. */
-    record Outputs(Path out, Path summary, Path trajectory, Path report, Path jfr, Path checkpoint) {
+    record Outputs(Path out, Path summary, Path trajectory, Path report, Path jfr, Path checkpoint, Path outState) {
         Outputs(FinalOutputOptions finals, TrajectoryOption trajectory, ReportOption report, Path jfr,
                 CheckpointOptions checkpoints) {
-            this(finals.out, finals.summary, trajectory.file, report.folder, jfr, checkpoints.file);
+            this(finals.out, finals.summary, trajectory.file, report.folder, jfr, checkpoints.file, finals.outState);
+        }
+
+        /** The outputs a checkpoint keeps ({@code resume} given no output option writes them), as absolute paths. */
+        SavedOutputs saved() {
+            return new SavedOutputs(absolute(out), absolute(summary), absolute(trajectory), absolute(report),
+                    absolute(outState));
+        }
+
+        /** The outputs a checkpoint kept, checkpointing on into {@code checkpointFile}. */
+        static Outputs from(SavedOutputs saved, Path checkpointFile) {
+            return new Outputs(path(saved.out()), path(saved.summary()), path(saved.trajectory()), path(saved.report()),
+                    null, checkpointFile, path(saved.outState()));
+        }
+
+        /** Whether no output at all is asked for (nor a checkpoint). */
+        boolean none() {
+            return out == null && summary == null && trajectory == null && report == null && jfr == null
+                    && checkpoint == null && outState == null;
+        }
+
+        private static String absolute(Path p) {
+            return p == null ? null : p.toAbsolutePath().normalize().toString();
+        }
+
+        private static Path path(String s) {
+            return s == null ? null : Path.of(s);
         }
 
         /** Whether only the readable summary on stdout is asked for, no file of the final state or summary. */
@@ -99,6 +156,7 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
             Map<String, Path> given = new LinkedHashMap<>();
             checkFile(out, "--out", named, given);
             checkFile(summary, "--summary", named, given);
+            checkFile(outState, "--out-state", named, given);
             checkFile(jfr, "--jfr", named, given);
             checkFile(trajectory, "--trajectory", named, given);
             checkFile(checkpoint, "--checkpoint", named, given);
@@ -122,6 +180,17 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
                     }
                 });
                 AtomicOutput.checkFolderWritable(report, "--report");
+            }
+        }
+
+        /** Bad input if an output would replace {@code input} (what the run reads beside its scene or checkpoint). */
+        void checkNotInput(Path input, String what) {
+            String[] options = {"--out", "--summary", "--out-state", "--trajectory", "--jfr", "--checkpoint"};
+            Path[] files = {out, summary, outState, trajectory, jfr, checkpoint};
+            for (int k = 0; k < files.length; k++) {
+                if (files[k] != null && input != null) {
+                    AtomicOutput.checkNotInput(files[k], options[k], input, what);
+                }
             }
         }
 
@@ -167,14 +236,23 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
         ClusterOptions.putNodes(engine, command.nodes, command.tunables);
         Tunables.check(engine.name(), engine.spec().tunables(), command.tunables);
         checkSampling(engine, command);
+        double frames = command.trajectory.file == null ? Double.NaN
+                : command.trajectoryEvery != null ? command.trajectoryEvery : command.every;
+        double samples = command.observe == null ? Double.NaN
+                : command.observeEvery != null ? command.observeEvery : command.every;
         command.checkpoints.check(engine);
         Outputs outputs = new Outputs(command.finals, command.trajectory, command.report, command.jfr,
                 command.checkpoints);
         outputs.check(Input.scene(command.sceneFile));
-
+        DiscSource source = null;
+        if (command.from != null) {
+            outputs.checkNotInput(FromSource.file(command.from), "the --from source");
+            source = FromSource.read(command.from);
+        }
+        DiscSource discs = source;
         Scene fromFile = file.about(() -> {
             refuseCheckpointAsScene(file.path());
-            return SceneReader.read(file.path());
+            return discs == null ? SceneReader.read(file.path()) : SceneReader.read(file.path(), discs);
         });
         Scene scene = until == null ? fromFile : fromFile.withUntil(until);
         file.about(() -> {
@@ -184,44 +262,75 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
         if (outputs.trajectory() != null) {
             TrajectoryOutput.checkNames(outputs.trajectory(), scene);
         }
-        double every = command.every == null ? Double.NaN : command.every;
-        new WorkBounds(scene, 0, every, outputs.checkpoint() == null ? Double.POSITIVE_INFINITY
-                : command.checkpoints.interval(Double.POSITIVE_INFINITY), outputs.trajectory() != null)
-                .check(command.sceneFile, command.allowLong.allowed);
+        boolean nothingElse = outputs.trajectory() == null && command.observe == null;
+        boolean everyUsed = outputs.trajectory() != null && command.trajectoryEvery == null
+                || command.observe != null && command.observeEvery == null || nothingElse && scene.effects().grows();
+        if (command.every != null && !everyUsed) {
+            throw new BadInputException(nothingElse ? "--every: nothing to sample; add --trajectory FRAMES or --observe "
+                    + "LIST (with growth it is also the thermostat's interval)" : "--every: nothing to sample; "
+                    + "--trajectory-every or --observe-every sets the interval of what there is");
+        }
+        double thermostat = command.every == null ? Double.NaN : command.every;
+        Sampling sampling = Sampling.of(frames, samples, thermostat, command.observe,
+                command.observe == null ? null : Observing.of(scene, command.observe, samples));
+        new WorkBounds(scene, 0, sampling, outputs.checkpoint() == null ? Double.POSITIVE_INFINITY
+                : command.checkpoints.interval(Double.POSITIVE_INFINITY)).check(command.sceneFile, command.allowLong.allowed);
         double expected = WorkEstimate.collisions(scene, scene.until());
-        Sampling sampling = new Sampling(every, command.observe,
-                command.observe == null ? null : Observing.of(scene, command.observe, every));
         if (sampling.observing() != null) {
             sampling.observing().checkCollisionsToldBy(engine.name(), engine.spec().can(Capability.COLLISION_OBSERVERS));
         }
+        byte[] raw = outputs.checkpoint() == null && outputs.outState() == null ? null
+                : file.about(() -> sceneText(file.path()));
+        String text = raw == null ? null : new String(raw, StandardCharsets.UTF_8);
+        // A run from another source keeps the scene it runs, its discs included, so that resume rebuilds it.
+        byte[] checkpointScene = outputs.checkpoint() == null || discs == null ? raw
+                : StateFile.text(text, scene, scene.newDiscs(), scene.until()).getBytes(StandardCharsets.UTF_8);
         RunCheckpoints checkpoints = outputs.checkpoint() == null ? null : new RunCheckpoints(outputs.checkpoint(),
-                new CheckpointFile(command.sceneFile, file.about(() -> sceneText(file.path())), engine.name(), threads,
-                        command.tunables, scene.until(), 0, every, command.observe,
-                        command.checkpoints.interval(Double.POSITIVE_INFINITY), new byte[0], List.of(), 0),
-                sampling.observing());
+                new CheckpointFile(command.sceneFile, checkpointScene, engine.name(), threads,
+                        command.tunables, scene.until(), 0, sampling.every(), command.observe,
+                        command.checkpoints.interval(Double.POSITIVE_INFINITY), new byte[0], List.of(), 0,
+                        sampling.otherEvery(), outputs.saved()), sampling.observing());
         Settings settings = new Settings(commandLine(command.spec), command.sceneFile, threads, command.tunables,
-                new Start.Fresh(command.sceneFile, expected));
+                new Start.Fresh(command.sceneFile, expected), outputs.outState() == null ? null : text);
         return new RunRequest(engine, scene, settings, sampling, outputs, checkpoints);
     }
 
-    /** {@code resume}'s request: its options, then the checkpoint they apply to, and the run it holds. */
+    /**
+     * {@code resume}'s request: its options, then the checkpoint they apply to, and the run it holds. With no
+     * output option, the outputs the run was asked for (kept in the checkpoint) and checkpoints into the
+     * file resumed, unless the run had reached its end (it wrote them then) or {@code --no-saved-outputs}.
+     */
     static RunRequest resume(ResumeCommand command) {
         Double until = command.until.checked();
-        Outputs outputs = new Outputs(command.finals, command.trajectory, command.report, null, command.checkpoints);
-        outputs.check(Input.checkpoint(command.checkpointFile));
+        Outputs given = new Outputs(command.finals, command.trajectory, command.report, null, command.checkpoints);
         SceneFile file = new SceneFile(command.checkpointFile);
-        CheckpointFile saved = file.about(() -> CheckpointFile.read(file.path()));
-        Engine engine = file.about(() -> EnginesCommand.engineNamed(saved.engine()));
+        CheckpointFile saved = null;
+        if (given.none() && !command.noSavedOutputs) {
+            saved = file.about(() -> CheckpointFile.read(file.path()));
+        }
+        boolean useSaved = saved != null && !saved.outputs().none() && saved.time() < saved.until();
+        Outputs outputs = useSaved ? Outputs.from(saved.outputs(), Path.of(command.checkpointFile)) : given;
+        outputs.check(Input.checkpoint(command.checkpointFile));
+        if (saved == null) {
+            saved = file.about(() -> CheckpointFile.read(file.path()));
+        }
+        CheckpointFile checkpoint = saved;
+        Engine engine = file.about(() -> EnginesCommand.engineNamed(checkpoint.engine()));
         file.about(() -> {
-            command.checkpoints.check(engine);
-            Tunables.check(engine.name(), engine.spec().tunables(), saved.tunables());
+            if (useSaved) {
+                // Checkpoints go on into the file resumed; --checkpoint-every may still set their interval.
+                command.checkpoints.checkInterval();
+            } else {
+                command.checkpoints.check(engine);
+            }
+            Tunables.check(engine.name(), engine.spec().tunables(), checkpoint.tunables());
             return null;
         });
-        double end = until == null ? file.about(() -> OptionChecks.positiveFinite("its end time", saved.until())) : until;
+        double end = until == null ? file.about(() -> OptionChecks.positiveFinite("its end time", checkpoint.until())) : until;
         if (end < saved.time()) {
             throw new BadInputException("--until: the checkpoint is at t = " + saved.time() + ", later than " + end);
         }
-        Scene scene = file.about(() -> SceneReader.parse(saved.sceneJson()).withUntil(end));
+        Scene scene = file.about(() -> SceneReader.parse(checkpoint.sceneJson()).withUntil(end));
         if (outputs.trajectory() != null && !(saved.every() > 0)) {
             throw new BadInputException("--trajectory: the run had no --every, so it takes no samples");
         }
@@ -232,35 +341,60 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
             TrajectoryOutput.checkNames(outputs.trajectory(), scene);
         }
         double checkpointEvery = command.checkpoints.interval(saved.checkpointEvery());
-        new WorkBounds(scene, saved.time(), saved.every(), outputs.checkpoint() == null ? Double.POSITIVE_INFINITY
-                : checkpointEvery, outputs.trajectory() != null).check(command.checkpointFile, command.allowLong.allowed);
-        Sampling sampling = new Sampling(saved.every(), saved.observe(), saved.observe() == null ? null
-                : file.about(() -> Observing.restored(scene, saved.observables(), saved.lastVirialSum())));
+        Sampling sampling = new Sampling(saved.every(), saved.otherEvery(),
+                outputs.trajectory() == null ? Double.NaN : saved.every(), saved.observe(), saved.observe() == null ? null
+                : file.about(() -> Observing.restored(scene, checkpoint.observables(), checkpoint.lastVirialSum())));
+        new WorkBounds(scene, saved.time(), sampling, outputs.checkpoint() == null ? Double.POSITIVE_INFINITY
+                : checkpointEvery).check(command.checkpointFile, command.allowLong.allowed);
         RunCheckpoints checkpoints = outputs.checkpoint() == null ? null : new RunCheckpoints(outputs.checkpoint(),
-                saved.continuedTo(end, checkpointEvery), sampling.observing());
+                saved.continuedTo(end, checkpointEvery).withOutputs(outputs.saved()), sampling.observing());
         Settings settings = new Settings(commandLine(command.spec), saved.sceneFileName(), saved.threads(),
-                saved.tunables(), new Start.Resumed(command.checkpointFile, saved.engineState()));
+                saved.tunables(), new Start.Resumed(command.checkpointFile, saved.engineState()),
+                outputs.outState() == null ? null : file.about(checkpoint::sceneJson));
         return new RunRequest(engine, scene, settings, sampling, outputs, checkpoints);
     }
 
-    /** --every and what samples need: a positive finite interval, and an engine that can stop at given times. */
+    /**
+     * The sampling options and what samples need: each interval a positive finite number, each with what it
+     * samples for, and an engine that can stop at given times. ({@code --every} alone with nothing to sample
+     * is refused once the scene is read: with growth it is the thermostat's interval.)
+     */
     private static void checkSampling(Engine engine, SimulateCommand command) {
         if ((command.observe == null) != (command.report.folder == null)) {
             throw new BadInputException(command.observe == null ? "--report needs --observe LIST (what to put in it)"
                     : "--observe needs --report DIR (where its tables and plots go)");
         }
+        if (command.trajectoryEvery != null && command.trajectory.file == null) {
+            throw new BadInputException("--trajectory-every needs --trajectory FRAMES (where the frames go)");
+        }
+        if (command.observeEvery != null && command.observe == null) {
+            throw new BadInputException("--observe-every needs --observe LIST (what to sample)");
+        }
+        if (command.every != null && command.trajectoryEvery != null && command.observeEvery != null) {
+            throw new BadInputException("--every: --trajectory-every and --observe-every set both intervals, so it "
+                    + "samples nothing; leave it out");
+        }
         if (command.every == null) {
-            if (command.trajectory.file != null) {
+            if (command.trajectory.file != null && command.trajectoryEvery == null) {
                 throw new BadInputException("--trajectory needs --every DT (the time between frames)");
             }
-            if (command.observe != null) {
+            if (command.observe != null && command.observeEvery == null) {
                 throw new BadInputException("--observe needs --every DT (the time between samples)");
             }
-            return;
         }
-        OptionChecks.positiveFinite("--every", command.every);
-        if (!engine.spec().can(Capability.SAMPLES)) {
-            throw new BadInputException("--every: engine " + engine.name() + " cannot stop at given times "
+        if (command.every != null) {
+            OptionChecks.positiveFinite("--every", command.every);
+        }
+        if (command.trajectoryEvery != null) {
+            OptionChecks.positiveFinite("--trajectory-every", command.trajectoryEvery);
+        }
+        if (command.observeEvery != null) {
+            OptionChecks.positiveFinite("--observe-every", command.observeEvery);
+        }
+        String sampling = command.every != null ? "--every" : command.trajectoryEvery != null ? "--trajectory-every"
+                : command.observeEvery != null ? "--observe-every" : null;
+        if (sampling != null && !engine.spec().can(Capability.SAMPLES)) {
+            throw new BadInputException(sampling + ": engine " + engine.name() + " cannot stop at given times "
                     + "(engines that can: " + EngineCatalog.namesThatCan(Capability.SAMPLES) + ")");
         }
     }
@@ -274,7 +408,7 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
     }
 
     /** The scene file's bytes, as the checkpoint keeps them. */
-    private static byte[] sceneText(Path sceneFile) {
+    static byte[] sceneText(Path sceneFile) {
         try {
             return Files.readAllBytes(sceneFile);
         } catch (IOException e) {

@@ -38,6 +38,13 @@ final class SimulateCommand implements Callable<Integer> {
             description = "Engine to run (see 'carom engines'); default: ${DEFAULT-VALUE}.")
     String engineName;
 
+    @Option(names = "--from", paramLabel = "SOURCE",
+            description = "Take the discs from SOURCE instead of the scene's own (the scene gives the box, species, effects "
+                    + "and end time): a state file (--out-state) or any scene (.json), a packing (.csv: id,x,y,radius"
+                    + "[,species]; velocities drawn as the scene's first generate block says), or a trajectory frame "
+                    + "FRAMES.xyz@K or FRAMES.gsd@K (K from 0, negative from the end; default the last).")
+    String from;
+
     @Mixin
     UntilOption until;
 
@@ -64,12 +71,21 @@ final class SimulateCommand implements Callable<Integer> {
     FinalOutputOptions finals;
 
     @Option(names = "--every", paramLabel = "DT",
-            description = "Sample interval for --trajectory and --observe: samples at t = 0, DT, 2 DT, ... up to the end time.")
+            description = "Sample interval for --trajectory and --observe: samples at t = 0, DT, 2 DT, ... up to the end time "
+                    + "(with growth, also the thermostat's).")
     Double every;
+
+    @Option(names = "--trajectory-every", paramLabel = "DT",
+            description = "Time between trajectory frames, instead of --every's.")
+    Double trajectoryEvery;
+
+    @Option(names = "--observe-every", paramLabel = "DT",
+            description = "Time between the observables' samples, instead of --every's.")
+    Double observeEvery;
 
     @Option(names = "--observe", paramLabel = "LIST", completionCandidates = carom.app.report.ObservableKeys.class,
             description = "Observables computed at every sample, comma-separated: ${COMPLETION-CANDIDATES}; "
-                    + "needs --every and --report.")
+                    + "needs --every or --observe-every, and --report.")
     String observe;
 
     @Mixin

@@ -12,6 +12,6 @@ import picocli.CommandLine.Option;
 final class TrajectoryOption {
     @Option(names = "--trajectory", paramLabel = "FRAMES.xyz|FRAMES.gsd", descriptionKey = "trajectory",
             description = "Write every sample as a frame: extended XYZ (OVITO, ASE), or GSD for a name ending in .gsd "
-                    + "(gsd, freud, MDAnalysis, OVITO, HOOMD-blue); needs --every.")
+                    + "(gsd, freud, MDAnalysis, OVITO, HOOMD-blue); needs --every or --trajectory-every.")
     Path file;
 }

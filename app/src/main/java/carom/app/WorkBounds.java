@@ -19,11 +19,10 @@ import java.util.Locale;
  *
  * @param scene the scene as the run takes it
  * @param from the simulated time the run starts at (a checkpoint's time when resumed)
- * @param every the sample interval, NaN without samples
+ * @param sampling the run's sample intervals (NaN without samples) and its trajectory's
  * @param checkpointEvery the checkpoint interval, +Infinity without periodic checkpoints
- * @param trajectory whether every sample is written as a trajectory frame
  */
-record WorkBounds(Scene scene, double from, double every, double checkpointEvery, boolean trajectory) {
+record WorkBounds(Scene scene, double from, RunRequest.Sampling sampling, double checkpointEvery) {
     /** Collisions (and disc updates) above which a run is refused: a day at a million a second is 8.6e10. */
     static final double LONG_RUN_WORK = 1e11;
     /** Trajectory rows (a disc in a frame, some 60 bytes) above which a run is refused: tens of gigabytes. */
@@ -38,7 +37,9 @@ record WorkBounds(Scene scene, double from, double every, double checkpointEvery
     void check(String shown, boolean allowLong) {
         double until = scene.until();
         double span = until - from;
-        double samples = count("--every", every, until) * span / until;
+        double samples = (count("--every", sampling.every(), until)
+                + count("--observe-every", sampling.otherEvery(), until)) * span / until;
+        double frames = count("--trajectory-every", sampling.trajectoryEvery(), until) * span / until;
         double checkpoints = count("--checkpoint-every", checkpointEvery, until) * span / until;
         if (allowLong) {
             return;
@@ -55,11 +56,11 @@ record WorkBounds(Scene scene, double from, double every, double checkpointEvery
                     + "discs to reach t = %s, days or more of work; lengthen --every or --checkpoint-every, shorten until, "
                     + "or pass --allow-long", Quoted.fileName(shown), samples, checkpoints, scene.size(), until));
         }
-        double rows = trajectory ? samples * scene.size() : 0;
+        double rows = frames * scene.size();
         if (rows > TRAJECTORY_ROWS) {
             throw new BadInputException(String.format(Locale.ROOT, "--trajectory: about %.2g frames of %d discs, "
                     + "%.2g rows (tens of gigabytes or more); lengthen --every, shorten until, or pass --allow-long",
-                    samples, scene.size(), rows));
+                    frames, scene.size(), rows));
         }
     }
 

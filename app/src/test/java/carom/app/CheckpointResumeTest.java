@@ -122,7 +122,9 @@ class CheckpointResumeTest {
             }
             String said = file(signal + ".txt");
             assertThat(child.exitValue()).as(said).isEqualTo(signal.equals("INT") ? 130 : 143);
-            assertThat(said).contains("stopped at t = ").doesNotContain("error");
+            assertThat(said).contains("stopped at t = ").doesNotContain("error")
+                    .contains("; continue with: carom resume " + ckpt + " (it writes --out "
+                            + dir.resolve(signal + "-never.csv").toAbsolutePath());
             assertThat(dir.resolve(signal + "-never.csv")).doesNotExist();
             String until = String.valueOf(Math.floor(CheckpointFile.read(ckpt).time()) + 1);
             ok("resume", ckpt.toString(), "--until", until, "--out", dir.resolve(signal + "-resumed.csv").toString(),

@@ -21,6 +21,13 @@ record Cli(int status, String out, String err) {
         return new Cli(status, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
     }
 
+    /** Runs the command line in-process and asserts that it succeeded, showing what it printed if not. */
+    static Cli ok(String... args) {
+        Cli r = run(args);
+        assertThat(r.status()).as(String.join(" ", args) + "\n" + r.err()).isZero();
+        return r;
+    }
+
     /** The command that runs carom in a JVM of its own: this JVM's java and class path, {@code jvmOptions}, then {@code args}. */
     static List<String> inChildJvm(List<String> jvmOptions, String... args) {
         List<String> command = new ArrayList<>();

@@ -47,7 +47,7 @@ class CompressCommandTest {
                 "--out", packing.toString(), "--summary", summary.toString());
         assertThat(r.status()).as(r.err()).isZero();
         List<String> rows = Files.readAllLines(packing);
-        assertThat(rows.get(0)).isEqualTo("id,x,y,radius");
+        assertThat(rows.get(0)).isEqualTo("id,x,y,radius,species");
         assertThat(rows).hasSize(65);
         double covered = 0;
         for (String row : rows.subList(1, rows.size())) {

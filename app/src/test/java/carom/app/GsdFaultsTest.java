@@ -41,7 +41,7 @@ class GsdFaultsTest {
         Path out = dir.resolve("out");
         Files.createDirectory(out);
         List<String> command = Cli.inChildJvm(List.of("-XX:-UsePerfData", "-Xmx2g"), "simulate", scene.toString(),
-                "--every", Double.toString(EVERY), "--trajectory", out.resolve("frames.gsd").toString());
+                "--every", Double.toString(EVERY), "--trajectory", out.resolve("frames.gsd").toString(), "--allow-long");
         Process child = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(dir.resolve("log.txt").toFile()).start();
         try {
             long killAt = 1 + new SplittableRandom(seed).nextLong(30L << 20);
@@ -77,6 +77,7 @@ class GsdFaultsTest {
         for (long k = 0; k < frames; k++) {
             assertThat(own.chunk(k, "particles/position").n()).isEqualTo(DISCS);
             assertThat(own.chunk(k, "log/carom/collisions")).isNotNull();
+            assertThat(own.chunk(k, "log/carom/Z")).isNotNull();
         }
     }
 

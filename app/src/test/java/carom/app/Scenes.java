@@ -44,6 +44,27 @@ final class Scenes {
                 """;
     }
 
+    /**
+     * A 50:50 mixture of radii 0.5 and 0.7 (masses 1) at packing fraction about 0.4 in a periodic box,
+     * placed at random, Maxwell velocities at temperature 1, growing at rate {@code growth} (0: none).
+     */
+    static String mixture(int count, long seed, double growth) {
+        double side = Math.sqrt(count * 0.5 * Math.PI * (0.25 + 0.49) / 0.4);
+        return """
+                { "name": "mixture",
+                  "box": { "width": %s, "height": %s, "boundary": "periodic" },
+                  "species": [ { "name": "small", "radius": 0.5, "mass": 1.0 }, { "name": "large", "radius": 0.7, "mass": 1.0 } ],
+                  "generate": [ { "species": ["small", "large"], "fractions": [0.5, 0.5], "count": %d, "layout": "random",
+                                  "velocity": { "distribution": "maxwell", "temperature": 1.0 }, "seed": %d } ],
+                  %s"until": 5.0 }
+                """.formatted(side, side, count, seed, growth > 0 ? "\"effects\": { \"growth\": " + growth + " },\n  " : "");
+    }
+
+    /** {@link #mixture} growing at rate 0.02. */
+    static String growth(int count, long seed) {
+        return mixture(count, seed, 0.02);
+    }
+
     static Path write(Path dir, String name, String json) {
         try {
             return Files.writeString(dir.resolve(name), json);

@@ -19,7 +19,8 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * {@code --trajectory FRAMES.gsd}: every frame holds what the same run writes as extended XYZ (positions
  * and velocities as float32 of carom's doubles, the box centred on the origin, image flags that unwrap
- * each disc to where carom's own trajectory, unwrapped, puts it), read back by the tests' {@link
+ * each disc to where carom's own trajectory, unwrapped, puts it) and logs the interval's Z as the
+ * {@code pressure} observable has it, read back by the tests' {@link
  * GsdReader} and by the field's readers: gsd's {@code gsd.hoomd} (every frame, box, types, diameters,
  * images), freud (g(r) and |ψ6| that agree with carom's {@code gr.csv} and {@code psi6.csv}),
  * MDAnalysis and OVITO (skipped only if its module does not install).
@@ -49,7 +50,7 @@ class TrajectoryGsdTest {
     Path dir;
 
     /** One frame as a GSD reader gave it. */
-    record Frame(long step, double time, long collisions, float[] position, float[] velocity, int[] image) {
+    record Frame(long step, double time, long collisions, double z, float[] position, float[] velocity, int[] image) {
     }
 
     /** One frame of carom's extended XYZ: species names and doubles as carom printed them. */
@@ -63,7 +64,7 @@ class TrajectoryGsdTest {
         List<Frame> frames = new ArrayList<>();
         for (long k = 0; k < gsd.frames(); k++) {
             frames.add(new Frame(gsd.chunk(k, "configuration/step").longAt(0), gsd.chunk(k, "log/carom/time").doubleAt(0),
-                    gsd.chunk(k, "log/carom/collisions").longAt(0),
+                    gsd.chunk(k, "log/carom/collisions").longAt(0), gsd.chunk(k, "log/carom/Z").doubleAt(0),
                     gsd.chunk(k, "particles/position").floats(), gsd.chunk(k, "particles/velocity").floats(),
                     gsd.chunk(k, "particles/image").ints()));
         }
@@ -99,6 +100,12 @@ class TrajectoryGsdTest {
         for (long k = 0; k < gsd.frames(); k++) {
             assertThat(gsd.chunk(k, "log/carom/time").doubleAt(0)).isEqualTo(k * 0.5);
             assertThat(gsd.chunk(k, "log/carom/collisions")).isNull();
+            double z = gsd.chunk(k, "log/carom/Z").doubleAt(0);
+            if (k == 0) {
+                assertThat(z).as("frame 0 ends no interval").isNaN();
+            } else {
+                assertThat(z).as("Z from the slabs' virial, frame %d", k).isGreaterThan(1);
+            }
         }
     }
 
@@ -159,7 +166,9 @@ class TrajectoryGsdTest {
                 assertThat(f.get("mass").get(i).asDouble()).isEqualTo(a ? 1 : 2);
                 assertThat(f.get("diameter").get(i).asDouble()).isEqualTo(1);
             }
-            parsed.add(new Frame(f.get("step").asLong(), f.get("time").asDouble(), f.get("collisions").asLong(),
+            // gsd.hoomd's NaN comes as null (JSON has no NaN).
+            double z = f.get("Z").isNull() ? Double.NaN : f.get("Z").asDouble();
+            parsed.add(new Frame(f.get("step").asLong(), f.get("time").asDouble(), f.get("collisions").asLong(), z,
                     floats(f.get("position")), floats(f.get("velocity")), ints(f.get("image"))));
         }
         assertFramesMatch(parsed, run, 22.88, 22.88);
@@ -242,6 +251,30 @@ class TrajectoryGsdTest {
         JsonNode collisions = JSON.readTree(run.summary.toFile()).get("collisions");
         assertThat(frames.getLast().collisions()).as("the last frame is at the end time")
                 .isEqualTo(collisions.get("pair").asLong() + collisions.get("wall").asLong());
+        assertZAsPressureCsv(frames, run);
+    }
+
+    /**
+     * Frame 0 ends no interval and logs NaN; frame k logs the Z that pressure.csv gives the interval from
+     * frame k-1 to frame k, and over the whole run (equal intervals, an elastic run's constant kinetic
+     * energy) their mean is the summary's Z.
+     */
+    private static void assertZAsPressureCsv(List<Frame> frames, Run run) throws IOException {
+        List<String> pressure = Files.readAllLines(run.report.resolve("pressure.csv"));
+        assertThat(pressure).hasSize(frames.size());
+        assertThat(frames.getFirst().z()).isNaN();
+        double sum = 0;
+        for (int k = 1; k < frames.size(); k++) {
+            String[] row = pressure.get(k).split(",");
+            assertThat(Double.parseDouble(row[0])).isEqualTo(frames.get(k - 1).time());
+            assertThat(Double.parseDouble(row[1])).isEqualTo(frames.get(k).time());
+            double z = Double.parseDouble(row[2]);
+            assertThat(frames.get(k).z()).as("Z of frame %d", k).isCloseTo(z, within(1e-12 * Math.abs(z)));
+            sum += frames.get(k).z();
+        }
+        double runZ = JSON.readTree(run.summary.toFile()).get("pressure").get("Z").asDouble();
+        assertThat(runZ).as("a fluid with pressure").isGreaterThan(1.05);
+        assertThat(sum / (frames.size() - 1)).isCloseTo(runZ, within(1e-9 * runZ));
     }
 
     /** A coordinate centred on the origin in float32, as HOOMD's box has it: a value that rounds to the upper side goes to the lower one. */
@@ -286,7 +319,7 @@ class TrajectoryGsdTest {
         Run run = new Run(dir.resolve(name + ".gsd"), dir.resolve(name + ".xyz"), dir.resolve(name + "-report"),
                 dir.resolve(name + "-summary.json"));
         Cli gsd = Cli.run("simulate", scene.toString(), "--every", Double.toString(EVERY), "--trajectory", run.gsd.toString(),
-                "--observe", "gr,psi6", "--report", run.report.toString(), "--summary", run.summary.toString());
+                "--observe", "gr,psi6,pressure", "--report", run.report.toString(), "--summary", run.summary.toString());
         assertThat(gsd.status()).as(gsd.err()).isZero();
         Cli xyz = Cli.run("simulate", scene.toString(), "--every", Double.toString(EVERY), "--trajectory", run.xyzFile.toString());
         assertThat(xyz.status()).as(xyz.err()).isZero();

@@ -66,8 +66,51 @@ public final class EngineCatalog {
                 return e;
             }
         }
-        throw new BadInputException("unknown engine " + carom.core.Quoted.of(name) + " (known: "
+        String suggestion = closestName(name);
+        throw new BadInputException("unknown engine " + carom.core.Quoted.of(name)
+                + (suggestion == null ? "" : "; did you mean " + suggestion + "?") + " (known: "
                 + String.join(", ", ENGINES.stream().map(Engine::name).toList()) + ")");
+    }
+
+    /**
+     * The engine name {@code typed} was most likely meant to be, or null: one that equals it but for
+     * letter case, else the nearest within two edits (ties: the catalog's order), as picocli suggests
+     * options.
+     */
+    static String closestName(String typed) {
+        String best = null;
+        int bestDistance = 3;
+        for (Engine e : ENGINES) {
+            if (e.name().equalsIgnoreCase(typed)) {
+                return e.name();
+            }
+            int d = editDistance(e.name(), typed.toLowerCase(java.util.Locale.ROOT));
+            if (d < bestDistance) {
+                best = e.name();
+                bestDistance = d;
+            }
+        }
+        return best;
+    }
+
+    /** Levenshtein distance: insertions, deletions and substitutions that turn {@code a} into {@code b}. */
+    private static int editDistance(String a, String b) {
+        int[] previous = new int[b.length() + 1];
+        int[] current = new int[b.length() + 1];
+        for (int j = 0; j <= b.length(); j++) {
+            previous[j] = j;
+        }
+        for (int i = 1; i <= a.length(); i++) {
+            current[0] = i;
+            for (int j = 1; j <= b.length(); j++) {
+                int substitute = previous[j - 1] + (a.charAt(i - 1) == b.charAt(j - 1) ? 0 : 1);
+                current[j] = Math.min(substitute, Math.min(previous[j], current[j - 1]) + 1);
+            }
+            int[] swap = previous;
+            previous = current;
+            current = swap;
+        }
+        return previous[b.length()];
     }
 
     /** The catalog's specs for core's messages that name engines, enrolled in {@code META-INF/services}. */

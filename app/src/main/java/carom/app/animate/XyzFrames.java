@@ -33,7 +33,7 @@ import java.util.regex.Pattern;
  * type one of its species); without it, species come in order of first appearance (which picks their
  * colours), all drawn as mobile, and the picture's name is the file's.
  */
-final class XyzFrames implements AutoCloseable {
+public final class XyzFrames implements AutoCloseable {
     /** The comment line carom writes, every field in its place. */
     private static final Pattern COMMENT = Pattern.compile(
             "Lattice=\"(\\S+) 0\\.0 0\\.0 0\\.0 (\\S+) 0\\.0 0\\.0 0\\.0 1\\.0\""
@@ -55,21 +55,33 @@ final class XyzFrames implements AutoCloseable {
 
     /** The scene the frames came from, or null. */
     private final Scene scene;
+    /** The option that named the file, for messages; radii may change between frames unless it is --trajectory. */
+    private final String option;
 
-    private XyzFrames(Path file, BufferedReader in, Scene scene) {
+    private XyzFrames(Path file, BufferedReader in, Scene scene, String option) {
         this.file = file;
         this.in = in;
         this.scene = scene;
+        this.option = option;
     }
 
     /** Opens {@code file}, whose frames came from {@code scene} (or null if not known); bad input if it cannot be read. */
     static XyzFrames open(Path file, Scene scene) {
+        return open(file, scene, "--trajectory");
+    }
+
+    /**
+     * Same, for the command-line option {@code option} that named the file (messages start with it); for
+     * another than {@code --trajectory} (animate's), a disc's radius may change from frame to frame, as
+     * growth makes it, and each frame's are its own.
+     */
+    public static XyzFrames open(Path file, Scene scene, String option) {
         try {
-            return new XyzFrames(file, Files.newBufferedReader(file, StandardCharsets.UTF_8), scene);
+            return new XyzFrames(file, Files.newBufferedReader(file, StandardCharsets.UTF_8), scene, option);
         } catch (NoSuchFileException e) {
-            throw new BadInputException("--trajectory: " + Quoted.fileName(file.toString()) + " does not exist");
+            throw new BadInputException(option + ": " + Quoted.fileName(file.toString()) + " does not exist");
         } catch (IOException e) {
-            throw new BadInputException("--trajectory: cannot read " + Quoted.fileName(file.toString()) + ": "
+            throw new BadInputException(option + ": cannot read " + Quoted.fileName(file.toString()) + ": "
                     + Quoted.bare(String.valueOf(e.getMessage())));
         }
     }
@@ -78,7 +90,7 @@ final class XyzFrames implements AutoCloseable {
      * Reads the next frame into {@link #discs()} (the same arrays each time) and returns true, or returns
      * false at the end of the file.
      */
-    boolean next() {
+    public boolean next() {
         try {
             String count = in.readLine();
             if (count == null) {
@@ -157,9 +169,10 @@ final class XyzFrames implements AutoCloseable {
             discs.species[i] = s;
             discs.radius[i] = radius;
             discs.invMass[i] = scene == null ? 1 : scene.species().get(s).inverseMass();
-        } else if (discs.species[i] != s || discs.radius[i] != radius) {
+        } else if (discs.species[i] != s || discs.radius[i] != radius && option.equals("--trajectory")) {
             throw bad("disc " + i + " changes its type or radius from the first frame's");
         }
+        discs.radius[i] = radius; // a grown radius (growth), when the option allows it
         discs.x[i] = number(f[2], "x");
         discs.y[i] = number(f[3], "y");
         discs.vx[i] = number(f[5], "vx");
@@ -217,25 +230,25 @@ final class XyzFrames implements AutoCloseable {
     }
 
     private BadInputException bad(String what) {
-        return new BadInputException("--trajectory: " + Quoted.fileName(file.toString()) + ": line " + lineNumber + ": " + what);
+        return new BadInputException(option + ": " + Quoted.fileName(file.toString()) + ": line " + lineNumber + ": " + what);
     }
 
     /** The frame just read: positions and velocities of every disc, in id order. */
-    Discs discs() {
+    public Discs discs() {
         return discs;
     }
 
     /** The frame's time. */
-    double time() {
+    public double time() {
         return time;
     }
 
     /** Name, box and species, known once the first frame is read. */
-    SceneRenderer.Subject subject() {
+    public SceneRenderer.Subject subject() {
         return subject;
     }
 
-    long frames() {
+    public long frames() {
         return frames;
     }
 

@@ -35,8 +35,10 @@ import java.util.zip.CRC32C;
  * name, threads and tunables; the run's end time, the checkpoint's simulated time; the sample interval
  * (NaN for none), the observables (empty for none), the checkpoint interval (+Infinity for none); the
  * engine's own state (its layout is the engine's, tagged with its name and layout version); the
- * observables' states and the virial sum at the last sample. Strings and byte arrays are a length
- * (int) and their bytes.
+ * observables' states and the virial sum at the last sample; from version 2 on, the second sample
+ * interval (NaN for none) and the outputs the run was asked for ({@link SavedOutputs}: five strings,
+ * empty for none). Strings and byte arrays are a length (int) and their bytes. Version 1 files are
+ * still read (one sample interval, no outputs kept).
  *
  * <p>Reading refuses, as bad input, a file of another kind (no magic: a scene given to resume), another
  * format version, a length that is not the file's, a checksum that does not match, and a payload that
@@ -45,9 +47,11 @@ import java.util.zip.CRC32C;
 public record CheckpointFile(String sceneFileName, byte[] sceneText, String engine, int threads,
                              Map<String, String> tunables, double until, double time, double every, String observe,
                              double checkpointEvery, byte[] engineState, List<ObservableState> observables,
-                             double lastVirialSum) {
+                             double lastVirialSum, double otherEvery, SavedOutputs outputs) {
     static final byte[] MAGIC = "CAROMCKP".getBytes(StandardCharsets.US_ASCII);
-    static final int VERSION = 1;
+    static final int VERSION = 2;
+    /** The oldest format version still read. */
+    static final int OLDEST_VERSION = 1;
     /** Magic, version, length before the payload; the checksum after it. */
     static final int HEADER_BYTES = MAGIC.length + 4 + 8;
     static final int TRAILER_BYTES = 4;
@@ -59,16 +63,31 @@ public record CheckpointFile(String sceneFileName, byte[] sceneText, String engi
         observables = List.copyOf(observables);
     }
 
+    /** A checkpoint of a run with one sample interval that keeps no outputs (what version 1 held). */
+    public CheckpointFile(String sceneFileName, byte[] sceneText, String engine, int threads,
+                          Map<String, String> tunables, double until, double time, double every, String observe,
+                          double checkpointEvery, byte[] engineState, List<ObservableState> observables,
+                          double lastVirialSum) {
+        this(sceneFileName, sceneText, engine, threads, tunables, until, time, every, observe, checkpointEvery,
+                engineState, observables, lastVirialSum, Double.NaN, SavedOutputs.NONE);
+    }
+
     /** The same run's checkpoint at another time, with another engine state and observables. */
     public CheckpointFile at(double newTime, byte[] newState, List<ObservableState> newObservables, double newLastVirial) {
         return new CheckpointFile(sceneFileName, sceneText, engine, threads, tunables, until, newTime, every, observe,
-                checkpointEvery, newState, newObservables, newLastVirial);
+                checkpointEvery, newState, newObservables, newLastVirial, otherEvery, outputs);
     }
 
     /** The same checkpoint for a run continued to {@code newUntil}, checkpointing every {@code newEvery}. */
     public CheckpointFile continuedTo(double newUntil, double newEvery) {
         return new CheckpointFile(sceneFileName, sceneText, engine, threads, tunables, newUntil, time, every, observe,
-                newEvery, engineState, observables, lastVirialSum);
+                newEvery, engineState, observables, lastVirialSum, otherEvery, outputs);
+    }
+
+    /** The same checkpoint remembering {@code requested} as the run's outputs. */
+    public CheckpointFile withOutputs(SavedOutputs requested) {
+        return new CheckpointFile(sceneFileName, sceneText, engine, threads, tunables, until, time, every, observe,
+                checkpointEvery, engineState, observables, lastVirialSum, otherEvery, requested);
     }
 
     /** The scene's text, decoded as strictly as a scene file is. */
@@ -120,6 +139,11 @@ public record CheckpointFile(String sceneFileName, byte[] sceneText, String engi
                 }
             }
             out.writeDouble(lastVirialSum);
+            out.writeDouble(otherEvery);
+            for (String path : new String[] {outputs.out(), outputs.summary(), outputs.trajectory(), outputs.report(),
+                    outputs.outState()}) {
+                putString(out, path == null ? "" : path);
+            }
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
@@ -204,8 +228,9 @@ public record CheckpointFile(String sceneFileName, byte[] sceneText, String engi
         }
         ByteBuffer header = ByteBuffer.wrap(head, MAGIC.length, 12);
         int version = header.getInt();
-        if (version != VERSION) {
-            throw new BadInputException("checkpoint format version " + version + ", this carom reads version " + VERSION);
+        if (version < OLDEST_VERSION || version > VERSION) {
+            throw new BadInputException("checkpoint format version " + version + ", this carom reads versions "
+                    + OLDEST_VERSION + " to " + VERSION);
         }
         long length = header.getLong();
         long expected = fileSize - HEADER_BYTES - TRAILER_BYTES;
@@ -218,6 +243,7 @@ public record CheckpointFile(String sceneFileName, byte[] sceneText, String engi
 
     static CheckpointFile decode(byte[] bytes) {
         int length = checkHeader(Arrays.copyOf(bytes, Math.min(bytes.length, HEADER_BYTES)), bytes.length);
+        int version = ByteBuffer.wrap(bytes, MAGIC.length, 4).getInt();
         byte[] body = Arrays.copyOfRange(bytes, HEADER_BYTES, HEADER_BYTES + length);
         int stored = ByteBuffer.wrap(bytes, HEADER_BYTES + length, 4).getInt();
         if (stored != crc(body)) {
@@ -254,6 +280,17 @@ public record CheckpointFile(String sceneFileName, byte[] sceneText, String engi
                 observables.add(new ObservableState(key, longs, doubles));
             }
             double lastVirialSum = in.readDouble();
+            double otherEvery = Double.NaN;
+            SavedOutputs outputs = SavedOutputs.NONE;
+            if (version >= 2) {
+                otherEvery = in.readDouble();
+                String[] paths = new String[5];
+                for (int k = 0; k < paths.length; k++) {
+                    String path = getString(in);
+                    paths[k] = path.isEmpty() ? null : path;
+                }
+                outputs = new SavedOutputs(paths[0], paths[1], paths[2], paths[3], paths[4]);
+            }
             if (in.available() > 0) {
                 throw new BadInputException("malformed checkpoint: " + in.available() + " bytes left over");
             }
@@ -261,7 +298,8 @@ public record CheckpointFile(String sceneFileName, byte[] sceneText, String engi
                 throw new BadInputException("malformed checkpoint: threads " + threads + ", until " + until + ", time " + time);
             }
             return new CheckpointFile(sceneFileName, sceneText, engine, threads, tunables, until, time, every,
-                    observe.isEmpty() ? null : observe, checkpointEvery, engineState, observables, lastVirialSum);
+                    observe.isEmpty() ? null : observe, checkpointEvery, engineState, observables, lastVirialSum,
+                    otherEvery, outputs);
         } catch (EOFException e) {
             throw new BadInputException("malformed checkpoint: it ends early");
         } catch (IOException e) {

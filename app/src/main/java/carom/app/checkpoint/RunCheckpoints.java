@@ -43,6 +43,11 @@ public final class RunCheckpoints implements Checkpoints {
         stopSignal = signal;
     }
 
+    /** The outputs the checkpoints remember, which {@code resume} writes when given none. */
+    public SavedOutputs outputs() {
+        return settings.outputs();
+    }
+
     /** The signal that asked the run to stop, 0 if none. */
     public int stopSignal() {
         return stopSignal;

@@ -4,6 +4,8 @@ import carom.core.BadInputException;
 import carom.core.Quoted;
 import carom.core.engine.Sampler;
 import carom.core.observe.CollisionObserver;
+import carom.core.observe.Observables;
+import carom.core.observe.VirialAccumulator;
 import carom.core.scene.Box;
 import carom.core.scene.Scene;
 import carom.core.scene.Species;
@@ -25,9 +27,19 @@ import java.util.List;
  * MDAnalysis, OVITO and HOOMD-blue read directly. Every frame holds {@code configuration/step} (the
  * sample's number k, t = k·every), {@code particles/position} (float32, the box centred on the origin as
  * HOOMD's is, z = 0), {@code particles/velocity} (float32, vz = 0), {@code particles/image} (int32, z =
- * 0), {@code log/carom/time} (float64, the simulated time) and, if the engine tells its collisions, {@code
- * log/carom/collisions} (uint64, the collisions this run has carried out up to the sample; a resumed run
- * counts from its checkpoint). Frame 0 also holds what does not change: {@code configuration/dimensions} = 2,
+ * 0) and carom's {@code log/} values (float64 or uint64, one row):
+ * <ul>
+ *   <li>{@code log/carom/time}: the simulated time;
+ *   <li>{@code log/carom/Z}: the compressibility factor Z = PA/(NkT) of the interval since the previous
+ *       frame, by the {@code pressure} observable's formula and from the same virial: {@link
+ *       VirialAccumulator#compressibility} of the pair collisions' virial in the interval, at the mean of
+ *       the mobile discs' kinetic energies at its two ends. NaN in a file's first frame, which ends no
+ *       interval (a resumed run's file too), and for an interval without kinetic energy;
+ *   <li>{@code log/carom/collisions}, only if the engine tells its collisions: the collisions this run
+ *       has carried out up to the sample (a resumed run counts from its checkpoint).
+ * </ul>
+ * Every frame holds each of these, as the schema's readers take a {@code log/} value missing from a
+ * frame from frame 0. Frame 0 also holds what does not change: {@code configuration/dimensions} = 2,
  * {@code configuration/box} = [Lx, Ly, 1, 0, 0, 0], {@code particles/N}, {@code particles/types} (the
  * species' names), {@code particles/typeid} (the species' indices), {@code particles/mass} and {@code
  * particles/diameter}, which HOOMD's readers take from frame 0 for frames without them; with growth, the
@@ -41,7 +53,8 @@ import java.util.List;
  * box as HOOMD requires. A walled box has images 0.
  *
  * <p>Implementation notes: the per-disc chunks are filled into little-endian buffers allocated once, so a
- * frame costs three passes over the discs and a few writes, and nothing per collision but a count.
+ * frame costs four passes over the discs (one for the kinetic energy of Z) and a few writes, and nothing
+ * per collision but a count.
  */
 public final class HoomdTrajectory implements Sampler, CollisionObserver, Closeable {
     private static final int SCHEMA_VERSION = GsdFile.version(1, 4);
@@ -70,6 +83,10 @@ public final class HoomdTrajectory implements Sampler, CollisionObserver, Closea
     private final double[] previousX;
     private final double[] previousY;
     private long collisions;
+    /** The previous frame's time, virial sum and kinetic energy: where the next frame's Z interval starts. */
+    private double previousTime;
+    private double previousVirialSum;
+    private double previousKineticEnergy;
 
     /**
      * A trajectory of {@code scene}'s discs sampled every {@code every}, written to {@code channel} (an
@@ -156,6 +173,8 @@ public final class HoomdTrajectory implements Sampler, CollisionObserver, Closea
             file.writeChunk("particles/image", GsdType.INT32, n, 3, images.clear());
             scalar.putDouble(0, time);
             writeSmall("log/carom/time", GsdType.DOUBLE, 1);
+            scalar.putDouble(0, compressibilitySincePreviousFrame(first, time, d, virialSum));
+            writeSmall("log/carom/Z", GsdType.DOUBLE, 1);
             if (countsCollisions) {
                 scalar.putLong(0, collisions);
                 writeSmall("log/carom/collisions", GsdType.UINT64, 1);
@@ -164,6 +183,18 @@ public final class HoomdTrajectory implements Sampler, CollisionObserver, Closea
         } catch (IOException e) {
             throw new UncheckedIOException("cannot write the trajectory: " + e.getMessage(), e);
         }
+    }
+
+    /** Z of the interval from the previous frame to this one (see the class comment); moves the interval on. */
+    private double compressibilitySincePreviousFrame(boolean first, double time, Discs d, double virialSum) {
+        double kineticEnergy = Observables.kineticEnergy(d);
+        double meanEnergy = 0.5 * (previousKineticEnergy + kineticEnergy);
+        double z = first || !(meanEnergy > 0) ? Double.NaN
+                : VirialAccumulator.compressibility(virialSum - previousVirialSum, time - previousTime, meanEnergy);
+        previousTime = time;
+        previousVirialSum = virialSum;
+        previousKineticEnergy = kineticEnergy;
+        return z;
     }
 
     /** A chunk of {@code rows} values (one a row) that the caller has just put at {@link #scalar}'s start. */

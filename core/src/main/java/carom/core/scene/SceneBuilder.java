@@ -29,7 +29,11 @@ public final class SceneBuilder {
     private int explicitCount;
     private int[] explicitSpecies = new int[16];
     private double[] explicitState = new double[16 * 4];
+    /** Each explicit disc's own radius, NaN where it has its species'. */
+    private double[] explicitRadius = new double[16];
     private final List<GenerateBlock> blocks = new ArrayList<>();
+    /** The discs that replace the scene's own, or null ({@link #withDiscsFrom}). */
+    private DiscSource replacement;
 
     public static SceneBuilder create(String name) {
         return new SceneBuilder().name(name);
@@ -49,6 +53,16 @@ public final class SceneBuilder {
     public SceneBuilder species(Species s) {
         species.add(s);
         return this;
+    }
+
+    /** The box set so far, or null. */
+    public Box box() {
+        return box;
+    }
+
+    /** The species added so far. */
+    public int speciesCount() {
+        return species.size();
     }
 
     public int speciesIndex(String speciesName) {
@@ -72,10 +86,17 @@ public final class SceneBuilder {
 
     /** Adds an explicit disc of species index {@code s}. */
     public SceneBuilder disc(int s, double x, double y, double vx, double vy) {
+        return disc(s, x, y, vx, vy, Double.NaN);
+    }
+
+    /** Adds an explicit disc of species index {@code s} with its own {@code radius} (NaN: its species'). */
+    public SceneBuilder disc(int s, double x, double y, double vx, double vy, double radius) {
         if (explicitCount == explicitSpecies.length) {
             explicitSpecies = Arrays.copyOf(explicitSpecies, 2 * explicitCount);
             explicitState = Arrays.copyOf(explicitState, 8 * explicitCount);
+            explicitRadius = Arrays.copyOf(explicitRadius, 2 * explicitCount);
         }
+        explicitRadius[explicitCount] = radius;
         explicitSpecies[explicitCount] = s;
         explicitState[4 * explicitCount] = x;
         explicitState[4 * explicitCount + 1] = y;
@@ -90,7 +111,26 @@ public final class SceneBuilder {
         return this;
     }
 
+    /**
+     * Builds the scene with the discs of {@code source} instead of the explicit and generated ones added so
+     * far; a source without velocities gets them drawn as the first generate block's {@code velocity}
+     * says, with its seed (at rest without a block).
+     */
+    public SceneBuilder withDiscsFrom(DiscSource source) {
+        this.replacement = source;
+        return this;
+    }
+
     public Scene build() {
+        VelocityDistribution drawn = null;
+        long drawSeed = 0;
+        if (replacement != null) {
+            drawn = blocks.isEmpty() ? new VelocityDistribution.AtRest() : blocks.get(0).velocity();
+            drawSeed = blocks.isEmpty() ? 0 : blocks.get(0).seed();
+            blocks.clear();
+            explicitCount = 0;
+            replacement.addTo(this);
+        }
         checkHeader();
         long total = explicitCount;
         for (GenerateBlock b : blocks) {
@@ -109,8 +149,12 @@ public final class SceneBuilder {
         }
         for (int i = 0; i < explicitCount; i++) {
             Species s = species.get(d.species[i]);
-            d.radius[i] = s.radius();
+            d.radius[i] = Double.isNaN(explicitRadius[i]) ? s.radius() : explicitRadius[i];
             d.invMass[i] = s.inverseMass();
+            checkRadius(i, d.radius[i]);
+        }
+        if (replacement != null && !replacement.hasVelocities()) {
+            Velocities.draw(drawn, species, d, 0, explicitCount, new java.util.SplittableRandom(drawSeed), "generate[0]");
         }
         int[] blockStarts = new int[blocks.size()];
         int offset = explicitCount;
@@ -128,7 +172,17 @@ public final class SceneBuilder {
         return new Scene(name, box, species, effects, until, d, blockStarts);
     }
 
-    private void checkHeader() {
+    /** A disc's own radius: positive, finite, and in a periodic box less than a quarter of each side. */
+    private void checkRadius(int i, double r) {
+        requirePositive("particles[" + i + "].radius", r);
+        if (box.periodic() && (box.width() <= 4 * r || box.height() <= 4 * r)) {
+            throw new BadInputException(String.format(
+                    "particles[%d].radius: a periodic box must exceed twice the largest diameter (%s) in width and height, got %s x %s",
+                    i, 2 * r, box.width(), box.height()));
+        }
+    }
+
+    void checkHeader() {
         if (box == null) {
             throw new BadInputException("box: missing");
         }

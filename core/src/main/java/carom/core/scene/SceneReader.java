@@ -63,7 +63,7 @@ public final class SceneReader {
             Set.of("name", "box", "species", "particles", "generate", "effects", "until");
     private static final Set<String> BOX_KEYS = Set.of("width", "height", "boundary");
     private static final Set<String> SPECIES_KEYS = Set.of("name", "radius", "mass", "fixed");
-    private static final Set<String> PARTICLE_KEYS = Set.of("species", "x", "y", "vx", "vy");
+    private static final Set<String> PARTICLE_KEYS = Set.of("species", "x", "y", "vx", "vy", "radius");
     private static final Set<String> GENERATE_KEYS = Set.of("species", "fractions", "count", "layout", "jitter", "velocity", "seed");
     private static final Set<String> UNIFORM_KEYS = Set.of("distribution", "scale");
     private static final Set<String> MAXWELL_KEYS = Set.of("distribution", "temperature");
@@ -79,6 +79,10 @@ public final class SceneReader {
      * prefixes "error: &lt;file&gt;: ".
      */
     public static Scene read(Path file) {
+        return fromTree(parseFile(file), true).build();
+    }
+
+    private static Parsed parseFile(Path file) {
         Parsed parsed;
         // Streamed rather than read into one array, so that file size is bounded by the heap only (a pipe
         // or device is read whole, bounded in size and waiting time: PipedInput).
@@ -91,7 +95,23 @@ public final class SceneReader {
         } catch (IOException e) {
             throw new BadInputException("cannot read the file: " + ioReason(e));
         }
-        return fromTree(parsed);
+        return parsed;
+    }
+
+    /**
+     * Reads a scene file as {@link #read(Path)} does, but with the discs of {@code discs} instead of its
+     * own particles and generated discs (which are read for their form, not made): {@code simulate
+     * --from}. Bad input about the discs (outside the box, overlapping, of an unknown species) is prefixed
+     * with {@code discs.name()}.
+     */
+    public static Scene read(Path file, DiscSource discs) {
+        SceneBuilder builder = fromTree(parseFile(file), false);
+        builder.checkHeader();
+        try {
+            return builder.withDiscsFrom(discs).build();
+        } catch (BadInputException e) {
+            throw new BadInputException(discs.name() + ": " + e.getMessage());
+        }
     }
 
     /** Same, from JSON text. */
@@ -104,7 +124,7 @@ public final class SceneReader {
         } catch (IOException e) {
             throw new UncheckedIOException(e); // a string has no I/O to fail
         }
-        return fromTree(parsed);
+        return fromTree(parsed, true).build();
     }
 
     /**
@@ -159,6 +179,8 @@ public final class SceneReader {
         private int count;
         private int[] nameOf = new int[16];
         private double[] state = new double[64];
+        /** Each particle's own radius, NaN where it has its species'. */
+        private double[] radius = new double[16];
         private final List<String> names = new ArrayList<>();
         private final Map<String, Integer> nameIndex = new HashMap<>();
         private JsonNode failed;
@@ -179,6 +201,7 @@ public final class SceneReader {
             if (count == nameOf.length) {
                 nameOf = Arrays.copyOf(nameOf, 2 * count);
                 state = Arrays.copyOf(state, 8 * count);
+                radius = Arrays.copyOf(radius, 2 * count);
             }
             try {
                 nameOf[count] = readParticle(node, "particles[" + k + "]",
@@ -186,6 +209,7 @@ public final class SceneReader {
                             names.add(n);
                             return names.size() - 1;
                         }), state, 4 * count);
+                radius[count] = optionalNumber(node, "particles[" + k + "]", "radius", Double.NaN);
                 count++;
             } catch (BadInputException e) {
                 failed = node;
@@ -205,11 +229,12 @@ public final class SceneReader {
                     throw unknownSpecies("particles[" + k + "]", names.get(nameOf[k]), species);
                 }
                 int at = 4 * k;
-                builder.disc(s, state[at], state[at + 1], state[at + 2], state[at + 3]);
+                builder.disc(s, state[at], state[at + 1], state[at + 2], state[at + 3], radius[k]);
             }
             if (failed != null) {
                 String path = "particles[" + failedAt + "]";
                 readParticle(failed, path, name -> speciesRef(name, path, speciesByName, species), new double[4], 0);
+                optionalNumber(failed, path, "radius", Double.NaN);
                 throw new IllegalStateException(path + " failed a check once and passed it later");
             }
         }
@@ -231,7 +256,8 @@ public final class SceneReader {
         return s;
     }
 
-    private static Scene fromTree(Parsed parsed) {
+    /** The builder of the scene {@code parsed} holds, with its own explicit particles if {@code ownParticles}. */
+    private static SceneBuilder fromTree(Parsed parsed, boolean ownParticles) {
         JsonNode root = parsed.root();
         if (root == null || root.isMissingNode()) {
             throw new BadInputException("malformed JSON at line 1 column 1: the input is empty");
@@ -249,7 +275,7 @@ public final class SceneReader {
         JsonNode particles = root.get("particles");
         if (particles != null) {
             array(particles, "particles");
-            if (parsed.particles() != null) {
+            if (parsed.particles() != null && ownParticles) {
                 parsed.particles().addTo(builder, speciesByName, species);
             }
         }
@@ -260,7 +286,7 @@ public final class SceneReader {
         JsonNode effects = root.get("effects");
         builder.effects(effects == null ? Effects.NONE : readEffects(object(effects, "effects")));
         builder.until(number(required(root, "", "until"), "until"));
-        return builder.build();
+        return builder;
     }
 
     private static void readBox(JsonNode box, SceneBuilder builder) {

@@ -15,7 +15,7 @@ import carom.core.scene.Scene;
 import carom.core.state.Discs;
 import carom.engines.kernel.CalendarQueue;
 import carom.engines.kernel.CellPredictor;
-import carom.engines.kernel.DiscMotion;
+import carom.engines.kernel.GrowingMotion;
 import carom.engines.kernel.DiscTable;
 import carom.engines.kernel.EventStep;
 import carom.engines.kernel.GrowthStages;
@@ -38,14 +38,14 @@ import java.util.Map;
  *       next stage built from the state. Local clocks count from the stage's start, and are
  *       re-anchored every {@link DiscTable#RESYNC_SPANS} calendar spans as in {@code fast}, with the
  *       growth's anchor moved too ({@link DiscTable#anchorGrowth}).</li>
- *   <li><b>Thermostat.</b> At every sample time (k·every) every disc is advanced to it, the sample is
- *       handed out, and all velocities are multiplied by one factor that brings the kinetic energy
- *       back to its initial value; the next stage starts from there (its predictions are all new). A
+ *   <li><b>Thermostat.</b> At every sample time (k·every) every disc is advanced to it, all velocities
+ *       are multiplied by one factor that brings the kinetic energy back to its initial value, and the
+ *       sample is handed out (so the sample at until is the final state); the next stage starts from there (its predictions are all new). A
  *       compression ({@code energyCap} finite) also rescales whenever the kinetic energy has grown
  *       {@code energyCap} times: near jamming the collisions pump energy in faster and faster, and
  *       without that the number of collisions to a given pressure grows like the pressure itself
  *       instead of like its logarithm.</li>
- *   <li><b>Energy account.</b> Collisions add kinetic energy ({@link DiscMotion#energyAdded}); the
+ *   <li><b>Energy account.</b> Collisions add kinetic energy ({@link GrowingMotion#energyAdded}); the
  *       thermostat takes it out; both are kept ({@link #energyAdded}, {@link #energyRemoved}).</li>
  *   <li><b>Pressure.</b> Between two rescalings, Z = 1 + W / (2 ∫KE dt) with W the collision virial:
  *       the kinetic energy is piecewise constant, so its integral is kept exactly from each
@@ -83,7 +83,7 @@ public final class GrowthRun {
 
     // The stage under way.
     private DiscTable table;
-    private DiscMotion motion;
+    private GrowingMotion motion;
     private CellPredictor predictor;
     private CalendarQueue queue;
     private EventStep step;
@@ -205,8 +205,8 @@ public final class GrowthRun {
         }
         table = plan.table(state, at);
         table.prefetchHints(prefetch);
-        motion = new DiscMotion(table, collisions);
-        predictor = new CellPredictor(motion);
+        motion = new GrowingMotion(table, collisions);
+        predictor = CellPredictor.of(motion, null);
         queue = table.newCalendar(n);
         EventStep previous = step;
         step = new EventStep(table, motion, predictor, null, queue, stallGuard, virial, null);
@@ -273,17 +273,18 @@ public final class GrowthRun {
         double at = agenda.epoch() + local;
         motion.finalRange(state, 0, n, local, at);
         boolean sampleDue = samples.next() <= at;
+        if (sampleDue || capReached) {
+            endInterval(at);
+            rescale();
+            capReached = false;
+        }
         if (sampleDue) {
+            // After the thermostat: a sample is the state the run goes on from, the last one the final state.
             Discs s = samples.state();
             copyInto(state, s);
             grownRadii(s, at);
             samples.emit(virial.total());
             agenda.sampled();
-        }
-        if (sampleDue || capReached) {
-            endInterval(at);
-            rescale();
-            capReached = false;
         }
         if (lastCompressibility > stopPressure) {
             stop(Stop.PRESSURE, at);

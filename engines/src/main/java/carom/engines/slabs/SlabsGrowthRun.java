@@ -18,8 +18,8 @@ import java.util.Map;
  * A run of the slabs engine with the growth effect: a sequence of {@link SlabsRun}s, one per stage of
  * {@link GrowthStages} (each on a table whose cells hold the discs until they outgrow them, its growth
  * anchored at the stage's start and re-anchored at each of its resyncs), stages also ending at every
- * sample time, where the sample is handed out and the thermostat rescales the kinetic energy to its
- * initial value. The same stage boundaries as {@code fast}'s {@code GrowthRun}, so the two agree to
+ * sample time, where the thermostat rescales the kinetic energy to its initial value and the sample is
+ * handed out. The same stage boundaries as {@code fast}'s {@code GrowthRun}, so the two agree to
  * rounding (until chaos amplifies it).
  */
 final class SlabsGrowthRun {
@@ -50,12 +50,13 @@ final class SlabsGrowthRun {
         double epoch = 0;
         while (true) {
             if (samples.next() <= epoch) {
+                // The thermostat first: a sample is the state the run goes on from, the last one the final state.
+                GrowthStages.rescale(state, energyStart);
+                rescalings++;
                 Discs s = samples.state();
                 copyInto(state, s);
                 plan.grownRadii(state, s, epoch);
                 samples.emit(virialSum);
-                GrowthStages.rescale(state, energyStart);
-                rescalings++;
                 continue;
             }
             if (epoch >= until) {
