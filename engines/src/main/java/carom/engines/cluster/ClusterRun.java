@@ -94,7 +94,7 @@ final class ClusterRun implements WindowDomains {
     private static final int PROGRESS_WINDOWS = 64;
     private static final double INF = Double.POSITIVE_INFINITY;
 
-    private final Scene scene;
+    final Scene scene;
     private final RunOptions options;
     final double until;
     private final Duration replyTimeout;
