@@ -4,6 +4,7 @@ import carom.core.BadInputException;
 import carom.core.engine.Capability;
 import carom.core.engine.Engine;
 import carom.engines.EngineCatalog;
+import carom.engines.cluster.ClusterEngine;
 import java.util.Map;
 
 /**
@@ -18,11 +19,33 @@ final class ClusterOptions {
 
     /** The engine to run: with {@code --seed-nodes}, the engine over those running workers. */
     static Engine withSeeds(Engine engine, String seedNodes) {
+        return withSeeds(engine, seedNodes, null);
+    }
+
+    /**
+     * The engine to run: with {@code --seed-nodes}, the engine over those running workers, over TLS with
+     * the keys in folder {@code keys} ({@code --keys}; null: none, which only seeds on loopback allow).
+     */
+    static Engine withSeeds(Engine engine, String seedNodes, String keys) {
         if (seedNodes == null) {
+            if (keys != null) {
+                throw new BadInputException("--keys: only with --seed-nodes (a --nodes run makes keys of its own)");
+            }
             return engine;
         }
         refuseUnlessOnNodes("--seed-nodes", engine);
-        return engine.overWorkers(java.util.List.of(seedNodes.split(",", -1)));
+        java.util.List<String> seeds = java.util.List.of(seedNodes.split(",", -1));
+        Engine over = engine.overWorkers(seeds);
+        if (keys == null) {
+            for (String seed : seeds) {
+                ClusterEngine.refuseOpenHostWithoutKeys("--seed-nodes", seed.substring(0, seed.lastIndexOf(':')), false);
+            }
+            return over;
+        }
+        if (!(over instanceof ClusterEngine cluster)) {
+            throw new BadInputException("--keys: engine " + engine.name() + " takes no keys");
+        }
+        return cluster.withKeys(new SceneFile(keys).path());
     }
 
     static void putNodes(Engine engine, Integer nodes, Map<String, String> tunables) {

@@ -230,7 +230,7 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
         Integer named = command.threads == null ? null : OptionChecks.threads(command.threads);
         SceneFile file = new SceneFile(command.sceneFile);
         Engine engine = ClusterOptions.withSeeds(file.about(() -> EnginesCommand.engineNamed(command.engineName)),
-                command.seedNodes);
+                command.seedNodes, command.keys);
         int threads = named != null ? named : EnginesCommand.defaultThreads(engine);
         ClusterOptions.checkThreads(engine, threads);
         ClusterOptions.putNodes(engine, command.nodes, command.tunables);

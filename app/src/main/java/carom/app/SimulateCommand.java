@@ -63,6 +63,10 @@ final class SimulateCommand implements Callable<Integer> {
             description = "Engine cluster: use running workers ('carom node') reached through these seed nodes instead of starting workers.")
     String seedNodes;
 
+    @Option(names = "--keys", paramLabel = "DIR",
+            description = "Engine cluster with --seed-nodes: the cluster's keys ('carom node --make-keys'), for workers started with --keys.")
+    String keys;
+
     @Mixin
     FinalOutputOptions finals;
 

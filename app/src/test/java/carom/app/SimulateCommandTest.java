@@ -184,7 +184,7 @@ class SimulateCommandTest {
         Cli bad = Cli.run("simulate", scene.toString(), "--engine", "stripes", "--option", "stepFactor=-1",
                 "--out", out.toString());
         assertThat(bad.status()).isEqualTo(2);
-        assertThat(bad.firstErrorLine()).isEqualTo("error: --option stepFactor: must be > 0, got -1");
+        assertThat(bad.firstErrorLine()).isEqualTo("error: --option stepFactor: must be in [0.001, 1000], got -1");
         assertThat(bad.err()).doesNotContain("Exception");
         assertThat(out).doesNotExist();
     }

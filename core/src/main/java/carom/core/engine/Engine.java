@@ -55,10 +55,11 @@ public interface Engine {
      * as they were. The result is the whole run's: collisions and counters from t = 0, the initial
      * energy and momentum of the scene. A state that does not fit is an {@link IllegalArgumentException}.
      * Only engines with {@link Capability#CHECKPOINTS} resume; commands refuse {@code --checkpoint} for
-     * the others before anything runs, and those ignore {@link RunOptions#checkpoints()}.
+     * the others before anything runs, and those ignore {@link RunOptions#checkpoints()}. A checkpoint
+     * that names such an engine (none writes one) does not fit either: the default refuses it so.
      */
     default RunResult resume(Scene scene, RunOptions options, byte[] saved) {
-        throw new UnsupportedOperationException(name() + " cannot resume from a checkpoint");
+        throw new IllegalArgumentException("engine " + name() + " cannot resume from a checkpoint");
     }
 
     /**

@@ -224,6 +224,29 @@ public final class StateBytes {
             return a;
         }
 
+        /** Bytes not read yet: what bounds a length read next before anything is allocated for it. */
+        public int remaining() {
+            return buffer.remaining();
+        }
+
+        /** A finite double (a time, a position, a sum), else the state is refused naming {@code what}. */
+        public double getFinite(String what) {
+            double v = getDouble();
+            if (!Double.isFinite(v)) {
+                throw new IllegalArgumentException("engine state: " + what + " of " + v);
+            }
+            return v;
+        }
+
+        /** A count that cannot be negative, else the state is refused naming {@code what}. */
+        public long getCount(String what) {
+            long v = getLong();
+            if (v < 0) {
+                throw new IllegalArgumentException("engine state: " + what + " of " + v);
+            }
+            return v;
+        }
+
         /** Fails unless every byte was read. */
         public void end() {
             if (buffer.hasRemaining()) {

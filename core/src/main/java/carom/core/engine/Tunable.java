@@ -19,6 +19,12 @@ import java.util.regex.Pattern;
  * @param <T> the parsed value's type
  */
 public sealed interface Tunable<T> permits Tunable.Real, Tunable.Whole, Tunable.Flag {
+    /**
+     * The longest wait a setting in seconds may ask for (about eleven days): beyond it a timeout is no
+     * longer a timeout, and milliseconds of it overflow what the timers take.
+     */
+    double MOST_SECONDS = 1e6;
+
     /** The key after {@code --option}. */
     String name();
 

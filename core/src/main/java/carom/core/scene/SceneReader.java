@@ -84,8 +84,9 @@ public final class SceneReader {
 
     private static Parsed parseFile(Path file) {
         Parsed parsed;
-        // Streamed rather than read into one array, so that file size is bounded by the heap only.
-        try (InputStream in = Files.newInputStream(file); Reader text = StrictUtf8.reader(in)) {
+        // Streamed rather than read into one array, so that file size is bounded by the heap only (a pipe
+        // or device is read whole, bounded in size and waiting time: PipedInput).
+        try (InputStream in = PipedInput.open(file); Reader text = StrictUtf8.reader(in)) {
             parsed = parse(MAPPER.createParser(text));
         } catch (JsonProcessingException e) {
             throw malformed(e);

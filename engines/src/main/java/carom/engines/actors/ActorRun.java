@@ -39,8 +39,8 @@ public abstract class ActorRun implements BlockActor.Outbox {
     public static final Tunable.Whole CELLS_PER_ACTOR = new Tunable.Whole("cellsPerActor", 1, 1, Integer.MAX_VALUE, "cells",
             "grid cells per block actor (1 is the thesis; cells over threads gives one actor per core; "
                     + "a block is a rectangle as square as possible, whole rows once it reaches a row)");
-    public static final Tunable.Real STALL_SECONDS = Tunable.Real.above("stallSeconds", 60, 0, "seconds",
-            "a run in which no message is handled for this long is stopped with error: saying where it was");
+    public static final Tunable.Real STALL_SECONDS = new Tunable.Real("stallSeconds", 60, 0, true, Tunable.MOST_SECONDS, "seconds",
+            "a run in which no message is handled for this long is stopped with error: saying where it was", null);
     public static final Tunable.Flag RELAY_MINIMUMS = new Tunable.Flag("relayMinimums", true,
             "minimum messages also carry the earliest event among the sender's other neighbours (false: the "
                     + "thesis's neighbours-only rule, which lets actors two blocks apart collide one disc at once)");

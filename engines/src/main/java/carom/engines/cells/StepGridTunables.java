@@ -8,9 +8,13 @@ public final class StepGridTunables {
     /** Cells must be more than one diameter wide so that a step can be longer than zero. */
     public static final Tunable.Real CELL_FACTOR = Tunable.Real.above("cellFactor", 2, 1, "diameters",
             "cell side over the largest diameter; wider cells allow longer steps but hold more discs");
-    public static final Tunable.Real STEP_FACTOR = Tunable.Real.above("stepFactor", 1, 0, "",
+    /**
+     * Bounded both ways: a thousandth of the guaranteed step already means a thousand times the steps
+     * (a run that never ends for a slip of a digit), and beyond a thousand every disc outruns the grid.
+     */
+    public static final Tunable.Real STEP_FACTOR = new Tunable.Real("stepFactor", 1, 1e-3, false, 1e3, "",
             "step length over what the grid guarantee allows; above 1 recreates the thesis's longer steps, "
-                    + "and discs that outrun the grid are counted as overruns");
+                    + "and discs that outrun the grid are counted as overruns", null);
 
     private StepGridTunables() {
     }

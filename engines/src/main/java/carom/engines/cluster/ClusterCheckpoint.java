@@ -92,7 +92,12 @@ final class ClusterCheckpoint {
 
     /** A saved state read into the coordinator: where its window starts, and what goes to each node. */
     record Resumed(double now, byte[][] nodeStates) {
-        /** Every node takes up its state (it holds the scene already), in parts. */
+        /**
+         * Every node takes up its state (it holds the scene already), in parts, and checks it as the
+         * kernel does (a node that refuses it makes the state one that does not fit: an
+         * IllegalArgumentException); then every disc at the checkpoint's time is checked
+         * ({@link carom.core.engine.RestoredState}), by messages the run's counters do not keep.
+         */
         void restoreNodes(ClusterRun run) {
             for (int d = 0; d < nodeStates.length; d++) {
                 byte[] state = nodeStates[d];
@@ -100,12 +105,29 @@ final class ClusterCheckpoint {
                 for (int part = 0; part < parts; part++) {
                     int p = part;
                     byte[] bytes = NodeActor.statePart(state, part);
-                    run.await(run.ask(d, "restore", rt -> new RestoreState(p, parts, bytes, rt)), d, "restore");
+                    try {
+                        run.await(run.ask(d, "restore", rt -> new RestoreState(p, parts, bytes, rt)), d, "restore");
+                    } catch (carom.core.engine.EngineFailure e) {
+                        if (e.getMessage().contains("failed at 'restore'")) {
+                            throw new IllegalArgumentException("engine state of slab " + d + ": " + e.getMessage());
+                        }
+                        throw e;
+                    }
                 }
             }
             if (run.sleepersNoted) {
                 run.tellSleepers();
             }
+            long messageCount = run.messageCount;
+            long bytes = run.bytes;
+            Map<String, Long> messages = new java.util.TreeMap<>(run.messages);
+            carom.core.state.Discs at = run.scene.newDiscs();
+            run.sampleInto(at, now);
+            run.messageCount = messageCount;
+            run.bytes = bytes;
+            run.messages.clear();
+            run.messages.putAll(messages);
+            carom.core.engine.RestoredState.check(at, run.scene.box());
         }
     }
 
@@ -122,11 +144,20 @@ final class ClusterCheckpoint {
         if (domains != run.domains) {
             throw new IllegalArgumentException("engine state: " + domains + " slabs, the run has " + run.domains);
         }
-        double savedUntil = in.getDouble();
-        double now = in.getDouble();
-        run.coordinator.resyncAt(in.getDouble());
-        run.samples.resumeAt(in.getLong());
+        double savedUntil = in.getFinite("the end time");
+        double now = in.getFinite("the checkpoint's local time");
+        double resyncAt = in.getDouble();
+        if (now < 0 || Double.isNaN(resyncAt)) {
+            throw new IllegalArgumentException("engine state: a window at local " + now + ", re-anchored at " + resyncAt);
+        }
+        run.coordinator.resyncAt(resyncAt);
+        run.samples.resumeAt(in.getCount("a sample index"));
         long[] c = in.getLongs(11);
+        for (long count : c) {
+            if (count < 0) {
+                throw new IllegalArgumentException("engine state: a count of " + count);
+            }
+        }
         WindowCounts counts = run.coordinator.counts();
         counts.windows = c[0];
         counts.commits = c[1];

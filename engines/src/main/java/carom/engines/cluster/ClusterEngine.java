@@ -60,14 +60,29 @@ public final class ClusterEngine implements Engine {
 
     /** Seed nodes of running workers ("host:port"); empty: each run starts its own workers. */
     private final List<String> seeds;
+    /** The user's TLS keys for runs over running workers; null: plain TCP (a {@code --nodes} run makes its own). */
+    private final ClusterKeys keys;
 
-    /** Runs that start their own workers on 127.0.0.1 ({@code --nodes K}). */
+    /** Runs that start their own workers on 127.0.0.1 ({@code --nodes K}), over TLS with keys made for each run. */
     public ClusterEngine() {
-        this(List.of());
+        this(List.of(), null);
     }
 
-    private ClusterEngine(List<String> seeds) {
+    private ClusterEngine(List<String> seeds, ClusterKeys keys) {
         this.seeds = List.copyOf(seeds);
+        this.keys = keys;
+    }
+
+    /**
+     * The same engine over the same workers, talking TLS with the keys in {@code folder}
+     * ({@link ClusterKeys#read}: bad input unless they are complete and private), as workers started
+     * with {@code carom node --keys} require.
+     */
+    public ClusterEngine withKeys(java.nio.file.Path folder) {
+        if (seeds.isEmpty()) {
+            throw new BadInputException("--keys: only with --seed-nodes (a --nodes run makes keys of its own)");
+        }
+        return new ClusterEngine(seeds, ClusterKeys.read(folder));
     }
 
     /**
@@ -81,7 +96,25 @@ public final class ClusterEngine implements Engine {
         for (String seed : seeds) {
             checkHostPort("--seed-nodes", seed);
         }
-        return new ClusterEngine(seeds);
+        return new ClusterEngine(seeds, null);
+    }
+
+    /**
+     * Bad input for a {@code host} other than loopback without keys ({@code keysGiven} false): its plain
+     * TCP would let anyone who can reach it into the cluster. {@code option} names where it came from.
+     */
+    public static void refuseOpenHostWithoutKeys(String option, String host, boolean keysGiven) {
+        if (!keysGiven && !isLoopback(host)) {
+            throw new BadInputException(option + ": " + host + " is not this machine's loopback: without --keys"
+                    + " anyone who can reach it could join the cluster; make keys with 'carom node --make-keys DIR'"
+                    + " and give every node and run --keys");
+        }
+    }
+
+    /** Whether {@code host} names the loopback interface (127.0.0.0/8, ::1, localhost). */
+    public static boolean isLoopback(String host) {
+        String h = host.startsWith("[") && host.endsWith("]") ? host.substring(1, host.length() - 1) : host;
+        return h.equals("localhost") || h.equals("::1") || h.matches("127\\.\\d{1,3}\\.\\d{1,3}\\.\\d{1,3}");
     }
 
     /** A {@code HOST:PORT} (port 1 to 65535), else bad input naming {@code option}. */
@@ -111,7 +144,7 @@ public final class ClusterEngine implements Engine {
     public RunResult run(Scene scene, RunOptions options) {
         checkSupports(scene);
         checkSlabsPerJvm(options.threads());
-        return new ClusterRun(scene, options, seeds).run();
+        return new ClusterRun(scene, options, seeds, keys).run();
     }
 
     @Override
@@ -135,7 +168,7 @@ public final class ClusterEngine implements Engine {
     @Override
     public RunResult resume(Scene scene, RunOptions options, byte[] saved) {
         checkSupports(scene);
-        ClusterRun run = new ClusterRun(scene, options, seeds);
+        ClusterRun run = new ClusterRun(scene, options, seeds, keys);
         RunResult result = run.run(saved);
         return result.resumedAfter(run.collisionsBefore);
     }

@@ -47,8 +47,13 @@ final class ClusterLife implements AutoCloseable {
     /** How long a node of running workers must stay unreachable to count as lost ({@link #lostNode}). */
     private final Duration lostAfter;
 
-    private ClusterLife(ActorSystem<NodeCommand> system, List<Process> workers, List<Path> workerLogs, Duration lostAfter) {
+    /** The run's TLS keys: made for it ({@link #local}, removed at the end) or the user's; null: plain TCP. */
+    private final ClusterKeys keys;
+
+    private ClusterLife(ActorSystem<NodeCommand> system, List<Process> workers, List<Path> workerLogs, Duration lostAfter,
+                        ClusterKeys keys) {
         this.system = system;
+        this.keys = keys;
         this.lostAfter = lostAfter;
         this.workers = workers;
         this.workerLogs = workerLogs;
@@ -59,8 +64,22 @@ final class ClusterLife implements AutoCloseable {
     /** The most slabs one JVM hosts ({@code --threads} of a cluster run). */
     static final int MAX_SLABS_PER_NODE = 64;
 
-    /** Akka's configuration of a node at host:port joining {@code seeds} ("host:port" each). */
-    static Config config(String host, int port, List<String> seeds) {
+    /**
+     * Akka's configuration of a node at host:port joining {@code seeds} ("host:port" each), over TLS with
+     * mutual authentication with {@code keys} ({@link ClusterKeys}), or plain TCP if null.
+     *
+     * <p>Untrusted mode is on: Artery drops inbound system messages (remote watch, remote deployment),
+     * messages marked possibly harmful ({@code PoisonPill}, {@code Kill}) and actor selections except to
+     * the cluster's own daemons, which membership, heartbeats and the receptionist's replication reach by
+     * selection. The cluster engine needs none of what it drops: its nodes and coordinator talk through
+     * actor references and watch nothing remote.
+     */
+    static Config config(String host, int port, List<String> seeds, ClusterKeys keys) {
+        Config plain = config(host, port, seeds);
+        return keys == null ? plain : keys.applyTo(plain).resolve();
+    }
+
+    private static Config config(String host, int port, List<String> seeds) {
         StringBuilder s = new StringBuilder();
         for (String seed : seeds) {
             s.append(s.isEmpty() ? "" : ", ").append("\"akka://carom@").append(seed).append('"');
@@ -87,6 +106,9 @@ final class ClusterLife implements AutoCloseable {
                     canonical.hostname = "%s"
                     canonical.port = %d
                     advanced.maximum-frame-size = 4MiB
+                    untrusted-mode = on
+                    trusted-selection-paths = ["/system/cluster/core/daemon", "/system/cluster/heartbeatReceiver",
+                      "/system/clusterReceptionist/replicator", "/system/ddataReplicator"]
                   }
                   cluster {
                     seed-nodes = [%s]
@@ -119,16 +141,26 @@ final class ClusterLife implements AutoCloseable {
 
     /**
      * A cluster of {@code count} JVMs on this machine: this one, as the seed, and {@code count - 1}
-     * workers it starts with the same java and class path; waits up to {@code joinTimeout} for all.
+     * workers it starts with the same java and class path; waits up to {@code joinTimeout} for all. They
+     * talk over TLS with keys made for this run ({@link ClusterKeys#forRun}), which only its JVMs hold.
      */
     static ClusterLife local(int count, Duration joinTimeout) {
         int port = freePort();
-        ActorSystem<NodeCommand> system = ActorSystem.create(NodeActor.create(), "carom",
-                config("127.0.0.1", port, List.of("127.0.0.1:" + port)));
+        ClusterKeys keys = count > 1 ? ClusterKeys.forRun() : null;
+        ActorSystem<NodeCommand> system;
+        try {
+            system = ActorSystem.create(NodeActor.ofCoordinator(), "carom",
+                    config("127.0.0.1", port, List.of("127.0.0.1:" + port), keys));
+        } catch (RuntimeException | Error e) {
+            if (keys != null) {
+                keys.close();
+            }
+            throw e;
+        }
         List<Process> workers = new ArrayList<>();
         List<Path> logs = new ArrayList<>();
         // Workers started here are lost only when their process ends, never for being unreachable.
-        ClusterLife life = new ClusterLife(system, workers, logs, Duration.ZERO);
+        ClusterLife life = new ClusterLife(system, workers, logs, Duration.ZERO, keys);
         try {
             String javaBin = ProcessHandle.current().info().command().orElse(Path.of(System.getProperty("java.home"), "bin", "java").toString());
             for (int w = 1; w < count; w++) {
@@ -147,7 +179,8 @@ final class ClusterLife implements AutoCloseable {
                 }
                 cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), ClusterWorker.class.getName(),
                         "--join", "127.0.0.1:" + port, "--host", "127.0.0.1", "--port", Integer.toString(workerPort),
-                        ClusterWorker.EXIT_WITH_STDIN, ClusterWorker.LOG, log.toString()));
+                        ClusterWorker.EXIT_WITH_STDIN, ClusterWorker.LOG, log.toString(),
+                        ClusterWorker.KEYS, keys.folder().toString()));
                 // Its output goes to its log; its standard error is this JVM's, for the one line it
                 // prints should this JVM die first (ClusterWorker).
                 Process p = new ProcessBuilder(cmd).redirectOutput(log.toFile())
@@ -170,13 +203,14 @@ final class ClusterLife implements AutoCloseable {
     /**
      * A cluster of this JVM and {@code count - 1} running workers ({@code carom node}) reached through
      * {@code seeds}; this JVM listens on {@code host}:{@code port} (0: a free one). A worker unreachable
-     * for {@code lostAfter} without a break is lost ({@link #lostNode}).
+     * for {@code lostAfter} without a break is lost ({@link #lostNode}). With {@code keys} (the user's,
+     * null for none) the run talks TLS, as its workers must.
      */
     static ClusterLife joining(List<String> seeds, String host, int port, int count, Duration joinTimeout,
-                               Duration lostAfter) {
-        ActorSystem<NodeCommand> system = ActorSystem.create(NodeActor.create(), "carom",
-                config(host, port == 0 ? freePort() : port, seeds));
-        ClusterLife life = new ClusterLife(system, new ArrayList<>(), new ArrayList<>(), lostAfter);
+                               Duration lostAfter, ClusterKeys keys) {
+        ActorSystem<NodeCommand> system = ActorSystem.create(NodeActor.ofCoordinator(), "carom",
+                config(host, port == 0 ? freePort() : port, seeds, keys));
+        ClusterLife life = new ClusterLife(system, new ArrayList<>(), new ArrayList<>(), lostAfter, null);
         try {
             life.awaitNodes(count, joinTimeout);
             return life;
@@ -249,14 +283,15 @@ final class ClusterLife implements AutoCloseable {
 
     /**
      * The nodes a run's slabs go to: {@code perJvm} on every JVM (its guardian and {@code perJvm - 1}
-     * node actors it spawns beside it, the previous run's stopped), JVM by JVM, this JVM's first.
+     * node actors it spawns beside it, the previous run's stopped), JVM by JVM, this JVM's first, for
+     * run {@code run} (its secret number: {@link Protocol.ForRun}).
      */
-    List<ActorRef<NodeCommand>> hostSlabs(int perJvm, Duration timeout) {
+    List<ActorRef<NodeCommand>> hostSlabs(int perJvm, long run, Duration timeout) {
         List<ActorRef<NodeCommand>> all = new ArrayList<>();
         for (ActorRef<NodeCommand> node : nodes) {
             Protocol.Reply r;
             try {
-                r = AskPattern.<NodeCommand, Protocol.Reply>ask(node, rt -> new Protocol.Host(perJvm, rt), timeout,
+                r = AskPattern.<NodeCommand, Protocol.Reply>ask(node, rt -> new Protocol.Host(perJvm, run, rt), timeout,
                         system.scheduler()).toCompletableFuture().get(timeout.toMillis() + 1000, TimeUnit.MILLISECONDS);
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
@@ -264,7 +299,7 @@ final class ClusterLife implements AutoCloseable {
             } catch (java.util.concurrent.ExecutionException | java.util.concurrent.TimeoutException e) {
                 throw new IllegalStateException("cluster: node at " + node.path().address() + " did not get ready: " + e);
             }
-            if (!(r instanceof Protocol.Hosted hosted)) {
+            if (!(r instanceof Protocol.Hosted hosted) || hosted.nodes() == null || hosted.nodes().size() != perJvm) {
                 throw new IllegalStateException("cluster: node at " + node.path().address() + " could not host "
                         + perJvm + " slabs: " + r);
             }
@@ -407,9 +442,12 @@ final class ClusterLife implements AutoCloseable {
         }
     }
 
-    /** Destroys every worker and its descendants, waits for them, and removes their logs. */
+    /** Destroys every worker and its descendants, waits for them, and removes their logs and the run's keys. */
     private void destroyWorkers() {
         destroyAndWait(workers);
+        if (keys != null) {
+            keys.close();
+        }
         for (Path log : workerLogs) {
             try {
                 Files.deleteIfExists(log);

@@ -81,12 +81,12 @@ import java.util.function.ObjIntConsumer;
 final class ClusterRun implements WindowDomains {
     static final Tunable.Whole NODES = new Tunable.Whole("nodes", 2, 1, 64, "JVMs",
             "JVMs of the cluster: this one and nodes-1 workers it starts on 127.0.0.1 (--nodes K sets it)");
-    static final Tunable.Real JOIN_SECONDS = Tunable.Real.above("joinSeconds", 120, 0, "seconds",
-            "how long the coordinator waits for every node to join before it stops with error: naming the missing ones");
-    static final Tunable.Real LOST_SECONDS = Tunable.Real.above("lostSeconds", 20, 0, "seconds",
-            "how long a worker of --seed-nodes must stay unreachable (beyond the failure detector's 10 s pause) before the run goes on without it");
-    static final Tunable.Real REPLY_SECONDS = Tunable.Real.above("replySeconds", 600, 0, "seconds",
-            "how long the coordinator waits for a node's answer to one command");
+    static final Tunable.Real JOIN_SECONDS = new Tunable.Real("joinSeconds", 120, 0, true, Tunable.MOST_SECONDS, "seconds",
+            "how long the coordinator waits for every node to join before it stops with error: naming the missing ones", null);
+    static final Tunable.Real LOST_SECONDS = new Tunable.Real("lostSeconds", 20, 0, true, Tunable.MOST_SECONDS, "seconds",
+            "how long a worker of --seed-nodes must stay unreachable (beyond the failure detector's 10 s pause) before the run goes on without it", null);
+    static final Tunable.Real REPLY_SECONDS = new Tunable.Real("replySeconds", 600, 0, true, Tunable.MOST_SECONDS, "seconds",
+            "how long the coordinator waits for a node's answer to one command", null);
     static final Tunable.Whole CHECKPOINT_WINDOWS = new Tunable.Whole("checkpointWindows", 1024, 1, 1L << 40, "windows",
             "windows between the checkpoints a lost worker is recovered from (each costs every disc's state in messages)");
     private static final int CHUNK = 1 << 14;
@@ -94,7 +94,7 @@ final class ClusterRun implements WindowDomains {
     private static final int PROGRESS_WINDOWS = 64;
     private static final double INF = Double.POSITIVE_INFINITY;
 
-    private final Scene scene;
+    final Scene scene;
     private final RunOptions options;
     final double until;
     private final Duration replyTimeout;
@@ -141,9 +141,23 @@ final class ClusterRun implements WindowDomains {
 
     /** Seed nodes of running workers to join ("host:port"), or empty to start workers on 127.0.0.1. */
     private final List<String> seeds;
+    /** This run's secret number: every command goes sealed with it ({@link Protocol.ForRun}); never 0. */
+    private final long runNumber = secretNumber();
 
-    ClusterRun(Scene scene, RunOptions options, List<String> seeds) {
+    private static long secretNumber() {
+        long n;
+        do {
+            n = new java.security.SecureRandom().nextLong();
+        } while (n == 0);
+        return n;
+    }
+
+    /** The user's TLS keys for a run over running workers, or null (plain TCP; a {@code --nodes} run makes its own). */
+    private final ClusterKeys keys;
+
+    ClusterRun(Scene scene, RunOptions options, List<String> seeds, ClusterKeys keys) {
         this.seeds = seeds;
+        this.keys = keys;
         this.scene = scene;
         this.options = options;
         this.until = options.until();
@@ -176,11 +190,11 @@ final class ClusterRun implements WindowDomains {
         ClusterCheckpoint.Resumed resumed = saved == null ? null : ClusterCheckpoint.read(this, saved);
         try (ClusterLife life = seeds.isEmpty() ? ClusterLife.local(count, join)
                 : ClusterLife.joining(seeds, ClusterLife.ownHost(seeds), 0, count, join,
-                        Duration.ofMillis((long) (LOST_SECONDS.of(options) * 1000)))) {
+                        Duration.ofMillis((long) (LOST_SECONDS.of(options) * 1000)), keys)) {
             this.life = life;
             system = life.system();
             serialization = SerializationExtension.get(system.classicSystem());
-            nodes = life.hostSlabs(slabsPerJvm, replyTimeout);
+            nodes = life.hostSlabs(slabsPerJvm, runNumber, replyTimeout);
             long started = System.nanoTime();
             for (int d = 0; d < nodes.size(); d++) {
                 sendScene(d, initial);
@@ -546,8 +560,9 @@ final class ClusterRun implements WindowDomains {
     }
 
     private void tell(int d, String type, NodeCommand m) {
-        count(type, m);
-        nodes.get(d).tell(m);
+        NodeCommand sealed = new Protocol.ForRun(runNumber, m);
+        count(type, sealed);
+        nodes.get(d).tell(sealed);
     }
 
     private void count(String type, Object m) {
@@ -558,7 +573,7 @@ final class ClusterRun implements WindowDomains {
 
     CompletableFuture<Reply> ask(int d, String type, Function<ActorRef<Reply>, NodeCommand> make) {
         return AskPattern.<NodeCommand, Reply>ask(nodes.get(d), rt -> {
-            NodeCommand m = make.apply(rt);
+            NodeCommand m = new Protocol.ForRun(runNumber, make.apply(rt));
             count(type, m);
             return m;
         }, replyTimeout, system.scheduler()).toCompletableFuture();

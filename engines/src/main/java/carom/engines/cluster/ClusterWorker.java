@@ -21,19 +21,22 @@ public final class ClusterWorker {
     static final String EXIT_WITH_STDIN = "--exit-with-stdin";
     /** Hidden option: the worker's log (its standard output), removed when it exits on its own. */
     static final String LOG = "--log";
+    /** Hidden option: the folder of a run's TLS keys ({@link ClusterKeys}); {@code carom node --keys} gives the user's. */
+    static final String KEYS = "--keys";
     /** Exit status of a worker whose coordinator is gone. */
     static final int ORPHANED = 1;
 
     private ClusterWorker() {
     }
 
-    /** Arguments: {@code --join HOST:PORT[,HOST:PORT...] [--host H] [--port P] [--exit-with-stdin]}. */
+    /** Arguments: {@code --join HOST:PORT[,HOST:PORT...] [--host H] [--port P] [--keys DIR] [--exit-with-stdin]}. */
     public static void main(String[] args) {
         List<String> seeds = new ArrayList<>();
         String host = "127.0.0.1";
         int port = 0;
         boolean exitWithStdin = false;
         String log = null;
+        String keys = null;
         for (int k = 0; k < args.length; k++) {
             switch (args[k]) {
                 case "--join" -> seeds.addAll(List.of(args[++k].split(",")));
@@ -41,6 +44,7 @@ public final class ClusterWorker {
                 case "--port" -> port = Integer.parseInt(args[++k]);
                 case EXIT_WITH_STDIN -> exitWithStdin = true;
                 case LOG -> log = args[++k];
+                case KEYS -> keys = args[++k];
                 default -> {
                     System.err.println("error: node: unknown argument '" + args[k] + "'");
                     System.exit(2);
@@ -51,7 +55,11 @@ public final class ClusterWorker {
             // Before anything else: a coordinator killed while this JVM starts must not leave it behind.
             exitWithCoordinator(host + ":" + port, log);
         }
-        ActorSystem<NodeCommand> system = start(seeds, host, port);
+        // A worker of a --nodes run serves the coordinator that started it (its one seed), nobody else.
+        ActorSystem<NodeCommand> system = ActorSystem.create(
+                exitWithStdin ? NodeActor.servingOnly(seeds.getFirst()) : NodeActor.create(), "carom",
+                ClusterLife.config(host, port == 0 ? ClusterLife.freePort() : port, seeds,
+                        keys == null ? null : ClusterKeys.read(java.nio.file.Path.of(keys))));
         system.getWhenTerminated().toCompletableFuture().join();
     }
 
@@ -101,9 +109,12 @@ public final class ClusterWorker {
         }
     }
 
-    /** Starts this JVM's node at host:port (0: a free port) joining {@code seeds}. */
-    public static ActorSystem<NodeCommand> start(List<String> seeds, String host, int port) {
+    /**
+     * Starts this JVM's node at host:port (0: a free port) joining {@code seeds}, over TLS with
+     * {@code keys} (null: plain TCP).
+     */
+    public static ActorSystem<NodeCommand> start(List<String> seeds, String host, int port, ClusterKeys keys) {
         return ActorSystem.create(NodeActor.create(), "carom",
-                ClusterLife.config(host, port == 0 ? ClusterLife.freePort() : port, seeds));
+                ClusterLife.config(host, port == 0 ? ClusterLife.freePort() : port, seeds, keys));
     }
 }

@@ -1,6 +1,8 @@
 package carom.engines.cluster;
 
 import akka.actor.typed.ActorRef;
+import com.fasterxml.jackson.annotation.JsonSubTypes;
+import com.fasterxml.jackson.annotation.JsonTypeInfo;
 import carom.engines.slabs.StateBatch;
 import java.util.List;
 
@@ -24,8 +26,25 @@ public final class Protocol {
     /**
      * A run begins on this JVM: host {@code count} slabs, this node and {@code count - 1} actors it
      * spawns beside it (the previous run's are stopped), each a node of its own to the coordinator.
+     * {@code run} is the run's secret: every later command comes sealed with it ({@link ForRun}).
      */
-    public record Host(int count, ActorRef<Reply> replyTo) implements NodeCommand {
+    public record Host(int count, long run, ActorRef<Reply> replyTo) implements NodeCommand {
+    }
+
+    /**
+     * A command of run {@code run} ({@link Host}): a node carries out only the commands of the run it
+     * hosts, so that a process which can reach its port but was never told the run's number cannot
+     * steer it. (Its command travels with its type's name, one of the commands listed: Jackson takes no
+     * other class.)
+     */
+    public record ForRun(long run, @JsonTypeInfo(use = JsonTypeInfo.Id.NAME, include = JsonTypeInfo.As.WRAPPER_ARRAY)
+            @JsonSubTypes({@JsonSubTypes.Type(SceneStart.class), @JsonSubTypes.Type(SceneChunk.class),
+                @JsonSubTypes.Type(Recover.class), @JsonSubTypes.Type(RecoverChunk.class), @JsonSubTypes.Type(Snapshot.class),
+                @JsonSubTypes.Type(Start.class), @JsonSubTypes.Type(Window.class), @JsonSubTypes.Type(Undo.class),
+                @JsonSubTypes.Type(Install.class), @JsonSubTypes.Type(Emigrate.class), @JsonSubTypes.Type(Replan.class),
+                @JsonSubTypes.Type(SampleAt.class), @JsonSubTypes.Type(SaveState.class),
+                @JsonSubTypes.Type(RestoreState.class), @JsonSubTypes.Type(Finish.class),
+                @JsonSubTypes.Type(SleepersNear.class)}) NodeCommand command) implements NodeCommand {
     }
 
     /** The nodes a {@link Host} made ready on one JVM, the asked one first. */

@@ -132,29 +132,40 @@ final class FastRun {
     RunResult resume(byte[] saved) {
         long started = System.nanoTime();
         StateBytes.In in = new StateBytes.In(saved, lists == null ? STATE_TAG : LISTS_STATE_TAG);
-        double savedUntil = in.getDouble();
-        double time = in.getDouble();
-        if (!(until >= time)) {
+        double savedUntil = in.getFinite("the end time");
+        double time = in.getFinite("the checkpoint's time");
+        if (!(until >= time) || time < 0) {
             throw new IllegalArgumentException("the checkpoint is at t = " + time + ", after until = " + until);
         }
-        double epoch = in.getDouble();
+        double epoch = in.getFinite("the clocks' epoch");
         double resyncAt = in.getDouble();
-        samples.resumeAt(in.getLong());
-        long pairCollisions = in.getLong();
-        long wallCollisions = in.getLong();
-        long events = in.getLong();
-        long crossings = in.getLong();
-        long staleEvents = in.getLong();
+        if (epoch < 0 || epoch > time || Double.isNaN(resyncAt)) {
+            throw new IllegalArgumentException("engine state: clocks anchored at " + epoch + " for t = " + time
+                    + ", next re-anchored at " + resyncAt);
+        }
+        samples.resumeAt(in.getCount("a sample index"));
+        long pairCollisions = in.getCount("a collision count");
+        long wallCollisions = in.getCount("a collision count");
+        long events = in.getCount("an event count");
+        long crossings = in.getCount("a crossing count");
+        long staleEvents = in.getCount("a stale event count");
         step.setCounts(events, pairCollisions, wallCollisions, crossings, staleEvents);
-        resyncs = in.getLong();
-        long predictionsMade = in.getLong();
+        resyncs = in.getCount("a resync count");
+        long predictionsMade = in.getCount("a prediction count");
         p.resumeCount(predictionsMade);
-        energyStart = in.getDouble();
-        momentumStart = new double[] {in.getDouble(), in.getDouble()};
-        virial.restore(in.getDoubles(), savedUntil, in.getDouble());
+        double savedEnergy = in.getDouble();
+        double[] savedMomentum = {in.getDouble(), in.getDouble()};
+        // The scene the run started from is the one in the checkpoint: the same starting energy and
+        // momentum to the bit (a changed mass or speed would otherwise pass for a drift).
+        if (Double.compare(savedEnergy, energyStart) != 0 || Double.compare(savedMomentum[0], momentumStart[0]) != 0
+                || Double.compare(savedMomentum[1], momentumStart[1]) != 0) {
+            throw new IllegalArgumentException("engine state: saved from a run that started with another energy or"
+                    + " momentum than the checkpoint's scene has (the scene was changed)");
+        }
+        virial.restore(in.getDoubles(), savedUntil, in.getFinite("a virial sum"));
         TableState.restore(table, in);
         if (lists != null) {
-            lists.resumeCounts(predictionsMade, in.getLong());
+            lists.resumeCounts(predictionsMade, in.getCount("a rebuild count"));
             lists.restore(in);
         }
         queue.restore(in);
@@ -164,10 +175,35 @@ final class FastRun {
             energyRemoved = in.getDouble();
         }
         in.end();
+        checkRestored(time - epoch);
         agenda.resumeAt(time, epoch, resyncAt);
         table.boundary.anchor(epoch);
         long before = pairCollisions + wallCollisions;
         return finish(started).resumedAfter(before);
+    }
+
+    /**
+     * Fails unless the restored discs, all at local {@code now}, lie inside the box with no overlap beyond
+     * rounding and a finite energy, every clock at or before {@code now}, and exactly the discs with an
+     * event queued: the physics of the state, after its structure ({@link TableState}, the calendar).
+     */
+    private void checkRestored(double now) {
+        queue.check();
+        int queued = 0;
+        for (int i = 0; i < n; i++) {
+            if (table.clock(i) > now) {
+                throw new IllegalArgumentException("engine state: disc " + table.sceneId(i) + " has a clock after the checkpoint");
+            }
+            if (queue.time(i) != Double.POSITIVE_INFINITY) {
+                queued++;
+            }
+        }
+        if (queued != queue.size()) {
+            throw new IllegalArgumentException("engine state: " + queued + " discs have events, the calendar holds " + queue.size());
+        }
+        Discs at = scene.newDiscs();
+        motion.stateAt(at, 0, n, now);
+        carom.core.engine.RestoredState.check(at, scene.box());
     }
 
     /** The state between two events, continuing from absolute {@code time}: see the class comment. */

@@ -138,7 +138,10 @@ public final class CalendarQueue {
                 .putDouble(width).putDouble(invWidth).putLong(cur).putInt(idle);
     }
 
-    /** Takes up the state {@link #save} wrote, over records restored by the owner. */
+    /**
+     * Takes up the state {@link #save} wrote, over records restored by the owner. The owner then checks
+     * the queues it will use ({@link #check}) before it runs on them.
+     */
     public void restore(carom.core.engine.StateBytes.In in) {
         in.getInts(head);
         int[] saved = in.getInts();
@@ -149,6 +152,53 @@ public final class CalendarQueue {
         invWidth = in.getDouble();
         cur = in.getLong();
         idle = in.getInt();
+    }
+
+    /**
+     * Fails unless the queue's structure is one its own operations could have left: a finite positive
+     * slice width and its inverse (or none, never planned and empty), a slice position and idle count in
+     * range, a heap of distinct discs, and bucket lists (walked with a bound, so that a cycle cannot hang
+     * it) of distinct discs not in the heap, linked both ways, as many as counted. Times are not judged
+     * here: queues that share their records (a parallel engine's domains) hold stale ones while another
+     * queue runs, and a queue not in use holds stale links too: only the queues an engine will run on
+     * are checked. The owner checks its discs' times against its queue ({@link #size}).
+     */
+    public void check() {
+        int n = keys.length / keyStride;
+        // Never planned (nothing to queue): no width yet; else the width rebuild set and its inverse.
+        boolean unplanned = width == 0 && invWidth == 0 && heapSize == 0 && inBuckets == 0;
+        boolean planned = width > 0 && !Double.isInfinite(width) && invWidth == 1 / width;
+        if (!(unplanned || planned) || cur < 0 || cur > MAX_SLICE || idle < 0
+                || idle > buckets || heapSize > n || inBuckets < 0 || inBuckets > n - heapSize) {
+            throw bad("a calendar of slices " + width + " wide at slice " + cur + " holding " + heapSize + " + " + inBuckets);
+        }
+        boolean[] queued = new boolean[n];
+        for (int k = 0; k < heapSize; k++) {
+            int i = heap[k];
+            if (i < 0 || i >= n || queued[i]) {
+                throw bad("the calendar's heap holds disc " + i + " out of order or out of range");
+            }
+            queued[i] = true;
+        }
+        int listed = 0;
+        for (int b = 0; b < buckets; b++) {
+            int before = NIL;
+            for (int i = head[b]; i != NIL; i = next(i)) {
+                if (i < 0 || i >= n || queued[i] || listed == inBuckets || prev(i) != before) {
+                    throw bad("the calendar's bucket " + b + " links disc " + i + " out of place");
+                }
+                queued[i] = true;
+                listed++;
+                before = i;
+            }
+        }
+        if (listed != inBuckets) {
+            throw bad("the calendar counts " + inBuckets + " discs in its buckets and links " + listed);
+        }
+    }
+
+    private static IllegalArgumentException bad(String what) {
+        return new IllegalArgumentException("engine state: " + what);
     }
 
     private long sliceOf(double t) {

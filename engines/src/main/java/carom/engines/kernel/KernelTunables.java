@@ -7,6 +7,12 @@ import carom.core.scene.Scene;
 /** The settings of the one-event-per-disc kernel, shared by {@code fast} and {@code slabs}. */
 public final class KernelTunables {
     /**
+     * The widest skin, in diameters: a list holds every disc within it, so a skin of the box's size would
+     * hold N discs per disc (N squared ints); ten diameters is some 400 neighbours at close packing.
+     */
+    static final double MAX_SKIN = 10;
+
+    /**
      * Cells a hair wider than one diameter are the best measured for one event per disc from packing
      * fraction 1/6 up (fewer neighbours to scan per prediction); in dilute gases a disc crosses several
      * cells per collision, and wider cells pay (lab/notes/cell-factor). The step-grid engines' default
@@ -25,9 +31,9 @@ public final class KernelTunables {
      * (0.63x) and did not pay at 90,000 (median 0.96x), where their 50 more bytes a disc take the run out
      * of the measuring machine's 1 MiB level-2 cache.
      */
-    public static final Tunable.Real SKIN = Tunable.Real.atLeast("skin", 0, 0, "diameters",
+    public static final Tunable.Real SKIN = new Tunable.Real("skin", 0, 0, false, MAX_SKIN, "diameters",
             "0: predict against the 3x3 cells around a disc; s > 0: against a list per disc of the discs within contact"
-                    + " distance plus s diameters, made again when the disc has moved s/2 (straight flight only)")
+                    + " distance plus s diameters, made again when the disc has moved s/2 (straight flight only)", null)
             .computedByDefault("0.5 from packing fraction 0.65 up with at most 20,000 discs, without gravity or growth; else 0");
     /**
      * Prefetch hints ({@link Prefetch}): where the native helper is loaded, from 32,768 discs up, the

@@ -155,16 +155,40 @@ public final class ListPredictor {
         out.putInt(slots).putDoubles(centre).putInts(length).putInts(list);
     }
 
-    /** Restores what {@link #save} wrote, onto a predictor made for the same scene and skin. */
+    /**
+     * Restores what {@link #save} wrote, onto a predictor made for the same scene and skin, checked: a
+     * list's size bounded by what the state holds before it is allocated, every length within it, every
+     * neighbour a disc of the scene, every centre finite (else IllegalArgumentException).
+     */
     public void restore(StateBytes.In in) {
         int saved = in.getInt();
+        int n = length.length;
+        if (saved < 1 || saved > Math.max(8, 2L * n) || (long) n * saved * Integer.BYTES > in.remaining()) {
+            throw new IllegalArgumentException("engine state: neighbour lists of " + saved + " slots for " + n + " discs");
+        }
         if (saved != slots) {
             slots = saved;
-            list = new int[Math.multiplyExact(length.length, slots)];
+            list = new int[Math.multiplyExact(n, slots)];
         }
         in.getDoubles(centre);
         in.getInts(length);
         in.getInts(list);
+        for (double c : centre) {
+            if (!Double.isFinite(c)) {
+                throw new IllegalArgumentException("engine state: a neighbour list's centre of " + c);
+            }
+        }
+        for (int i = 0; i < n; i++) {
+            if (length[i] < 0 || length[i] > slots) {
+                throw new IllegalArgumentException("engine state: a neighbour list of " + length[i] + " in " + slots + " slots");
+            }
+            for (int k = 0; k < length[i]; k++) {
+                int j = list[i * slots + k];
+                if (j < 0 || j >= n) {
+                    throw new IllegalArgumentException("engine state: disc " + j + " in a neighbour list of " + n + " discs");
+                }
+            }
+        }
     }
 
     /**

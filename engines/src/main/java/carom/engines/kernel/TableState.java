@@ -19,12 +19,91 @@ public final class TableState {
         saveRestitution(table.restitution, table.n, out);
     }
 
-    /** Overwrites a table built from the checkpoint's scene and settings with the saved records. */
+    /**
+     * Overwrites a table built from the checkpoint's scene and settings with the saved records, after
+     * checking them ({@link #check}): a crafted state is refused (IllegalArgumentException) before any
+     * event is processed on it.
+     */
     public static void restore(DiscTable table, StateBytes.In in) {
+        double[] built = table.rec.clone();
         in.getDoubles(table.rec);
         in.getInts(table.ir);
         in.getInts(table.cellHead);
         restoreRestitution(table.restitution, table.n, in);
+        check(table, built);
+    }
+
+    /**
+     * Fails unless the restored records are a state the kernel can run on: finite positions (within a
+     * box's length of the box), velocities and clocks, event times that are not NaN, the radius and inverse mass the scene gives every disc
+     * (0 for one asleep under gravity), cells, kinds and partners in range, and cell lists that hold
+     * every disc exactly once, in the cell its own record names (no cycle, so no walk over them can
+     * hang). {@code built}: the records as the scene laid them out.
+     */
+    static void check(DiscTable table, double[] built) {
+        int n = table.n;
+        int stride = table.stride;
+        double[] rec = table.rec;
+        int[] ir = table.ir;
+        for (int k = 0; k < n; k++) {
+            int at = k * stride;
+            for (int f : new int[] {DiscTable.X, DiscTable.Y, DiscTable.VX, DiscTable.VY, DiscTable.T}) {
+                if (!Double.isFinite(rec[at + f])) {
+                    throw bad("disc " + table.sceneId(k) + " has a position, velocity or clock of " + rec[at + f]);
+                }
+            }
+            double x = rec[at + DiscTable.X];
+            double y = rec[at + DiscTable.Y];
+            // Within a box's length of the box: where a record can be between its disc's crossings or list
+            // expiries (positions are wrapped at those), and what the physics check then judges exactly.
+            if (x < -table.width || x > 2 * table.width || y < -table.height || y > 2 * table.height) {
+                throw bad("disc " + table.sceneId(k) + " at (" + x + ", " + y + "), outside the box");
+            }
+            if (Double.isNaN(rec[at + DiscTable.EV])) {
+                throw bad("disc " + table.sceneId(k) + " has an event at NaN");
+            }
+            if (stride > DiscTable.R) {
+                double im = rec[at + DiscTable.IM];
+                boolean asleep = table.awakeInvMass != null && im == 0;
+                if (rec[at + DiscTable.R] != built[at + DiscTable.R] || (im != built[at + DiscTable.IM] && !asleep)) {
+                    throw bad("disc " + table.sceneId(k) + " has another radius or mass than the scene gives it");
+                }
+            }
+            int cell = ir[k * DiscTable.IS + DiscTable.CELL];
+            int col = cell & DiscTable.AXIS_MASK;
+            int row = (cell & DiscTable.CELL_MASK) >>> DiscTable.AXIS_BITS;
+            int kind = cell >>> DiscTable.KIND_SHIFT;
+            if (col >= table.cols || row >= table.rows || kind > DiscTable.EXPIRE) {
+                throw bad("disc " + table.sceneId(k) + " in cell (" + col + ", " + row + ") with event kind " + kind);
+            }
+            int partner = ir[k * DiscTable.IS + DiscTable.PARTNER];
+            if (partner != DiscTable.NONE && (partner >= n || partner < -4)) {
+                throw bad("disc " + table.sceneId(k) + " with a partner " + partner + " of " + n + " discs");
+            }
+        }
+        // Every disc in exactly one cell list, its own record's cell: walked with a bound, never round a cycle.
+        boolean[] seen = new boolean[n];
+        int listed = 0;
+        for (int c = 0; c < table.cellHead.length; c++) {
+            for (int k = table.cellHead[c]; k != DiscTable.NIL; k = ir[k * DiscTable.IS + DiscTable.CNEXT]) {
+                if (k < 0 || k >= n || seen[k] || listed == n) {
+                    throw bad("the cell lists link disc " + k + " twice or out of range");
+                }
+                int cell = ir[k * DiscTable.IS + DiscTable.CELL];
+                if (((cell & DiscTable.CELL_MASK) >>> DiscTable.AXIS_BITS) * table.cols + (cell & DiscTable.AXIS_MASK) != c) {
+                    throw bad("disc " + table.sceneId(k) + " is listed in another cell than its record's");
+                }
+                seen[k] = true;
+                listed++;
+            }
+        }
+        if (listed != n) {
+            throw bad((n - listed) + " discs are in no cell list");
+        }
+    }
+
+    private static IllegalArgumentException bad(String what) {
+        return new IllegalArgumentException("engine state: " + what);
     }
 
     /** The last collision time of discs 0..n-1 when the model remembers them (the TC model). */

@@ -40,6 +40,31 @@ final class CrossHeap {
         int[] saved = in.getInts();
         heap = Arrays.copyOf(saved, Math.max(64, saved.length));
         size = saved.length;
+        int n = pos.length;
+        if (size > n) {
+            throw bad(size + " cross events for " + n + " discs");
+        }
+        int entries = 0;
+        for (int k = 0; k < size; k++) {
+            int i = heap[k];
+            if (i < 0 || i >= n || pos[i] != k || Double.isNaN(time[i]) || partner[i] >= n
+                    || (k > 0 && time[heap[(k - 1) >>> 1]] > time[i])) {
+                throw bad("the cross events' heap holds disc " + i + " out of place");
+            }
+        }
+        for (int p : pos) {
+            if (p != -1 && (p < 0 || p >= size)) {
+                throw bad("a cross event at heap place " + p + " of " + size);
+            }
+            entries += p >= 0 ? 1 : 0;
+        }
+        if (entries != size) {
+            throw bad(entries + " discs with cross events, " + size + " in the heap");
+        }
+    }
+
+    private static IllegalArgumentException bad(String what) {
+        return new IllegalArgumentException("engine state: " + what);
     }
 
     boolean isEmpty() {

@@ -33,6 +33,12 @@ final class DiscMarks {
         in.getInts(lastEntry);
         in.getInts(requeuedIn);
         undo = in.getInt();
+        // Between windows: no mark may claim the window or undo to come (it would point into empty logs).
+        for (int i = 0; i < changedIn.length; i++) {
+            if (changedIn[i] > window || requeuedIn[i] > undo || lastEntry[i] < -1) {
+                throw new IllegalArgumentException("engine state: disc marks ahead of the run's window or undo");
+            }
+        }
     }
 
     /** Coordinator: a new window starts; no disc has changed in it yet. */

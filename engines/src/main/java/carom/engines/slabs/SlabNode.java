@@ -92,6 +92,29 @@ public final class SlabNode {
         return b.build();
     }
 
+    /**
+     * Fails (IllegalArgumentException) unless {@code batch} is a well-formed batch of this run's states:
+     * arrays of matching lengths, internal ids of this scene, finite numbers where a state has them. A
+     * message from another JVM is checked with it before any state is written.
+     */
+    public void checkBatch(StateBatch batch) {
+        int n = batch.ids().length;
+        if (batch.entries().length != n || batch.ends().length != n || batch.doubles().length != (long) n * doublesPer
+                || batch.ints().length != (long) n * SavedStates.intsPerState()) {
+            throw new IllegalArgumentException("a batch of " + n + " states with arrays of other lengths");
+        }
+        for (int id : batch.ids()) {
+            if (id < 0 || id >= table.n) {
+                throw new IllegalArgumentException("a state of disc " + id + " in a scene of " + table.n);
+            }
+        }
+        for (double v : batch.doubles()) {
+            if (Double.isNaN(v)) {
+                throw new IllegalArgumentException("a state holding NaN");
+            }
+        }
+    }
+
     /** Discs of the scene. */
     public int discs() {
         return table.n;
@@ -290,6 +313,7 @@ public final class SlabNode {
         domain.restore(in, savedUntil);
         marks.restore(in);
         in.end();
+        domain.queue.check();
     }
 
     /**

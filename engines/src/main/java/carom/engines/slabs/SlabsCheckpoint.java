@@ -46,22 +46,32 @@ final class SlabsCheckpoint {
         if (domains != run.domainCount) {
             throw new IllegalArgumentException("engine state: " + domains + " slabs, the run has " + run.domainCount);
         }
-        double savedUntil = in.getDouble();
-        double now = in.getDouble();
-        run.clock.epoch = in.getDouble();
+        double savedUntil = in.getFinite("the end time");
+        double now = in.getFinite("the checkpoint's local time");
+        run.clock.epoch = in.getFinite("the clocks' epoch");
         run.clock.untilLocal = run.until - run.clock.epoch;
-        if (!(now <= run.clock.untilLocal)) {
+        if (!(now <= run.clock.untilLocal) || now < 0 || run.clock.epoch < 0) {
             throw new IllegalArgumentException("the checkpoint is at t = " + (run.clock.epoch + now) + ", after until = "
                     + run.until);
         }
-        run.coordinator.resyncAt(in.getDouble());
+        double resyncAt = in.getDouble();
+        if (Double.isNaN(resyncAt)) {
+            throw new IllegalArgumentException("engine state: clocks next re-anchored at NaN");
+        }
+        run.coordinator.resyncAt(resyncAt);
         run.merged = in.getBoolean();
-        run.phaseEvents = in.getLong();
-        run.phaseCrossSlabEvents = in.getLong();
-        run.samples.resumeAt(in.getLong());
-        run.energyStart = in.getDouble();
-        run.momentumStart = new double[] {in.getDouble(), in.getDouble()};
-        run.serialVirial.restore(in.getDoubles(), savedUntil, in.getDouble());
+        run.phaseEvents = in.getCount("an event count");
+        run.phaseCrossSlabEvents = in.getCount("an event count");
+        run.samples.resumeAt(in.getCount("a sample index"));
+        double energy = in.getDouble();
+        double[] momentum = {in.getDouble(), in.getDouble()};
+        // The scene the run started from is the one in the checkpoint (a changed mass is not a drift).
+        if (Double.compare(energy, run.energyStart) != 0 || Double.compare(momentum[0], run.momentumStart[0]) != 0
+                || Double.compare(momentum[1], run.momentumStart[1]) != 0) {
+            throw new IllegalArgumentException("engine state: saved from a run that started with another energy or"
+                    + " momentum than the checkpoint's scene has (the scene was changed)");
+        }
+        run.serialVirial.restore(in.getDoubles(), savedUntil, in.getFinite("a virial sum"));
         if (in.getBoolean()) {
             run.tellSleepers();
         }
@@ -77,6 +87,18 @@ final class SlabsCheckpoint {
             run.marks.restore(in);
         }
         in.end();
+        // The queues the run goes on with (a queue not in use holds stale links, rebuilt before it is used).
+        if (run.merged && run.domainCount > 1) {
+            run.whole.queue.check();
+        } else {
+            for (Domain d : run.domains) {
+                d.queue.check();
+            }
+        }
+        carom.core.scene.Scene scene = run.scene;
+        carom.core.state.Discs at = scene.newDiscs();
+        run.sampleInto(at, now);
+        carom.core.engine.RestoredState.check(at, scene.box());
         run.collisionsBefore = run.counters.pairCollisions(run.counted) + run.counters.wallCollisions(run.counted);
         return now;
     }

@@ -64,7 +64,7 @@ final class SlabsRun implements WindowDomains {
     /** Windows between progress reports. */
     private static final int PROGRESS_WINDOWS = 1024;
 
-    private final Scene scene;
+    final Scene scene;
     private final int n;
     final double until;
     /** Records, grid and Morton order (the kernel's), shared by every domain. */

@@ -56,9 +56,25 @@ public final class SteppedEngine implements Engine {
         return new SteppedRun(scene, options, dtOf(scene, options)).run();
     }
 
-    /** The {@code dt} option, or {@link #defaultDt}; bad input unless a finite number > 0. */
+    /** The most steps a run may take: each costs a pass over every disc (a given {@code dt} below until/MOST_STEPS is bad input). */
+    public static final double MOST_STEPS = 1e9;
+
+    /**
+     * The {@code dt} option, or {@link #defaultDt}; bad input unless a finite number > 0 that gives at
+     * most {@link #MOST_STEPS} steps to the run's end time.
+     */
     public static double dtOf(Scene scene, RunOptions options) {
-        return DT.isGiven(options) ? DT.of(options) : defaultDt(scene, options.until());
+        if (!DT.isGiven(options)) {
+            return defaultDt(scene, options.until());
+        }
+        double dt = DT.of(options);
+        double least = options.until() / MOST_STEPS;
+        if (dt < least) {
+            throw new carom.core.BadInputException(String.format(java.util.Locale.ROOT,
+                    "--option dt: must be >= %s for a run to t = %s (at most a billion steps), got %s",
+                    least, options.until(), options.tunables().get(DT.name())));
+        }
+        return dt;
     }
 
     /**
