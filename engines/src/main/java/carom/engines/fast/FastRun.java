@@ -85,8 +85,6 @@ final class FastRun {
     private static final String STATE_TAG = "fast/1";
     /** A run with neighbour lists saves them too. */
     private static final String LISTS_STATE_TAG = "fast/lists/1";
-    /** Discs from which two threads share the first predictions (below it a thread's start costs more than it saves). */
-    private static final int PARALLEL_FIRST_PREDICTIONS = 1 << 16;
 
     FastRun(Scene scene, RunOptions options) {
         this.scene = scene;
@@ -118,58 +116,10 @@ final class FastRun {
     }
 
     RunResult run() {
-        boolean split = lists == null && n >= PARALLEL_FIRST_PREDICTIONS && Runtime.getRuntime().availableProcessors() > 1;
-        return run(split);
-    }
-
-    /** {@link #run}, the first predictions shared by two threads or not (the same result either way). */
-    RunResult run(boolean splitFirstPredictions) {
         long started = System.nanoTime();
-        if (splitFirstPredictions && lists == null) {
-            predictFirstEventsOnTwoThreads();
-        } else {
-            table.predictFirstEvents(i -> step.predictFull(i, 0));
-        }
+        table.predictFirstEvents(i -> step.predictFull(i, 0));
         replan();
         return finish(started);
-    }
-
-    /**
-     * Every mobile disc's first event at local 0, the upper half of the discs predicted by a second
-     * thread with a predictor of its own: a prediction at the start reads the records and writes only
-     * its own disc's, so the split gives the same events and the same count of predictions as one
-     * thread (with cell scans; neighbour lists build their lists as they predict).
-     */
-    private void predictFirstEventsOnTwoThreads() {
-        CellPredictor helper = new CellPredictor(new DiscMotion(table, null));
-        int half = n / 2;
-        Throwable[] failed = new Throwable[1];
-        Thread upper = Thread.ofPlatform().name("carom-first-predictions").start(() -> {
-            try {
-                table.predictFirstEvents(half, n, i -> helper.predictFull(i, 0));
-            } catch (Throwable e) {
-                failed[0] = e;
-            }
-        });
-        table.predictFirstEvents(0, half, i -> step.predictFull(i, 0));
-        boolean interrupted = false;
-        while (upper.isAlive()) {
-            try {
-                upper.join();
-            } catch (InterruptedException e) {
-                interrupted = true;
-            }
-        }
-        if (interrupted) {
-            Thread.currentThread().interrupt();
-        }
-        if (failed[0] instanceof RuntimeException e) {
-            throw e;
-        }
-        if (failed[0] instanceof Error e) {
-            throw e;
-        }
-        p.resumeCount(p.predictions() + helper.predictions());
     }
 
     /** Whether {@code saved} is the state of a run with neighbour lists ({@link #save}). */

@@ -385,12 +385,7 @@ public final class DiscTable {
      * {@code predictFull} (the run's predictor), written as its event time before a calendar is planned.
      */
     public void predictFirstEvents(IntToDoubleFunction predictFull) {
-        predictFirstEvents(0, n, predictFull);
-    }
-
-    /** {@link #predictFirstEvents} of discs {@code from..to-1}: threads with predictors of their own may share the discs. */
-    public void predictFirstEvents(int from, int to, IntToDoubleFunction predictFull) {
-        for (int i = from; i < to; i++) {
+        for (int i = 0; i < n; i++) {
             if (invMass(i) > 0) {
                 setEventTime(i, predictFull.applyAsDouble(i));
             }
