@@ -6,6 +6,7 @@ import carom.core.state.Discs;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.function.Supplier;
 
 /**
  * Builds a {@link Scene} and validates it: sizes and ranges (the effects' by {@link Effect#check}),
@@ -16,8 +17,11 @@ import java.util.List;
  * <p>Disc ids: explicit discs first, in the order added, then each generate block in turn.
  */
 public final class SceneBuilder {
-    /** Heap an engine needs per disc, generously: scene copy, state, grid, queue. */
-    static final long BYTES_PER_DISC_ESTIMATE = 400;
+    /**
+     * Heap the leanest engine needs per disc: the state a scene hands it and hands back (60 bytes) and
+     * {@code fast}'s records, cells and calendar (about 90); see lab/notes/cost-curve.
+     */
+    static final long BYTES_PER_DISC_ESTIMATE = 150;
     /** Relative overlap tolerated as rounding in the input (touching discs are legal). */
     private static final double CONTACT_TOLERANCE = 1e-9;
 
@@ -148,39 +152,69 @@ public final class SceneBuilder {
             total += b.count();
         }
         checkMemory(total);
-        int n = (int) total;
-        Discs d = new Discs(n);
         for (int i = 0; i < explicitCount; i++) {
-            d.species[i] = explicitSpecies[i];
-            d.x[i] = explicitState[4 * i];
-            d.y[i] = explicitState[4 * i + 1];
-            d.vx[i] = explicitState[4 * i + 2];
-            d.vy[i] = explicitState[4 * i + 3];
-            checkExplicit(i, d);
-        }
-        for (int i = 0; i < explicitCount; i++) {
-            Species s = species.get(d.species[i]);
-            d.radius[i] = Double.isNaN(explicitRadius[i]) ? s.radius() : explicitRadius[i];
-            d.invMass[i] = s.inverseMass();
-            checkRadius(i, d.radius[i]);
-        }
-        if (replacement != null && !replacement.hasVelocities()) {
-            Velocities.draw(drawn, species, d, 0, explicitCount, new java.util.SplittableRandom(drawSeed), "generate[0]");
+            checkExplicit(i);
+            checkRadius(i, explicitRadius(i));
         }
         int[] blockStarts = new int[blocks.size()];
         int offset = explicitCount;
         for (int b = 0; b < blocks.size(); b++) {
-            GenerateBlock block = blocks.get(b);
             blockStarts[b] = offset;
-            BlockGenerator.place(block, species, box, d, offset, "generate[" + b + "]");
-            offset += (int) block.count();
+            offset += (int) blocks.get(b).count();
         }
+        // A source without velocities (a packing) gets them drawn for its discs, the same every time.
+        VelocityDraw draw = replacement != null && !replacement.hasVelocities() ? new VelocityDraw(drawn, drawSeed) : null;
+        Recipe recipe = new Recipe((int) total, box, List.copyOf(species), Arrays.copyOf(explicitSpecies, explicitCount),
+                Arrays.copyOf(explicitState, 4 * explicitCount), Arrays.copyOf(explicitRadius, explicitCount), draw,
+                List.copyOf(blocks), blockStarts);
+        Discs d = recipe.get();
         checkInsideBox(d, blockStarts);
         checkNoOverlaps(d, blockStarts);
         if (effects.hasGravity()) {
             checkNoneRestingOnWalls(d, blockStarts);
         }
-        return new Scene(name, box, species, effects, until, d, blockStarts);
+        return new Scene(name, box, species, effects, until, d, recipe, blockStarts);
+    }
+
+    /**
+     * How a built scene's initial state is made: the explicit discs (checked before), then each generate
+     * block in turn; the same numbers every time, so a scene can make its discs again instead of keeping
+     * them ({@link Scene}). A block that cannot be placed is bad input, found the first time.
+     */
+    private record Recipe(int n, Box box, List<Species> species, int[] explicitSpecies, double[] explicitState,
+                          double[] explicitRadius, VelocityDraw draw, List<GenerateBlock> blocks, int[] blockStarts)
+            implements Supplier<Discs> {
+        @Override
+        public Discs get() {
+            Discs d = new Discs(n);
+            for (int i = 0; i < explicitSpecies.length; i++) {
+                Species s = species.get(explicitSpecies[i]);
+                d.species[i] = explicitSpecies[i];
+                d.x[i] = explicitState[4 * i];
+                d.y[i] = explicitState[4 * i + 1];
+                d.vx[i] = explicitState[4 * i + 2];
+                d.vy[i] = explicitState[4 * i + 3];
+                d.radius[i] = Double.isNaN(explicitRadius[i]) ? s.radius() : explicitRadius[i];
+                d.invMass[i] = s.inverseMass();
+            }
+            if (draw != null) {
+                Velocities.draw(draw.distribution(), species, d, 0, explicitSpecies.length,
+                        new java.util.SplittableRandom(draw.seed()), "generate[0]");
+            }
+            for (int b = 0; b < blocks.size(); b++) {
+                BlockGenerator.place(blocks.get(b), species, box, d, blockStarts[b], "generate[" + b + "]");
+            }
+            return d;
+        }
+    }
+
+    /** Velocities drawn for discs from a source that has none: the distribution and seed of the scene's first block. */
+    private record VelocityDraw(VelocityDistribution distribution, long seed) {
+    }
+
+    /** Explicit disc i's radius: its own, or its species'. */
+    private double explicitRadius(int i) {
+        return Double.isNaN(explicitRadius[i]) ? species.get(explicitSpecies[i]).radius() : explicitRadius[i];
     }
 
     /** A disc's own radius: positive, finite, and in a periodic box less than a quarter of each side. */
@@ -288,18 +322,21 @@ public final class SceneBuilder {
         }
     }
 
-    private void checkExplicit(int i, Discs d) {
+    private void checkExplicit(int i) {
         String path = "particles[" + i + "]";
-        if (d.species[i] < 0 || d.species[i] >= species.size()) {
+        int s = explicitSpecies[i];
+        if (s < 0 || s >= species.size()) {
             throw new BadInputException(path + ".species: unknown species");
         }
-        requireFinite(path + ".x", d.x[i]);
-        requireFinite(path + ".y", d.y[i]);
-        requireFinite(path + ".vx", d.vx[i]);
-        requireFinite(path + ".vy", d.vy[i]);
-        if (species.get(d.species[i]).fixed() && (d.vx[i] != 0 || d.vy[i] != 0)) {
+        double vx = explicitState[4 * i + 2];
+        double vy = explicitState[4 * i + 3];
+        requireFinite(path + ".x", explicitState[4 * i]);
+        requireFinite(path + ".y", explicitState[4 * i + 1]);
+        requireFinite(path + ".vx", vx);
+        requireFinite(path + ".vy", vy);
+        if (species.get(s).fixed() && (vx != 0 || vy != 0)) {
             throw new BadInputException(path + ": disc " + i + " is of fixed species '"
-                    + species.get(d.species[i]).name() + "' and cannot have a velocity");
+                    + species.get(s).name() + "' and cannot have a velocity");
         }
     }
 

@@ -51,6 +51,11 @@ import java.util.Map;
 final class FastRun {
 
     private final Scene scene;
+    /**
+     * The scene's initial discs, which the table is laid out from; the run hands them back filled with
+     * the final state, so that no second copy of every disc is made at the end.
+     */
+    private final Discs state;
     private final int n;
     private final double until;
     /** Records, grid and Morton order. */
@@ -89,8 +94,8 @@ final class FastRun {
     FastRun(Scene scene, RunOptions options) {
         this.scene = scene;
         this.until = options.until();
-        // The initial discs are needed only here: the run holds its records, not a second copy.
         Discs src = scene.newDiscs();
+        this.state = src;
         double skin = KernelTunables.skin(options, scene);
         this.table = new DiscTable(scene, src,
                 skin > 0 ? KernelTunables.listCellFactor(options, skin) : KernelTunables.cellFactor(options, scene));
@@ -385,6 +390,7 @@ final class FastRun {
 
     /** Every disc at {@code until}, in original id order, periodic positions wrapped into the box. */
     private Discs finalState() {
-        return motion.finalState(until - agenda.epoch(), until);
+        motion.finalRange(state, 0, n, until - agenda.epoch(), until);
+        return state;
     }
 }

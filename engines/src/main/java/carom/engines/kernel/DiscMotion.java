@@ -26,7 +26,6 @@ import carom.core.physics.Flight;
 import carom.core.physics.LeesEdwards;
 import carom.core.physics.PairLaw;
 import carom.core.physics.Restitution;
-import carom.core.scene.Scene;
 import carom.core.state.Discs;
 
 /**
@@ -49,7 +48,6 @@ import carom.core.state.Discs;
 public sealed class DiscMotion permits GrowingMotion {
     final DiscTable table;
     // The table's fields, copied (final) so that hot paths read them with one load.
-    private final Scene scene;
     final double[] rec;
     final int stride;
     private final double sharedRadius;
@@ -108,7 +106,6 @@ public sealed class DiscMotion permits GrowingMotion {
         }
         this.table = table;
         this.collisions = collisions;
-        this.scene = table.scene;
         this.rec = table.rec;
         this.stride = table.stride;
         this.sharedRadius = table.sharedRadius;
@@ -400,18 +397,9 @@ public sealed class DiscMotion permits GrowingMotion {
     }
 
     /**
-     * Every disc at local {@code local} (absolute {@code until}), in original id order, periodic
-     * positions wrapped into the box (serial: advances every disc).
-     */
-    public Discs finalState(double local, double until) {
-        Discs out = scene.newDiscs();
-        finalRange(out, 0, sceneIds.length, local, until);
-        return out;
-    }
-
-    /**
-     * {@link #finalState} for internal discs {@code from..to-1} only, into {@code out} at their scene
-     * ids: threads may fill disjoint ranges at once.
+     * The final state of internal discs {@code from..to-1}: each advanced to local {@code local}
+     * (absolute {@code until}) and written into {@code out} at its scene id, periodic positions wrapped
+     * into the box, clock {@code until}; threads may fill disjoint ranges at once.
      */
     public void finalRange(Discs out, int from, int to, double local, double until) {
         int[] order = sceneIds;

@@ -199,6 +199,8 @@ public final class DiscTable {
         ahead[CROSS_RIGHT] = new int[] {-cols + 1, 1, cols + 1};
         ahead[CROSS_DOWN] = new int[] {-cols - 1, -cols, -cols + 1};
         ahead[CROSS_UP] = new int[] {cols - 1, cols, cols + 1};
+        // The order first: its sort's scratch is garbage before the records take their room.
+        int[] order = mortonOrder(src);
         this.ir = new int[Math.multiplyExact(n, IS)];
         Arrays.fill(cellHead, NIL);
         this.growthRate = scene.effects().growth();
@@ -215,7 +217,6 @@ public final class DiscTable {
         this.sharedRadius = shared && n > 0 ? src.radius[0] : Double.NaN;
         this.sharedInvMass = shared && n > 0 ? src.invMass[0] : Double.NaN;
         this.rec = new double[Math.multiplyExact(n, stride)];
-        int[] order = mortonOrder(src);
         this.sceneIds = order;
         for (int k = 0; k < n; k++) {
             int o = order[k];

@@ -65,6 +65,8 @@ final class SlabsRun implements WindowDomains {
     private static final int PROGRESS_WINDOWS = 1024;
 
     final Scene scene;
+    /** The scene's initial discs, the table's source; filled with the final state at the end. */
+    private final Discs state;
     private final int n;
     final double until;
     /** Records, grid and Morton order (the kernel's), shared by every domain. */
@@ -134,8 +136,9 @@ final class SlabsRun implements WindowDomains {
         long constructing = System.nanoTime();
         this.scene = scene;
         this.until = options.until();
-        // The initial discs are needed only here: the run holds its records, not a second copy.
+        // The scene's discs, handed back filled with the final state (no second copy at the end).
         Discs src = scene.newDiscs();
+        this.state = src;
         this.table = prebuilt != null ? prebuilt : new DiscTable(scene, src, KernelTunables.cellFactor(options, scene));
         this.n = table.n;
         table.prefetchHints(KernelTunables.PREFETCH.of(options));
@@ -596,7 +599,7 @@ final class SlabsRun implements WindowDomains {
 
     /** Every disc at {@code until}, in original id order (each domain a range of internal ids). */
     private Discs finalState() {
-        task.finalOut = scene.newDiscs();
+        task.finalOut = state;
         everyDomain(DomainTask.FINAL);
         return task.finalOut;
     }
