@@ -29,6 +29,8 @@ public final class SceneBuilder {
     private int explicitCount;
     private int[] explicitSpecies = new int[16];
     private double[] explicitState = new double[16 * 4];
+    /** Each explicit disc's angular velocity (rough discs only). */
+    private double[] explicitOmega = new double[16];
     private final List<GenerateBlock> blocks = new ArrayList<>();
 
     public static SceneBuilder create(String name) {
@@ -70,12 +72,19 @@ public final class SceneBuilder {
         return this;
     }
 
-    /** Adds an explicit disc of species index {@code s}. */
+    /** Adds an explicit disc of species index {@code s}, not spinning. */
     public SceneBuilder disc(int s, double x, double y, double vx, double vy) {
+        return disc(s, x, y, vx, vy, 0);
+    }
+
+    /** Adds an explicit disc of species index {@code s} spinning at {@code omega} (rough discs only). */
+    public SceneBuilder disc(int s, double x, double y, double vx, double vy, double omega) {
         if (explicitCount == explicitSpecies.length) {
             explicitSpecies = Arrays.copyOf(explicitSpecies, 2 * explicitCount);
             explicitState = Arrays.copyOf(explicitState, 8 * explicitCount);
+            explicitOmega = Arrays.copyOf(explicitOmega, 2 * explicitCount);
         }
+        explicitOmega[explicitCount] = omega;
         explicitSpecies[explicitCount] = s;
         explicitState[4 * explicitCount] = x;
         explicitState[4 * explicitCount + 1] = y;
@@ -98,7 +107,7 @@ public final class SceneBuilder {
         }
         checkMemory(total);
         int n = (int) total;
-        Discs d = new Discs(n);
+        Discs d = new Discs(n, effects.rough());
         for (int i = 0; i < explicitCount; i++) {
             d.species[i] = explicitSpecies[i];
             d.x[i] = explicitState[4 * i];
@@ -119,6 +128,13 @@ public final class SceneBuilder {
             blockStarts[b] = offset;
             BlockGenerator.place(block, species, box, d, offset, "generate[" + b + "]");
             offset += (int) block.count();
+        }
+        if (d.spins != null) {
+            for (int i = 0; i < n; i++) {
+                d.spins.omega[i] = i < explicitCount ? explicitOmega[i] : 0;
+                d.spins.inertia[i] = species.get(d.species[i]).inertia();
+                d.spins.radius[i] = d.radius[i];
+            }
         }
         checkInsideBox(d, blockStarts);
         checkNoOverlaps(d, blockStarts);
@@ -143,6 +159,9 @@ public final class SceneBuilder {
             requirePositive("species[" + i + "].radius", s.radius());
             if (!s.fixed()) {
                 requirePositive("species[" + i + "].mass", s.mass());
+            }
+            if (!(s.inertia() > 0 && s.inertia() <= 1)) {
+                throw new BadInputException("species[" + i + "].inertia: must lie in (0, 1], got " + s.inertia());
             }
             largestDiameter = Math.max(largestDiameter, 2 * s.radius());
         }
@@ -209,6 +228,16 @@ public final class SceneBuilder {
         requireFinite(path + ".y", d.y[i]);
         requireFinite(path + ".vx", d.vx[i]);
         requireFinite(path + ".vy", d.vy[i]);
+        double omega = explicitOmega[i];
+        requireFinite(path + ".omega", omega);
+        if (omega != 0 && !effects.rough()) {
+            throw new BadInputException(path + ".omega: only rough discs spin (give effects.tangentialRestitution"
+                    + " above -1)");
+        }
+        if (omega != 0 && species.get(d.species[i]).fixed()) {
+            throw new BadInputException(path + ": disc " + i + " is of fixed species '"
+                    + species.get(d.species[i]).name() + "' and cannot spin");
+        }
         if (species.get(d.species[i]).fixed() && (d.vx[i] != 0 || d.vy[i] != 0)) {
             throw new BadInputException(path + ": disc " + i + " is of fixed species '"
                     + species.get(d.species[i]).name() + "' and cannot have a velocity");
