@@ -227,32 +227,40 @@ final class FastRun {
      * a stop request saves between two events and stops the run.
      */
     private void loop() {
-        double due = agenda.due();
         while (true) {
-            int i = queue.peek();
-            if (i < 0) {
+            int stop = step.runBefore(agenda.due(), agenda.epoch());
+            if (stop == EventStep.EMPTY) {
                 return;
             }
+            if (stop == EventStep.POLL) {
+                poll(step.polledAt());
+                continue;
+            }
+            int i = queue.peek();
             double now = queue.time(i);
-            if (now >= due) {
-                int work = agenda.whatIsDue(now);
-                if (work == RunAgenda.END) {
-                    return;
-                }
-                if (work != RunAgenda.NOTHING) {
-                    runScheduled(work, now);
-                    due = agenda.due();
-                    continue;
-                }
+            int work = agenda.whatIsDue(now);
+            if (work == RunAgenda.END) {
+                return;
             }
+            if (work != RunAgenda.NOTHING) {
+                runScheduled(work, now);
+                continue;
+            }
+            // Past the due time with nothing to do before this event: carry it out, then look again.
             step.run(i, now, agenda.epoch());
-            long events = step.events();
-            if (RunAgenda.pollDue(events) && agenda.poll(events, agenda.epoch() + now, step.pairCollisions() + step.wallCollisions())) {
-                // Between two events: the next one is still queued, so the checkpoint continues from here.
-                double at = agenda.epoch() + now;
-                save(at);
-                throw new RunStopped(at);
+            if (RunAgenda.pollDue(step.events())) {
+                poll(now);
             }
+        }
+    }
+
+    /** The poll after the event at local {@code now}: progress, and a stop request saves and stops the run. */
+    private void poll(double now) {
+        double at = agenda.epoch() + now;
+        if (agenda.poll(step.events(), at, step.pairCollisions() + step.wallCollisions())) {
+            // Between two events: the next one is still queued, so the checkpoint continues from here.
+            save(at);
+            throw new RunStopped(at);
         }
     }
 

@@ -15,7 +15,7 @@ import carom.core.scene.Scene;
 import carom.core.state.Discs;
 import carom.engines.kernel.CalendarQueue;
 import carom.engines.kernel.CellPredictor;
-import carom.engines.kernel.DiscMotion;
+import carom.engines.kernel.GrowingMotion;
 import carom.engines.kernel.DiscTable;
 import carom.engines.kernel.EventStep;
 import carom.engines.kernel.GrowthStages;
@@ -45,7 +45,7 @@ import java.util.Map;
  *       {@code energyCap} times: near jamming the collisions pump energy in faster and faster, and
  *       without that the number of collisions to a given pressure grows like the pressure itself
  *       instead of like its logarithm.</li>
- *   <li><b>Energy account.</b> Collisions add kinetic energy ({@link DiscMotion#energyAdded}); the
+ *   <li><b>Energy account.</b> Collisions add kinetic energy ({@link GrowingMotion#energyAdded}); the
  *       thermostat takes it out; both are kept ({@link #energyAdded}, {@link #energyRemoved}).</li>
  *   <li><b>Pressure.</b> Between two rescalings, Z = 1 + W / (2 ∫KE dt) with W the collision virial:
  *       the kinetic energy is piecewise constant, so its integral is kept exactly from each
@@ -83,7 +83,7 @@ public final class GrowthRun {
 
     // The stage under way.
     private DiscTable table;
-    private DiscMotion motion;
+    private GrowingMotion motion;
     private CellPredictor predictor;
     private CalendarQueue queue;
     private EventStep step;
@@ -205,8 +205,8 @@ public final class GrowthRun {
         }
         table = plan.table(state, at);
         table.prefetchHints(prefetch);
-        motion = new DiscMotion(table, collisions);
-        predictor = new CellPredictor(motion);
+        motion = new GrowingMotion(table, collisions);
+        predictor = CellPredictor.of(motion, null);
         queue = table.newCalendar(n);
         EventStep previous = step;
         step = new EventStep(table, motion, predictor, null, queue, stallGuard, virial, null);

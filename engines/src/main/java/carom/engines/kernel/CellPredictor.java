@@ -25,7 +25,6 @@ import static carom.engines.kernel.DiscTable.Y;
 
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
-import carom.core.physics.GrowthLaw;
 import carom.core.physics.PairLaw;
 import carom.core.state.Discs;
 
@@ -40,25 +39,31 @@ import carom.core.state.Discs;
  * are predicted against, and an interior cell in an edge column or row is scanned as a border cell (so
  * the filter applies). Without one ({@code fast}) every cell is seen; the filter then costs one null
  * test per prediction.
+ *
+ * <p>Growth is this class's one explicit variant: {@link #of} chooses once by the table's law, this
+ * class for a rigid table (its public constructors refuse a growing one), {@link GrowingPredictor} for
+ * a table whose radii grow, which overrides the contact primitives and the scan whole. The rigid
+ * methods carry no growth code, and a rigid run never loads the growing class, so the JIT sees one
+ * implementation.
  */
-public final class CellPredictor {
+public sealed class CellPredictor permits GrowingPredictor {
     private static final double[] NO_SHIFT = new double[9];
 
     /** This thread's changes to the records, and its window for core physics that takes {@link Discs}. */
     private final DiscMotion motion;
     private final Discs pair;
     // The table's fields, copied (final) so that hot paths read them with one load.
-    private final double[] rec;
-    private final int stride;
+    final double[] rec;
+    final int stride;
     private final double sharedRadius;
-    private final int[] ir;
-    private final int[] cellHead;
+    final int[] ir;
+    final int[] cellHead;
     private final int cols;
     private final int rows;
     private final double cellW;
     private final double cellH;
-    private final double width;
-    private final double height;
+    final double width;
+    final double height;
     private final boolean straightImages;
     private final boolean periodic;
     private final double recheckX;
@@ -71,13 +76,11 @@ public final class CellPredictor {
      */
     private boolean sleepersSeen;
     private final Flight flight;
-    private final Boundary boundary;
+    final Boundary boundary;
     private final Boundary.Walls walls;
     private final int[] around;
     private final int[][] ahead;
-    /** The growth effect: predictions go through {@link GrowthLaw} (see {@link DiscTable#growing}). */
-    private final boolean growing;
-    private final DiscTable table;
+    final DiscTable table;
     /** The block of each cell column and row, or null if every cell is seen; this predictor's block. */
     private final int[] colBlock;
     private final int[] rowBlock;
@@ -94,21 +97,37 @@ public final class CellPredictor {
     private final double[] visitShiftX = new double[9];
     private final double[] visitShiftY = new double[9];
     /** Earliest event found so far by the prediction under way, and its candidate code. */
-    private double found;
-    private int foundP;
+    double found;
+    int foundP;
     /** Side through which the last {@link #crossing} leaves (a crossing kind). */
     private byte crossKind;
     /** Predictions made (full or after a crossing). */
     private long predictions;
 
-    /** A predictor that sees every column ({@code fast}). */
+    /**
+     * The predictor of {@code motion}'s table's law (a {@link GrowingPredictor} if its radii grow), that
+     * sees only the cells {@code filter} leaves it ({@code slabs}), or every cell if null.
+     */
+    public static CellPredictor of(DiscMotion motion, OwnerFilter filter) {
+        return motion.table.growing ? GrowingPredictor.make(motion, filter) : new CellPredictor(motion, filter);
+    }
+
+    /** A predictor on a rigid table that sees every column ({@code fast}). */
     public CellPredictor(DiscMotion motion) {
         this(motion, null);
     }
 
-    /** A predictor that sees only the cells {@code filter} leaves it ({@code slabs}), or every cell if null. */
+    /** A predictor on a rigid table that sees only the cells {@code filter} leaves it ({@code slabs}), or every cell if null. */
     public CellPredictor(DiscMotion motion, OwnerFilter filter) {
+        this(motion, filter, false);
+    }
+
+    /** The predictor of a table whose radii grow if {@code grows} (refused on a table of the other law). */
+    CellPredictor(DiscMotion motion, OwnerFilter filter, boolean grows) {
         DiscTable table = motion.table;
+        if (table.growing != grows) {
+            throw new IllegalArgumentException(grows ? "a growing predictor on a rigid table" : "a rigid predictor on a growing table");
+        }
         this.motion = motion;
         this.pair = motion.pair;
         this.rec = table.rec;
@@ -132,7 +151,6 @@ public final class CellPredictor {
         this.walls = table.walls;
         this.around = table.around;
         this.ahead = table.ahead;
-        this.growing = table.growing;
         this.table = table;
         this.colBlock = filter == null ? null : filter.colBlock();
         this.rowBlock = filter == null ? null : filter.rowBlock();
@@ -161,7 +179,7 @@ public final class CellPredictor {
         predictions = made;
     }
 
-    private double radius(int i) {
+    final double radius(int i) {
         return stride > R ? rec[i * stride + R] : sharedRadius;
     }
 
@@ -339,10 +357,7 @@ public final class CellPredictor {
     }
 
     /** {@link Flight#timeToContact} of discs i and j (i in slot 0 unless straightImages). */
-    private double contactTime(int i, int j, double now, double horizon) {
-        if (growing) {
-            return growingContactTime(i, j, now);
-        }
+    double contactTime(int i, int j, double now, double horizon) {
         if (!straightImages) {
             load(j, 1);
             return flight.timeToContact(pair, 0, 1, now, horizon, boundary);
@@ -359,16 +374,7 @@ public final class CellPredictor {
     }
 
     /** {@link Flight#timeToWall} of disc i (in slot 0 unless straightImages). */
-    private double wallTime(int i, int wall, double now) {
-        if (growing) {
-            // Growth runs only in straight flight (the reader refuses it under gravity).
-            int at = i * stride;
-            double dt = now - rec[at + T];
-            double r0 = radius(i);
-            return GrowthLaw.timeToWall(wall, rec[at + X] + rec[at + VX] * dt, rec[at + Y] + rec[at + VY] * dt,
-                    rec[at + VX], rec[at + VY], r0 * (table.growthScale + table.growthRate * now),
-                    r0 * table.growthRate, width, height);
-        }
+    double wallTime(int i, int wall, double now) {
         if (!straightImages) {
             return flight.timeToWall(pair, 0, wall, now, walls);
         }
@@ -415,12 +421,7 @@ public final class CellPredictor {
      * Lowers {@link #found} to disc i's earliest contact with a disc of cells {@code base + cells[k]},
      * k < m, whose discs are seen shifted by (shiftX[k], shiftY[k]).
      */
-    private void scan(int i, double now, double horizon, int base, int[] cells, double[] shiftX, double[] shiftY,
-                      int m) {
-        if (growing) {
-            growingScan(i, now, base, cells, m);
-            return;
-        }
+    void scan(int i, double now, double horizon, int base, int[] cells, double[] shiftX, double[] shiftY, int m) {
         double best = found;
         int bestP = foundP;
         // All heads first: independent loads whose cache misses overlap (at large N each is one).
@@ -468,41 +469,6 @@ public final class CellPredictor {
                             best = t;
                             bestP = j;
                         }
-                    }
-                }
-            }
-        }
-        found = best;
-        foundP = bestP;
-    }
-
-    /**
-     * {@link GrowthLaw#timeToContact} of discs i and j at local {@code now} on the records, through the
-     * nearest image (the image of the cell scan whenever an axis has 4 cells or more).
-     */
-    private double growingContactTime(int i, int j, double now) {
-        int at = i * stride;
-        int jt = j * stride;
-        double dx = boundary.separationX(rec[jt + X] + rec[jt + VX] * (now - rec[jt + T])
-                - (rec[at + X] + rec[at + VX] * (now - rec[at + T])));
-        double dy = boundary.separationY(rec[jt + Y] + rec[jt + VY] * (now - rec[jt + T])
-                - (rec[at + Y] + rec[at + VY] * (now - rec[at + T])));
-        double sigma0 = radius(i) + radius(j);
-        return GrowthLaw.timeToContact(dx, dy, rec[jt + VX] - rec[at + VX], rec[jt + VY] - rec[at + VY],
-                sigma0 * (table.growthScale + table.growthRate * now), sigma0 * table.growthRate);
-    }
-
-    /** {@link #scan} with growing radii: every disc of cells {@code base + cells[k]}, k < m. */
-    private void growingScan(int i, double now, int base, int[] cells, int m) {
-        double best = found;
-        int bestP = foundP;
-        for (int k = 0; k < m; k++) {
-            for (int j = cellHead[base + cells[k]]; j != NIL; j = ir[j * IS + CNEXT]) {
-                if (j != i) {
-                    double t = growingContactTime(i, j, now);
-                    if (t < best) {
-                        best = t;
-                        bestP = j;
                     }
                 }
             }

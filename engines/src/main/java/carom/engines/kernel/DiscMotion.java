@@ -23,7 +23,6 @@ import carom.core.engine.StallGuard;
 import carom.core.observe.CollisionObserver;
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
-import carom.core.physics.GrowthLaw;
 import carom.core.physics.PairLaw;
 import carom.core.physics.Restitution;
 import carom.core.scene.Scene;
@@ -40,16 +39,21 @@ import carom.core.state.Discs;
  * <p>A {@link CollisionObserver} given at construction is told every pair and wall collision this
  * thread carries out, in scene ids, from the values the collision was resolved with; without one
  * (null) a collision costs one null test more.
+ *
+ * <p>Growth is this class's one explicit variant: {@link #of} chooses once by the table's law, this
+ * class for a rigid table (its public constructors refuse a growing one), {@link GrowingMotion} for a
+ * table whose radii grow, which overrides the collisions whole. The rigid methods carry no growth
+ * code, and a rigid run never loads the growing class, so the JIT sees one implementation.
  */
-public final class DiscMotion {
+public sealed class DiscMotion permits GrowingMotion {
     final DiscTable table;
     // The table's fields, copied (final) so that hot paths read them with one load.
     private final Scene scene;
-    private final double[] rec;
-    private final int stride;
+    final double[] rec;
+    final int stride;
     private final double sharedRadius;
     private final double sharedInvMass;
-    private final int[] ir;
+    final int[] ir;
     private final int[] cellHead;
     private final int cols;
     private final int rows;
@@ -57,8 +61,8 @@ public final class DiscMotion {
     private final double height;
     private final boolean straight;
     private final Flight flight;
-    private final Boundary boundary;
-    private final Restitution restitution;
+    final Boundary boundary;
+    final Restitution restitution;
     /** Under gravity every contact with something immovable is checked for rest (StallGuard). */
     private final boolean gravity;
     /** Resting contact: each disc's inverse mass while awake (null without gravity). */
@@ -68,30 +72,37 @@ public final class DiscMotion {
     private long wakes;
     private double energyPutToRest;
     /** Scene id of each internal disc: where the final state puts it. */
-    private final int[] sceneIds;
-
-    /** The growth effect: collisions bounce off growing surfaces (see {@link DiscTable#growing}). */
-    private final boolean growing;
-    /**
-     * Kinetic energy the collisions of this thread added (growth pushes discs apart), and that of the
-     * last collision alone: growth runs keep their energy account with it.
-     */
-    private double energyAdded;
-    private double lastEnergyAdded;
+    final int[] sceneIds;
 
     /** Told every collision (null: none). */
-    private final CollisionObserver collisions;
+    final CollisionObserver collisions;
 
     /** Slots 0 and 1: discs copied in for core physics that works on {@link Discs}. */
     final Discs pair = new Discs(2);
 
-    /** Changes to {@code table}'s records that tell no observer. */
+    /**
+     * The motion of {@code table}'s law (a {@link GrowingMotion} if its radii grow), telling
+     * {@code collisions} every collision (null: none).
+     */
+    public static DiscMotion of(DiscTable table, CollisionObserver collisions) {
+        return table.growing ? GrowingMotion.make(table, collisions) : new DiscMotion(table, collisions);
+    }
+
+    /** Rigid changes to {@code table}'s records (its radii do not grow) that tell no observer. */
     public DiscMotion(DiscTable table) {
         this(table, null);
     }
 
-    /** Changes to {@code table}'s records, telling {@code collisions} every collision (null: none). */
+    /** Rigid changes to {@code table}'s records (its radii do not grow), telling {@code collisions} every collision (null: none). */
     public DiscMotion(DiscTable table, CollisionObserver collisions) {
+        this(table, collisions, false);
+    }
+
+    /** The motion of a table whose radii grow if {@code grows} (refused on a table of the other law). */
+    DiscMotion(DiscTable table, CollisionObserver collisions, boolean grows) {
+        if (table.growing != grows) {
+            throw new IllegalArgumentException(grows ? "a growing motion on a rigid table" : "a rigid motion on a growing table");
+        }
         this.table = table;
         this.collisions = collisions;
         this.scene = table.scene;
@@ -112,17 +123,6 @@ public final class DiscMotion {
         this.gravity = table.acceleration > 0;
         this.awakeInvMass = table.awakeInvMass;
         this.sceneIds = table.sceneIds();
-        this.growing = table.growing;
-    }
-
-    /** Kinetic energy added by this thread's collisions so far (growth runs; 0 otherwise). */
-    public double energyAdded() {
-        return energyAdded;
-    }
-
-    /** Kinetic energy added by the last collision (growth runs; 0 otherwise). */
-    public double lastEnergyAdded() {
-        return lastEnergyAdded;
     }
 
     double radius(int i) {
@@ -206,7 +206,8 @@ public final class DiscMotion {
         collisions.pair(abs, sceneIds[a], sceneIds[b], dx, dy, dx / dist, dy / dist, virial / dist);
     }
 
-    private double resolvePair(int a, int b, double now, double abs, StallGuard guard) {
+    /** {@link #collidePair} without telling the observer; returns the virial. */
+    double resolvePair(int a, int b, double now, double abs, StallGuard guard) {
         advance(a, now);
         advance(b, now);
         int at = a * stride;
@@ -232,9 +233,6 @@ public final class DiscMotion {
                 bMobile = true;
             }
         }
-        if (growing) {
-            return collideGrowing(a, b, at, bt, dx, dy, e, abs, bMobile);
-        }
         // On the records, not through the pair window: no copies in and out at every collision.
         double w = PairLaw.collide(rec, at + VX, bt + VX, rec, at + VY, bt + VY, invMass(a), invMass(b), dx, dy, e);
         if (aMobile) {
@@ -248,29 +246,6 @@ public final class DiscMotion {
         return w;
     }
 
-    /** {@link #collidePair} of growing discs (both advanced): the impulse, the energy it added, the virial. */
-    private double collideGrowing(int a, int b, int at, int bt, double dx, double dy, double e, double abs,
-                                  boolean bMobile) {
-        double ima = invMass(a);
-        double imb = invMass(b);
-        double before = kinetic(at, ima) + kinetic(bt, imb);
-        double sigmaRate = (radius(a) + radius(b)) * table.growthRate;
-        double j = GrowthLaw.collide(rec, at + VX, bt + VX, rec, at + VY, bt + VY, ima, imb, dx, dy, e, sigmaRate);
-        lastEnergyAdded = kinetic(at, ima) + kinetic(bt, imb) - before;
-        energyAdded += lastEnergyAdded;
-        restitution.collided(a, abs);
-        ir[a * IS + COUNT]++;
-        if (bMobile) {
-            restitution.collided(b, abs);
-            ir[b * IS + COUNT]++;
-        }
-        return j * Math.sqrt(dx * dx + dy * dy);
-    }
-
-    private double kinetic(int at, double invMass) {
-        return invMass > 0 ? 0.5 * (rec[at + VX] * rec[at + VX] + rec[at + VY] * rec[at + VY]) / invMass : 0;
-    }
-
     /**
      * Bounces disc i off wall {@code wall} at local {@code now} (absolute {@code abs}): advanced,
      * reflected, restitution told, its collision counter bumped; under gravity it falls asleep instead
@@ -282,15 +257,7 @@ public final class DiscMotion {
         int at = i * stride;
         int axis = wall == Boundary.LEFT || wall == Boundary.RIGHT ? VX : VY;
         double normalBefore = rec[at + axis];
-        if (growing) {
-            double im = invMass(i);
-            double before = kinetic(at, im);
-            rec[at + axis] = GrowthLaw.wallBounce(wall, normalBefore, radius(i) * table.growthRate, e);
-            lastEnergyAdded = kinetic(at, im) - before;
-            energyAdded += lastEnergyAdded;
-            restitution.collided(i, abs);
-            ir[i * IS + COUNT]++;
-        } else if (gravity && guard.restsOnWall(abs, i, wall, rec[at + VX], rec[at + VY])) {
+        if (gravity && guard.restsOnWall(abs, i, wall, rec[at + VX], rec[at + VY])) {
             fallAsleep(i, abs);
         } else {
             load(i, 0);
@@ -300,10 +267,18 @@ public final class DiscMotion {
             ir[i * IS + COUNT]++;
         }
         if (collisions != null) {
-            // The momentum change along the wall's normal; 0 for a disc that came to rest on it.
-            double im = invMass(i);
-            collisions.wall(abs, sceneIds[i], wall, im > 0 ? Math.abs(rec[at + axis] - normalBefore) / im : 0);
+            tellWall(i, wall, abs, at + axis, normalBefore);
         }
+    }
+
+    /**
+     * Tells the observer of disc i's wall collision just resolved: the momentum change along the
+     * wall's normal (record {@code normalAt}, {@code normalBefore} before), 0 for a disc that came to
+     * rest on it.
+     */
+    final void tellWall(int i, int wall, double abs, int normalAt, double normalBefore) {
+        double im = invMass(i);
+        collisions.wall(abs, sceneIds[i], wall, im > 0 ? Math.abs(rec[normalAt] - normalBefore) / im : 0);
     }
 
     /**

@@ -53,6 +53,8 @@ public final class EventStep {
     private long crossings;
     private long staleEvents;
     private double lastVirial;
+    /** Local time of the event after which {@link #runBefore} last stopped for the poll. */
+    private double polledAt;
 
     /**
      * @param lists neighbour lists predicting in place of {@code cells} (null: cell scans)
@@ -68,6 +70,38 @@ public final class EventStep {
         this.stallGuard = stallGuard;
         this.virial = virial;
         this.audit = audit;
+    }
+
+    /** What {@link #runBefore} stopped at: the calendar is empty. */
+    public static final int EMPTY = -1;
+    /** What {@link #runBefore} stopped at: the next event is at or after the due time. */
+    public static final int DUE = -2;
+    /** What {@link #runBefore} stopped at: the poll is due ({@link RunAgenda#pollDue}) after the last event. */
+    public static final int POLL = -3;
+
+    /**
+     * Carries out events in time order while the next one is before local {@code due}, stopping
+     * after an event that makes the poll due; returns why it stopped ({@link #EMPTY}, {@link #DUE},
+     * {@link #POLL}). The loop lives here, beside the dispatch, so that the JIT compiles both as one
+     * method: called once per event from a loop elsewhere, the step compiled apart and its inlining
+     * varied between JVMs (lab/notes/open-core/).
+     */
+    public int runBefore(double due, double epoch) {
+        while (true) {
+            int i = queue.peek();
+            if (i < 0) {
+                return EMPTY;
+            }
+            double now = queue.time(i);
+            if (now >= due) {
+                return DUE;
+            }
+            run(i, now, epoch);
+            if (RunAgenda.pollDue(events)) {
+                polledAt = now;
+                return POLL;
+            }
+        }
     }
 
     /**
@@ -163,6 +197,11 @@ public final class EventStep {
     /** Pair events whose prediction had gone stale. */
     public long staleEvents() {
         return staleEvents;
+    }
+
+    /** Local time of the event after which {@link #runBefore} last returned {@link #POLL}. */
+    public double polledAt() {
+        return polledAt;
     }
 
     /** The virial of the last pair collision. */

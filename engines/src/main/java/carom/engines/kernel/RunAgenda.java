@@ -81,6 +81,15 @@ public final class RunAgenda {
         return new RunAgenda(true, until, samples, checkpoints, progress);
     }
 
+    /**
+     * The samples' and resyncs' times for a loop of passes ({@code slabs}' windows), which takes its
+     * checkpoints at pass starts and tells progress by windows: it reads {@link #sampleLocal} and
+     * {@link #resyncLocal} and keeps the epoch here equal to its domains' ({@link #rebased}).
+     */
+    public static RunAgenda forPasses(double until, SampleSchedule samples) {
+        return new RunAgenda(true, until, samples, null, null);
+    }
+
     /** The agenda of a loop that stops at {@code until}, at every sample and at every stage end. */
     public static RunAgenda stops(double until, SampleSchedule samples, ProgressListener progress) {
         return new RunAgenda(false, until, samples, null, progress);

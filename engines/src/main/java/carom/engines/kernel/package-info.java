@@ -55,8 +55,10 @@
  *       awake disc hitting it wakes it.</li>
  *   <li>Growth (the {@code growth} effect): the records hold R(0); a table knows the growth rate and
  *       the absolute time of its local 0 ({@code DiscTable.anchorGrowth}, moved at every re-anchoring of
- *       clocks), predicts contacts of growing discs with {@link carom.core.physics.GrowthLaw} and
- *       collides them by its surface bounce; a run plans its tables' cells for the radius the discs
+ *       clocks); the kernel's one explicit variant, chosen once by {@code DiscMotion.of} and
+ *       {@code CellPredictor.of} from the table's law ({@link carom.engines.kernel.GrowingMotion},
+ *       {@code GrowingPredictor}), predicts contacts of growing discs with
+ *       {@link carom.core.physics.GrowthLaw} and collides them by its surface bounce; a run plans its tables' cells for the radius the discs
  *       reach before the next rebuild ({@link carom.engines.kernel.GrowthStages}).</li>
  * </ul>
  *

@@ -87,8 +87,8 @@ final class Domain {
         this.n = table.n;
         this.queue = table.newCalendar(n / grid.domains);
         this.logging = grid.domains > 1;
-        this.motion = new DiscMotion(table);
-        this.pred = logging ? new CellPredictor(motion, grid.filterFor(id)) : new CellPredictor(motion);
+        this.motion = DiscMotion.of(table, null);
+        this.pred = CellPredictor.of(motion, logging ? grid.filterFor(id) : null);
         this.log = logging ? new UndoLog(motion, grid, marks) : null;
         this.virial = VirialAccumulator.forRun(clock.until);
         // Energy audit after every collision on a single domain only; with several, the run audits at barriers.

@@ -4,6 +4,7 @@ import carom.core.engine.Checkpoints;
 import carom.core.engine.PassCheckpoints;
 import carom.core.engine.SampleSchedule;
 import carom.engines.kernel.DiscTable;
+import carom.engines.kernel.RunAgenda;
 
 /**
  * The optimistic-window protocol of {@code slabs} and {@code cluster}, over a {@link WindowDomains}
@@ -44,9 +45,8 @@ public final class WindowCoordinator {
     private final PassCheckpoints checkpoints;
     private final int progressWindows;
     private final WindowCounts counts = new WindowCounts();
-    /** Local times of the next resync and of the next sample (+Infinity if none). */
-    private double resyncAt;
-    private double sampleLocal;
+    /** The times of the next sample and the next resync, local to the domains' epoch. */
+    private final RunAgenda agenda;
 
     /**
      * A coordinator of the run to absolute {@code until} over {@code domains}, taking the samples of
@@ -60,6 +60,7 @@ public final class WindowCoordinator {
         this.until = until;
         this.checkpoints = sink == null ? null : new PassCheckpoints(sink);
         this.progressWindows = progressWindows;
+        this.agenda = RunAgenda.forPasses(until, samples);
     }
 
     /** The protocol's counts. */
@@ -69,11 +70,11 @@ public final class WindowCoordinator {
 
     /** The local time of the next resync (for a checkpoint), and setting it (a resumed run). */
     public double resyncAt() {
-        return resyncAt;
+        return agenda.resyncLocal();
     }
 
     public void resyncAt(double local) {
-        resyncAt = local;
+        agenda.resyncAt(local);
     }
 
     /** A resumed run takes up the periodic checkpoints after absolute {@code time}. */
@@ -85,7 +86,7 @@ public final class WindowCoordinator {
 
     /** The calendars have just been built with {@code span} the longest: the next resync is due from it. */
     public void calendarsPlanned(double span) {
-        resyncAt = DiscTable.RESYNC_SPANS * span;
+        agenda.resyncAt(DiscTable.RESYNC_SPANS * span);
     }
 
     /** Every domain re-anchors its clocks at local {@code shift} (none if 0) and rebuilds its calendar. */
@@ -98,7 +99,7 @@ public final class WindowCoordinator {
         if (now > 0) {
             counts.resyncs++;
             domains.rebase(now);
-            sampleLocal = samples.next() - domains.epoch();
+            agenda.rebased(domains.epoch(), agenda.resyncLocal());
         }
         replan(now);
     }
@@ -108,7 +109,7 @@ public final class WindowCoordinator {
      * checkpoint. Samples already handed out (before a resumed run's checkpoint) are not again.
      */
     public void run(double now) {
-        sampleLocal = samples.next() - domains.epoch();
+        agenda.rebased(domains.epoch(), agenda.resyncLocal());
         loop(now);
         while (samples.next() <= until) {
             sample();
@@ -120,11 +121,11 @@ public final class WindowCoordinator {
 
     private void loop(double now) {
         while (true) {
-            if (now >= sampleLocal) {
+            if (now >= agenda.sampleLocal()) {
                 sample();
                 continue;
             }
-            if (now >= resyncAt) {
+            if (now >= agenda.resyncLocal()) {
                 resync(now);
                 now = 0;
             }
@@ -135,7 +136,8 @@ public final class WindowCoordinator {
             CrossEvents cross = domains.crossEvents();
             int top = merged ? -1 : cross.validTop(now);
             double h = top >= 0 ? cross.time(top) : INF;
-            double end = Math.min(Math.min(Math.min(h, resyncAt), sampleLocal), untilLocal);
+            double resyncAt = agenda.resyncLocal();
+            double end = Math.min(Math.min(Math.min(h, resyncAt), agenda.sampleLocal()), untilLocal);
             boolean last = end == untilLocal && h > untilLocal && resyncAt > untilLocal;
             if (checkpoints != null) {
                 double at = now;
@@ -216,6 +218,6 @@ public final class WindowCoordinator {
     private void sample() {
         double virial = domains.sampleInto(samples.state(), samples.next() - domains.epoch());
         samples.emit(virial);
-        sampleLocal = samples.next() - domains.epoch();
+        agenda.sampled();
     }
 }

@@ -16,8 +16,8 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
 /**
- * The energy account of growing collisions ({@link DiscMotion#energyAdded},
- * {@link DiscMotion#lastEnergyAdded}), which a growth run's thermostat and pressure read, is the
+ * The energy account of growing collisions ({@link GrowingMotion#energyAdded},
+ * {@link GrowingMotion#lastEnergyAdded}), which a growth run's thermostat and pressure read, is the
  * kinetic energy the collisions changed: a pair bounce off growing surfaces (which adds energy), then
  * a wall bounce. Seeded masses and velocities.
  */
@@ -44,7 +44,7 @@ class GrowthEnergyAccountTest {
     void growingCollisionsAccountForTheKineticEnergyTheyAdd(long seed) {
         Scene scene = touching(seed);
         DiscTable table = tableOf(scene);
-        DiscMotion motion = new DiscMotion(table);
+        GrowingMotion motion = new GrowingMotion(table, null);
         StallGuard guard = new StallGuard(scene, table::sceneId);
         int a = 0;
         int b = 1;
