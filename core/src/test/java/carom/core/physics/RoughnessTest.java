@@ -145,17 +145,23 @@ class RoughnessTest {
         return LongStream.range(1, 41);
     }
 
-    @Test
-    void aDiscRollingWithoutSlipOnTheFloorKeepsRollingOnAPerfectlyRoughWallOnlyWithItsNormalSpeedReversed() {
-        // Rolling to the right on the bottom wall: the contact point is at rest (vx + ω R = 0).
+    /** One uniform disc (R = 1/2, q = 1/2) of inverse mass {@code invMass} moving at (vx, vy), spinning at omega. */
+    private static Discs oneDisc(double invMass, double vx, double vy, double omega) {
         Discs d = new Discs(1, true);
-        d.invMass[0] = 1;
+        d.invMass[0] = invMass;
         d.radius[0] = 0.5;
         d.spins.radius[0] = 0.5;
         d.spins.inertia[0] = 0.5;
-        d.vx[0] = 1;
-        d.vy[0] = -2;
-        d.spins.omega[0] = -2;
+        d.vx[0] = vx;
+        d.vy[0] = vy;
+        d.spins.omega[0] = omega;
+        return d;
+    }
+
+    @Test
+    void aDiscRollingWithoutSlipOnTheFloorKeepsRollingOnAPerfectlyRoughWallOnlyWithItsNormalSpeedReversed() {
+        // Rolling to the right on the bottom wall: the contact point is at rest (vx + ω R = 0).
+        Discs d = oneDisc(1, 1, -2, -2);
         Boundary walls = Boundary.of(new carom.core.scene.Box(10, 10, carom.core.scene.BoundaryKind.WALLS));
         walls.reflect(d, 0, Boundary.BOTTOM, 0.5);
         rough(1).wall(d.vx, 0, d.vy, 0, Boundary.BOTTOM, d.spins, 0);
@@ -168,13 +174,7 @@ class RoughnessTest {
     void aSlidingDiscOnAPerfectlyRoughWallReversesItsSurfaceSpeedWithTheSplitQGives() {
         // Sliding right without spin on the bottom wall, q = 1/2: gt = 1, change = 2 gt / (1 + q) = 4/3,
         // vx = 1 - q·4/3 = 1/3, ω = -(4/3)/R.
-        Discs d = new Discs(1, true);
-        d.invMass[0] = 2;
-        d.radius[0] = 0.5;
-        d.spins.radius[0] = 0.5;
-        d.spins.inertia[0] = 0.5;
-        d.vx[0] = 1;
-        d.vy[0] = -1;
+        Discs d = oneDisc(2, 1, -1, 0);
         rough(1).wall(d.vx, 0, d.vy, 0, Boundary.BOTTOM, d.spins, 0);
         assertThat(d.vx[0]).isCloseTo(1.0 / 3, within(1e-15));
         assertThat(d.spins.omega[0]).isCloseTo(-8.0 / 3, within(1e-15));
