@@ -29,13 +29,18 @@ class RoughDiscsCommandTest {
     @TempDir
     Path dir;
 
+    /** {@code simulate} of the sliding disc on {@code engine}, the final state to {@code csv}. */
+    private Cli simulate(String engine, Path csv) {
+        Path scene = Scenes.write(dir, "rough.json", SLIDING_INTO_A_WALL);
+        return Cli.run("simulate", scene.toString(), "--engine", engine, "--out", csv.toString());
+    }
+
     @ParameterizedTest
     @ValueSource(strings = {"serial", "fast", "slabs"})
     void theFinalStateEndsWithTheSpinTheWallGave(String engine) throws IOException {
-        Path scene = Scenes.write(dir, "rough.json", SLIDING_INTO_A_WALL);
         Path csv = dir.resolve("final.csv");
 
-        Cli r = Cli.run("simulate", scene.toString(), "--engine", engine, "--out", csv.toString());
+        Cli r = simulate(engine, csv);
 
         assertThat(r.status()).as(r.err()).isZero();
         List<String> lines = Files.readAllLines(csv);
@@ -51,15 +56,35 @@ class RoughDiscsCommandTest {
 
     @ParameterizedTest
     @ValueSource(strings = {"stripes", "akka", "stepped"})
-    void anEngineThatDoesNotSimulateRoughDiscsRefusesThemBeforeItStarts(String engine) throws IOException {
-        Path scene = Scenes.write(dir, "rough.json", SLIDING_INTO_A_WALL);
+    void anEngineThatDoesNotSimulateRoughDiscsRefusesThemBeforeItStarts(String engine) {
         Path csv = dir.resolve("final.csv");
 
-        Cli r = Cli.run("simulate", scene.toString(), "--engine", engine, "--out", csv.toString());
+        Cli r = simulate(engine, csv);
 
         assertThat(r.status()).isEqualTo(2);
         assertThat(r.err()).startsWith("error: ").contains("effects.tangentialRestitution: engine " + engine
                 + " does not simulate rough discs that spin (engines that do: serial, fast, slabs)").doesNotContain("\tat ");
         assertThat(csv).doesNotExist();
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"fast", "slabs"})
+    void anXyzTrajectoryEndsEachDiscsLineWithItsSpin(String engine) throws IOException {
+        Path scene = Scenes.write(dir, "rough.json", SLIDING_INTO_A_WALL);
+        Path frames = dir.resolve("frames.xyz");
+
+        Cli r = Cli.run("simulate", scene.toString(), "--engine", engine, "--every", "1", "--trajectory",
+                frames.toString(), "--out", dir.resolve("final.csv").toString());
+
+        assertThat(r.status()).as(r.err()).isZero();
+        List<String> lines = Files.readAllLines(frames);
+        // Frames at t = 0, 1 (before the wall) and 2 (after it): three lines each.
+        assertThat(lines).hasSize(9);
+        assertThat(lines.get(1)).contains("Properties=type:S:1:id:I:1:pos:R:3:velo:R:3:radius:R:1:omega:R:1 ");
+        String[] before = lines.get(5).split(" ");
+        String[] after = lines.get(8).split(" ");
+        assertThat(before).hasSize(10);
+        assertThat(Double.parseDouble(before[9])).isZero();
+        assertThat(Double.parseDouble(after[9])).isCloseTo(4.0 / 3, within(1e-12));
     }
 }
