@@ -24,9 +24,9 @@ import java.util.Arrays;
  * Disc states saved in numbered slots, for an undo log: everything one event may change in a disc
  * (its record of doubles, its cell and event kind, its partner and both counters, when it last
  * collided, for restitution, and a rough disc's spin). {@link #restore} puts a disc back as saved;
- * {@link #load} and {@link #clock} read the trajectory segment the disc followed from a saved state. Cell-list and
- * queue links are not saved: {@link #restore} relinks the cell lists itself, and the caller
- * re-queues the disc at its restored event time ({@link DiscTable#eventTime}).
+ * {@link #load} and {@link #clock} read the trajectory segment the disc followed from a saved state.
+ * Cell-list and queue links are not saved: {@link #restore} relinks the cell lists itself, and the
+ * caller re-queues the disc at its restored event time ({@link DiscTable#eventTime}).
  *
  * <p>Single writer: one thread's states, changed through that thread's {@link DiscMotion}. The
  * arrays double when a slot beyond them is saved; no other allocation.
