@@ -6,6 +6,7 @@ import carom.core.engine.EngineSpec;
 import carom.core.engine.Tunable;
 import carom.engines.EngineCatalog;
 import java.io.PrintWriter;
+import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.IDefaultValueProvider;
@@ -17,12 +18,14 @@ import picocli.CommandLine.Spec;
 
 /**
  * {@code carom engines}: one line per engine, {@code NAME exact|relaxed DESCRIPTION}, the description
- * ending with the engine's settings and their defaults; with {@code --tunables}, every setting's type,
+ * ending with the effects it simulates beyond the ones every engine does (gravity, restitution of pairs
+ * and walls, the TC model) and with its settings and their defaults; with {@code --tunables}, every setting's type,
  * range, unit and meaning below its engine. Also how every command that runs an engine finds it by
  * name and fills in the one default engine.
  */
 @Command(name = "engines", mixinStandardHelpOptions = true,
-        description = "List the engines, one per line: NAME exact|relaxed DESCRIPTION (settings: NAME=DEFAULT, ...).")
+        description = "List the engines, one per line: NAME exact|relaxed DESCRIPTION (effects: KEY, ...)"
+                + " (settings: NAME=DEFAULT, ...).")
 public final class EnginesCommand implements Callable<Integer> {
     /**
      * Most worker threads a run may ask for: far beyond any machine's cores, and far below what breaks
@@ -48,9 +51,12 @@ public final class EnginesCommand implements Callable<Integer> {
         for (Engine e : EngineCatalog.all()) {
             EngineSpec s = e.spec();
             // Single spaces, so that scripts can split each line into three fields.
+            List<String> own = s.effects().stream().filter(effect -> !EngineSpec.SHARED_PHYSICS.contains(effect))
+                    .map(effect -> effect.key).toList();
+            String effects = own.isEmpty() ? "" : " (effects: " + String.join(", ", own) + ")";
             String settings = s.tunables().isEmpty() ? "" : " (settings: " + String.join(", ",
                     s.tunables().stream().map(t -> t.name() + "=" + (t.computedDefault() ? "auto" : t.defaultText())).toList()) + ")";
-            out.println(s.name() + " " + s.exactness() + " " + s.description() + settings);
+            out.println(s.name() + " " + s.exactness() + " " + s.description() + effects + settings);
             if (tunables) {
                 for (Tunable<?> t : s.tunables()) {
                     out.println("    " + t.describe());

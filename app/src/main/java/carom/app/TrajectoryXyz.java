@@ -14,7 +14,8 @@ import java.util.List;
  * A trajectory in extended XYZ, one frame per sample, streamed to a writer as the run goes (memory
  * does not grow with the number of frames). Each frame: the number of discs; a comment line with the
  * box as {@code Lattice} (z = 1), the columns ({@code type} = species name, {@code id}, position and
- * velocity with z = 0, {@code radius}), {@code Time} and {@code pbc} ("T T F" periodic, "F F F" walls);
+ * velocity with z = 0, {@code radius}, and for rough discs {@code omega}, the angular velocity), {@code Time}
+ * and {@code pbc} ("T T F" periodic, "F F F" walls);
  * then one line per disc in id order. Numbers go out with {@link Double#toString}, the shortest text
  * that reads back as the same double. OVITO and ASE read it ({@code ase.io.read(path, index=":")}).
  */
@@ -23,13 +24,17 @@ final class TrajectoryXyz implements Sampler {
     private final String header;
     private final String[] typeNames;
     private final StringBuilder line = new StringBuilder(160);
+    /** Rough discs: each line ends with the disc's angular velocity. */
+    private final boolean rough;
     private long frames;
 
     TrajectoryXyz(Scene scene, Writer out) {
         this.out = out;
         Box box = scene.box();
         this.header = "Lattice=\"" + box.width() + " 0.0 0.0 0.0 " + box.height() + " 0.0 0.0 0.0 1.0\""
-                + " Properties=type:S:1:id:I:1:pos:R:3:velo:R:3:radius:R:1 Time=";
+                + " Properties=type:S:1:id:I:1:pos:R:3:velo:R:3:radius:R:1"
+                + (scene.effects().rough() ? ":omega:R:1" : "") + " Time=";
+        this.rough = scene.effects().rough();
         List<Species> species = scene.species();
         this.typeNames = new String[species.size()];
         for (int s = 0; s < typeNames.length; s++) {
@@ -64,8 +69,11 @@ final class TrajectoryXyz implements Sampler {
                 line.append(typeNames[d.species[i]]).append(' ').append(i).append(' ')
                         .append(d.x[i]).append(' ').append(d.y[i]).append(" 0.0 ")
                         .append(d.vx[i]).append(' ').append(d.vy[i]).append(" 0.0 ")
-                        .append(d.radius[i]).append('\n');
-                out.append(line);
+                        .append(d.radius[i]);
+                if (rough) {
+                    line.append(' ').append(d.spins.omega[i]);
+                }
+                out.append(line.append('\n'));
             }
             frames++;
         } catch (IOException e) {

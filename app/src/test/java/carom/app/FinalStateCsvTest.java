@@ -38,6 +38,27 @@ class FinalStateCsvTest {
         assertThat(w.toString()).endsWith("\n");
     }
 
+    @Test
+    void roughDiscsEndEachRowWithTheirAngularVelocity() throws IOException {
+        Discs d = new Discs(3, true);
+        double[] omega = {-0.0, 1.0 / 3, -2.5e17};
+        for (int i = 0; i < d.n; i++) {
+            d.x[i] = i;
+            d.spins.omega[i] = omega[i];
+        }
+        StringWriter w = new StringWriter();
+        FinalStateCsv.write(d, w);
+
+        List<String> lines = w.toString().lines().toList();
+        assertThat(lines).hasSize(4);
+        assertThat(lines.get(0)).isEqualTo("id,x,y,vx,vy,omega");
+        for (int i = 0; i < d.n; i++) {
+            String[] f = lines.get(i + 1).split(",", -1);
+            assertThat(f).hasSize(6);
+            assertThat(Double.doubleToRawLongBits(Double.parseDouble(f[5]))).isEqualTo(Double.doubleToRawLongBits(omega[i]));
+        }
+    }
+
     /**
      * What keeps a million discs quick, as a count rather than a timing (which a busy machine fails):
      * rows are built in one reused buffer, so writing allocates about one short string per row

@@ -19,6 +19,27 @@ class MainTest {
     }
 
     @Test
+    void eachEngineLineNamesTheEffectsItSimulatesBesidesTheSharedOnes() {
+        Cli r = Cli.run("engines");
+
+        assertThat(r.status()).isZero();
+        java.util.Map<String, String> byName = new java.util.HashMap<>();
+        r.out().lines().forEach(l -> byName.put(l.substring(0, l.indexOf(' ')), l));
+        for (carom.core.engine.Engine engine : carom.engines.EngineCatalog.all()) {
+            java.util.List<String> own = engine.spec().effects().stream()
+                    .filter(e -> !carom.core.engine.EngineSpec.SHARED_PHYSICS.contains(e)).map(e -> e.key).toList();
+            String line = byName.get(engine.name());
+            if (own.isEmpty()) {
+                assertThat(line).as(engine.name()).doesNotContain("(effects: ");
+            } else {
+                assertThat(line).as(engine.name()).contains(" (effects: " + String.join(", ", own) + ")");
+            }
+        }
+        assertThat(byName.get("fast")).contains("(effects: growth, tangentialRestitution)");
+        assertThat(byName.get("stepped")).doesNotContain("(effects: ");
+    }
+
+    @Test
     void helpAndVersionSucceed() {
         for (String flag : new String[] {"--help", "-h"}) {
             Cli r = Cli.run(flag);

@@ -2,14 +2,14 @@ package carom.core.engine;
 
 import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
-import carom.core.physics.PairLaw;
 import carom.core.physics.Restitution;
+import carom.core.physics.Roughness;
 import carom.core.state.Discs;
 
 /**
  * Carries out one collision at its time, the same way in every engine: both discs advanced to it,
  * the nearest-image separation, the restitution, resting contact against immovable things under
- * gravity ({@link StallGuard}), and the collision law. What an engine does next (stamps, queues,
+ * gravity ({@link StallGuard}), and the collision law, its tangential part by the scene's {@link Roughness}. What an engine does next (stamps, queues,
  * messages) stays with the engine. One instance per worker: the stall guard is not thread-safe.
  *
  * <p>With {@link Sleepers} (the exact engines) a disc that comes to rest is put to sleep instead of
@@ -20,6 +20,7 @@ import carom.core.state.Discs;
 public final class Contacts {
     private final Flight flight;
     private final Boundary boundary;
+    private final Roughness roughness;
     private final boolean gravity;
     private final StallGuard stallGuard;
     /** Null for an engine that does not model resting contact. */
@@ -30,9 +31,16 @@ public final class Contacts {
         this(flight, boundary, stallGuard, null);
     }
 
+    /** For smooth discs (an engine that does not simulate rough ones), with resting contact by {@code sleepers}. */
     public Contacts(Flight flight, Boundary boundary, StallGuard stallGuard, Sleepers sleepers) {
+        this(flight, boundary, Roughness.SMOOTH, stallGuard, sleepers);
+    }
+
+    /** With {@code roughness} along the tangent of each contact (rough discs spin: their {@link Discs#spins}). */
+    public Contacts(Flight flight, Boundary boundary, Roughness roughness, StallGuard stallGuard, Sleepers sleepers) {
         this.flight = flight;
         this.boundary = boundary;
+        this.roughness = roughness;
         this.gravity = flight.maxAcceleration() > 0;
         this.stallGuard = stallGuard;
         this.sleepers = sleepers;
@@ -67,7 +75,7 @@ public final class Contacts {
                 sleepers.wake(d, support);
             }
         }
-        return PairLaw.collide(d.vx, a, b, d.vy, a, b, d.invMass[a], d.invMass[b], dx, dy, boundary.imageVelocityX(rawDy), e);
+        return roughness.pair(d, a, b, dx, dy, boundary.imageVelocityX(rawDy), e);
     }
 
     /** Reflects disc i of {@code d} off a wall at {@code now}, or puts it to sleep there. */
@@ -83,5 +91,6 @@ public final class Contacts {
             }
         }
         boundary.reflect(d, i, wall, e);
+        roughness.wall(d.vx, i, d.vy, i, wall, d.spins, i);
     }
 }

@@ -1,11 +1,12 @@
 package carom.core.engine;
 
+import carom.core.observe.Observables;
 import carom.core.scene.Effects;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
 
 /**
- * A run's total mechanical energy at its start and end: kinetic plus the potential energy in the
+ * A run's total mechanical energy at its start and end: kinetic (rough discs' rotation included) plus the potential energy in the
  * scene's gravity, E = KE - sum m (g·r) over the mobile discs (r relative to the origin; fixed discs
  * neither move nor count). Without gravity it is the kinetic energy, exactly as the run reported it.
  * An elastic run conserves it; under gravity the kinetic energy alone rises and falls as discs fall
@@ -18,17 +19,22 @@ import carom.core.state.Discs;
  * @param end     the energy at the run's end time ({@code final} in SUMMARY.json)
  */
 public record Energy(double initial, double end) {
-    /** The energy of {@code run}, a run of {@code scene}. Costs one pass over the discs under gravity, none without. */
+    /**
+     * The energy of {@code run}, a run of {@code scene}; rough discs' rotational energy counts too.
+     * Costs one pass over the discs under gravity or with rough discs, none otherwise.
+     */
     public static Energy of(Scene scene, RunResult run) {
         Effects effects = scene.effects();
-        if (!effects.hasGravity()) {
-            return new Energy(run.kineticEnergyStart(), run.kineticEnergyEnd());
-        }
-        if (scene.box().periodic()) {
+        if (effects.hasGravity() && scene.box().periodic()) {
             return new Energy(Double.NaN, Double.NaN);
         }
-        return new Energy(run.kineticEnergyStart() + potential(scene.newDiscs(), effects),
-                run.kineticEnergyEnd() + potential(run.finalState(), effects));
+        if (!effects.hasGravity() && !effects.rough()) {
+            return new Energy(run.kineticEnergyStart(), run.kineticEnergyEnd());
+        }
+        Discs start = scene.newDiscs();
+        Discs end = run.finalState();
+        return new Energy(run.kineticEnergyStart() + potential(start, effects) + Observables.rotationalEnergy(start),
+                run.kineticEnergyEnd() + potential(end, effects) + Observables.rotationalEnergy(end));
     }
 
     /** Potential energy of the mobile discs where they are: -sum m (g·r). */

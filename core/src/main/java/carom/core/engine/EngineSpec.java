@@ -122,6 +122,7 @@ public record EngineSpec(String name, String description, boolean exact, Set<Cap
             case WALL_RESTITUTION -> "inelastic collisions with walls";
             case TC -> "the TC model of inelastic collisions";
             case GROWTH -> "growing discs";
+            case TANGENTIAL_RESTITUTION -> "rough discs that spin";
         };
     }
 

@@ -26,9 +26,16 @@ public final class Sleepers {
         return d.invMass[i] == 0 && awakeInvMass[i] > 0;
     }
 
-    /** Puts mobile disc i to sleep where it is (its clock is now): its kinetic energy is put to rest. */
+    /**
+     * Puts mobile disc i to sleep where it is (its clock is now): its kinetic energy, a rough disc's
+     * rotation too, is put to rest.
+     */
     public void putToSleep(Discs d, int i) {
         energyPutToRest += 0.5 * (d.vx[i] * d.vx[i] + d.vy[i] * d.vy[i]) / d.invMass[i];
+        if (d.spins != null) {
+            energyPutToRest += d.spins.rotationalEnergy(i, d.invMass[i]);
+            d.spins.omega[i] = 0;
+        }
         sleeps++;
         d.vx[i] = 0;
         d.vy[i] = 0;

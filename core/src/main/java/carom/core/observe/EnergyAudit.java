@@ -4,8 +4,8 @@ import carom.core.physics.Flight;
 import carom.core.state.Discs;
 
 /**
- * Test mode: checks after every event that the total mechanical energy (kinetic plus gravity's
- * potential) has not grown, since collisions may only keep or dissipate it. O(N) per event, so only
+ * Test mode: checks after every event that the total mechanical energy (kinetic, rotational too for
+ * rough discs, plus gravity's potential) has not grown, since collisions may only keep or dissipate it. O(N) per event, so only
  * for small scenes in tests ({@code auditEnergy=true} engine option).
  */
 public final class EnergyAudit {
@@ -39,6 +39,9 @@ public final class EnergyAudit {
             double vx = flight.vx(d, i, time);
             double vy = flight.vy(d, i, time);
             double kinetic = 0.5 * (vx * vx + vy * vy) / d.invMass[i];
+            if (d.spins != null) {
+                kinetic += d.spins.rotationalEnergy(i, d.invMass[i]);
+            }
             double potential = flight.potentialEnergy(d, i, time);
             energy += kinetic + potential;
             scale += kinetic + Math.abs(potential);

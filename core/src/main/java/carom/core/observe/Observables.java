@@ -8,7 +8,7 @@ public final class Observables {
     private Observables() {
     }
 
-    /** Total kinetic energy of the mobile discs at their clocks. */
+    /** Total translational kinetic energy of the mobile discs at their clocks (rotation: {@link #rotationalEnergy}). */
     public static double kineticEnergy(Discs d) {
         double sum = 0;
         for (int i = 0; i < d.n; i++) {
@@ -19,16 +19,29 @@ public final class Observables {
         return sum;
     }
 
+    /** Total rotational kinetic energy of the mobile discs: 0 for smooth discs, which do not spin. */
+    public static double rotationalEnergy(Discs d) {
+        if (d.spins == null) {
+            return 0;
+        }
+        double sum = 0;
+        for (int i = 0; i < d.n; i++) {
+            sum += d.spins.rotationalEnergy(i, d.invMass[i]);
+        }
+        return sum;
+    }
+
     /**
-     * Kinetic plus potential energy of the mobile discs at their clocks, the potential in the scene's
-     * field as {@code flight} measures it (0 without gravity): what an elastic run conserves.
+     * Kinetic (translational and rotational) plus potential energy of the mobile discs at their clocks,
+     * the potential in the scene's field as {@code flight} measures it (0 without gravity): what an
+     * elastic run conserves.
      */
     public static double totalEnergy(Discs d, Flight flight) {
         double potential = 0;
         for (int i = 0; i < d.n; i++) {
             potential += flight.potentialEnergy(d, i, d.t[i]);
         }
-        return kineticEnergy(d) + potential;
+        return kineticEnergy(d) + rotationalEnergy(d) + potential;
     }
 
     /** Total momentum of the mobile discs, {px, py}. */

@@ -7,7 +7,8 @@ import carom.core.scene.Scene;
  * The physics a scene calls for, composed once when a run starts (in the spirit of DynamO's
  * pluggable dynamics, interactions and boundaries): how discs fly ({@link Flight}: straight lines,
  * or parabolas under gravity), what the box's edges do ({@link Boundary}: walls or periodic), which
- * restitution a contact gets ({@link Restitution}: elastic, constant, or the TC model) and how radii
+ * restitution a contact gets ({@link Restitution}: elastic, constant, or the TC model), what it does
+ * along the tangent ({@link Roughness}: nothing for smooth discs, spin for rough ones) and how radii
  * change ({@link GrowthLaw}: rigid, or linear growth). Each law's {@code of} picks its implementation
  * from the scene's effects ({@link carom.core.scene.Effect} describes them). Engines read these fields
  * once and call them on hot paths, where each call site then sees exactly one implementation and the
@@ -19,17 +20,19 @@ public final class Physics {
     /** Shared template; a run takes its own with {@code restitution.forRun(n)}. */
     public final Restitution restitution;
     public final GrowthLaw growth;
+    public final Roughness roughness;
 
-    private Physics(Flight flight, Boundary boundary, Restitution restitution, GrowthLaw growth) {
+    private Physics(Flight flight, Boundary boundary, Restitution restitution, GrowthLaw growth, Roughness roughness) {
         this.flight = flight;
         this.boundary = boundary;
         this.restitution = restitution;
         this.growth = growth;
+        this.roughness = roughness;
     }
 
     public static Physics of(Scene scene) {
         Effects e = scene.effects();
         return new Physics(Flight.of(e), Boundary.of(scene.box()), Restitution.of(e).forRun(scene.size()),
-                GrowthLaw.of(e));
+                GrowthLaw.of(e), Roughness.of(e));
     }
 }

@@ -40,7 +40,11 @@ public enum Effect {
     GROWTH("growth", Range.POSITIVE, 0, "1/T",
             "the growth rate G of the Lubachevsky-Stillinger compression: every radius is R(0)·(1 + G·t) at time t;"
                     + " not with gravity",
-            (e, v) -> e.withGrowth(v[0]), component("G", Effects::growth));
+            (e, v) -> e.withGrowth(v[0]), component("G", Effects::growth)),
+    TANGENTIAL_RESTITUTION("tangentialRestitution", Range.SIGNED_UNIT, -1, "none",
+            "the coefficient of tangential restitution β of collisions, pairs and walls: −1 smooth discs, +1 perfectly"
+                    + " rough; rough discs spin (species inertia, particle omega); not with growth",
+            (e, v) -> e.withTangentialRestitution(v[0]), component("beta", Effects::tangentialRestitution));
 
     /** The key under {@code effects} in a scene file. */
     public final String key;
@@ -70,6 +74,7 @@ public enum Effect {
     public enum Range {
         FINITE("finite", "must be a finite number"),
         UNIT_INTERVAL("0 to 1", "must lie in [0, 1]"),
+        SIGNED_UNIT("-1 to 1", "must lie in [-1, 1]"),
         NON_NEGATIVE("finite, >= 0", "must be a finite number >= 0"),
         POSITIVE("finite, > 0", "must be a finite number > 0");
 
@@ -87,6 +92,7 @@ public enum Effect {
             return switch (this) {
                 case FINITE -> Double.isFinite(v);
                 case UNIT_INTERVAL -> v >= 0 && v <= 1;
+                case SIGNED_UNIT -> v >= -1 && v <= 1;
                 case NON_NEGATIVE -> v >= 0 && v < Double.POSITIVE_INFINITY;
                 case POSITIVE -> v > 0 && v < Double.POSITIVE_INFINITY;
             };
@@ -201,6 +207,10 @@ public enum Effect {
         if (GROWTH.isOn(effects) && GRAVITY.isOn(effects)) {
             throw new BadInputException("effects.growth: growth under gravity is not supported (compression "
                     + "to jamming runs without gravity)");
+        }
+        if (GROWTH.isOn(effects) && TANGENTIAL_RESTITUTION.isOn(effects)) {
+            throw new BadInputException("effects.tangentialRestitution: rough discs do not grow (compression to jamming"
+                    + " runs with smooth discs)");
         }
     }
 }

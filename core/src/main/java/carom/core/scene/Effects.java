@@ -17,14 +17,21 @@ package carom.core.scene;
  *                        previous one is elastic; 0 switches the model off
  * @param growth          Lubachevsky-Stillinger growth rate G: every radius is R(0)(1 + G t) at absolute
  *                        time t; 0 (off) or a finite number > 0
+ * @param tangentialRestitution the tangential restitution β of pairs and walls, in [−1, 1]: −1 smooth
+ *                        discs (off), above −1 rough discs that spin
  */
 public record Effects(double gravityX, double gravityY, double restitution, double wallRestitution, double tc,
-                      double growth) {
-    public static final Effects NONE = new Effects(0, 0, 1, 1, 0, 0);
+                      double growth, double tangentialRestitution) {
+    public static final Effects NONE = new Effects(0, 0, 1, 1, 0, 0, -1);
 
     /** Whether radii grow during the run ({@code growth} > 0). */
     public boolean grows() {
         return growth != 0;
+    }
+
+    /** Whether the discs are rough and spin (a tangential restitution above −1). */
+    public boolean rough() {
+        return tangentialRestitution != -1;
     }
 
     public boolean hasGravity() {
@@ -44,19 +51,23 @@ public record Effects(double gravityX, double gravityY, double restitution, doub
     }
 
     public Effects withGravity(double gx, double gy) {
-        return new Effects(gx, gy, restitution, wallRestitution, tc, growth);
+        return new Effects(gx, gy, restitution, wallRestitution, tc, growth, tangentialRestitution);
     }
 
     /** Pair and wall restitution at once ({@link Effect#RESTITUTION}, {@link Effect#WALL_RESTITUTION}). */
     public Effects withRestitution(double pairs, double walls) {
-        return new Effects(gravityX, gravityY, pairs, walls, tc, growth);
+        return new Effects(gravityX, gravityY, pairs, walls, tc, growth, tangentialRestitution);
     }
 
     public Effects withTc(double newTc) {
-        return new Effects(gravityX, gravityY, restitution, wallRestitution, newTc, growth);
+        return new Effects(gravityX, gravityY, restitution, wallRestitution, newTc, growth, tangentialRestitution);
     }
 
     public Effects withGrowth(double rate) {
-        return new Effects(gravityX, gravityY, restitution, wallRestitution, tc, rate);
+        return new Effects(gravityX, gravityY, restitution, wallRestitution, tc, rate, tangentialRestitution);
+    }
+
+    public Effects withTangentialRestitution(double beta) {
+        return new Effects(gravityX, gravityY, restitution, wallRestitution, tc, growth, beta);
     }
 }

@@ -35,6 +35,8 @@ public final class SceneBuilder {
     private double[] explicitState = new double[16 * 4];
     /** Each explicit disc's own radius, NaN where it has its species'. */
     private double[] explicitRadius = new double[16];
+    /** Each explicit disc's angular velocity (rough discs only). */
+    private double[] explicitOmega = new double[16];
     private final List<GenerateBlock> blocks = new ArrayList<>();
     /** The discs that replace the scene's own, or null ({@link #withDiscsFrom}). */
     private DiscSource replacement;
@@ -99,19 +101,29 @@ public final class SceneBuilder {
         return this;
     }
 
-    /** Adds an explicit disc of species index {@code s}. */
+    /** Adds an explicit disc of species index {@code s}, not spinning. */
     public SceneBuilder disc(int s, double x, double y, double vx, double vy) {
-        return disc(s, x, y, vx, vy, Double.NaN);
+        return disc(s, x, y, vx, vy, Double.NaN, 0);
     }
 
-    /** Adds an explicit disc of species index {@code s} with its own {@code radius} (NaN: its species'). */
+    /** Adds an explicit disc of species index {@code s} with its own {@code radius} (NaN: its species'), not spinning. */
     public SceneBuilder disc(int s, double x, double y, double vx, double vy, double radius) {
+        return disc(s, x, y, vx, vy, radius, 0);
+    }
+
+    /**
+     * Adds an explicit disc of species index {@code s} with its own {@code radius} (NaN: its species'),
+     * spinning at {@code omega} (rough discs only).
+     */
+    public SceneBuilder disc(int s, double x, double y, double vx, double vy, double radius, double omega) {
         if (explicitCount == explicitSpecies.length) {
             explicitSpecies = Arrays.copyOf(explicitSpecies, 2 * explicitCount);
             explicitState = Arrays.copyOf(explicitState, 8 * explicitCount);
             explicitRadius = Arrays.copyOf(explicitRadius, 2 * explicitCount);
+            explicitOmega = Arrays.copyOf(explicitOmega, 2 * explicitCount);
         }
         explicitRadius[explicitCount] = radius;
+        explicitOmega[explicitCount] = omega;
         explicitSpecies[explicitCount] = s;
         explicitState[4 * explicitCount] = x;
         explicitState[4 * explicitCount + 1] = y;
@@ -164,8 +176,9 @@ public final class SceneBuilder {
         }
         // A source without velocities (a packing) gets them drawn for its discs, the same every time.
         VelocityDraw draw = replacement != null && !replacement.hasVelocities() ? new VelocityDraw(drawn, drawSeed) : null;
-        Recipe recipe = new Recipe((int) total, box, List.copyOf(species), Arrays.copyOf(explicitSpecies, explicitCount),
-                Arrays.copyOf(explicitState, 4 * explicitCount), Arrays.copyOf(explicitRadius, explicitCount), draw,
+        Recipe recipe = new Recipe((int) total, box, List.copyOf(species), effects.rough(),
+                Arrays.copyOf(explicitSpecies, explicitCount), Arrays.copyOf(explicitState, 4 * explicitCount),
+                Arrays.copyOf(explicitRadius, explicitCount), Arrays.copyOf(explicitOmega, explicitCount), draw,
                 List.copyOf(blocks), blockStarts);
         Discs d = recipe.get();
         checkInsideBox(d, blockStarts);
@@ -181,12 +194,12 @@ public final class SceneBuilder {
      * block in turn; the same numbers every time, so a scene can make its discs again instead of keeping
      * them ({@link Scene}). A block that cannot be placed is bad input, found the first time.
      */
-    private record Recipe(int n, Box box, List<Species> species, int[] explicitSpecies, double[] explicitState,
-                          double[] explicitRadius, VelocityDraw draw, List<GenerateBlock> blocks, int[] blockStarts)
-            implements Supplier<Discs> {
+    private record Recipe(int n, Box box, List<Species> species, boolean rough, int[] explicitSpecies,
+                          double[] explicitState, double[] explicitRadius, double[] explicitOmega, VelocityDraw draw,
+                          List<GenerateBlock> blocks, int[] blockStarts) implements Supplier<Discs> {
         @Override
         public Discs get() {
-            Discs d = new Discs(n);
+            Discs d = new Discs(n, rough);
             for (int i = 0; i < explicitSpecies.length; i++) {
                 Species s = species.get(explicitSpecies[i]);
                 d.species[i] = explicitSpecies[i];
@@ -203,6 +216,13 @@ public final class SceneBuilder {
             }
             for (int b = 0; b < blocks.size(); b++) {
                 BlockGenerator.place(blocks.get(b), species, box, d, blockStarts[b], "generate[" + b + "]");
+            }
+            if (d.spins != null) {
+                for (int i = 0; i < n; i++) {
+                    d.spins.omega[i] = i < explicitOmega.length ? explicitOmega[i] : 0;
+                    d.spins.inertia[i] = species.get(d.species[i]).inertia();
+                    d.spins.radius[i] = d.radius[i];
+                }
             }
             return d;
         }
@@ -242,6 +262,9 @@ public final class SceneBuilder {
             requirePositive("species[" + i + "].radius", s.radius());
             if (!s.fixed()) {
                 requirePositive("species[" + i + "].mass", s.mass());
+            }
+            if (!(s.inertia() > 0 && s.inertia() <= 1)) {
+                throw new BadInputException("species[" + i + "].inertia: must lie in (0, 1], got " + s.inertia());
             }
             largestDiameter = Math.max(largestDiameter, 2 * s.radius());
         }
@@ -334,6 +357,16 @@ public final class SceneBuilder {
         requireFinite(path + ".y", explicitState[4 * i + 1]);
         requireFinite(path + ".vx", vx);
         requireFinite(path + ".vy", vy);
+        double omega = explicitOmega[i];
+        requireFinite(path + ".omega", omega);
+        if (omega != 0 && !effects.rough()) {
+            throw new BadInputException(path + ".omega: only rough discs spin (give effects.tangentialRestitution"
+                    + " above -1)");
+        }
+        if (omega != 0 && species.get(s).fixed()) {
+            throw new BadInputException(path + ": disc " + i + " is of fixed species '"
+                    + species.get(s).name() + "' and cannot spin");
+        }
         if (species.get(s).fixed() && (vx != 0 || vy != 0)) {
             throw new BadInputException(path + ": disc " + i + " is of fixed species '"
                     + species.get(s).name() + "' and cannot have a velocity");

@@ -62,11 +62,13 @@ public final class SceneReader {
     private static final Set<String> TOP_KEYS =
             Set.of("name", "box", "species", "particles", "generate", "effects", "until");
     private static final Set<String> BOX_KEYS = Set.of("width", "height", "boundary", "shearRate", "thermostat");
-    private static final Set<String> SPECIES_KEYS = Set.of("name", "radius", "mass", "fixed");
-    private static final Set<String> PARTICLE_KEYS = Set.of("species", "x", "y", "vx", "vy", "radius");
+    private static final Set<String> SPECIES_KEYS = Set.of("name", "radius", "mass", "fixed", "inertia");
+    private static final Set<String> PARTICLE_KEYS = Set.of("species", "x", "y", "vx", "vy", "radius", "omega");
     private static final Set<String> GENERATE_KEYS = Set.of("species", "fractions", "count", "layout", "jitter", "velocity", "seed");
     private static final Set<String> UNIFORM_KEYS = Set.of("distribution", "scale");
     private static final Set<String> MAXWELL_KEYS = Set.of("distribution", "temperature");
+    /** The numbers a particle holds: x, y, vx, vy, omega. */
+    private static final int PARTICLE_NUMBERS = 5;
     /** Species names an "unknown species" message lists before it just counts them. */
     private static final int DECLARED_NAMES_SHOWN = 10;
 
@@ -178,7 +180,7 @@ public final class SceneReader {
     private static final class Particles {
         private int count;
         private int[] nameOf = new int[16];
-        private double[] state = new double[64];
+        private double[] state = new double[16 * PARTICLE_NUMBERS];
         /** Each particle's own radius, NaN where it has its species'. */
         private double[] radius = new double[16];
         private final List<String> names = new ArrayList<>();
@@ -200,7 +202,7 @@ public final class SceneReader {
         private void add(int k, JsonNode node) {
             if (count == nameOf.length) {
                 nameOf = Arrays.copyOf(nameOf, 2 * count);
-                state = Arrays.copyOf(state, 8 * count);
+                state = Arrays.copyOf(state, 2 * PARTICLE_NUMBERS * count);
                 radius = Arrays.copyOf(radius, 2 * count);
             }
             try {
@@ -208,7 +210,7 @@ public final class SceneReader {
                         name -> nameIndex.computeIfAbsent(name, n -> {
                             names.add(n);
                             return names.size() - 1;
-                        }), state, 4 * count);
+                        }), state, PARTICLE_NUMBERS * count);
                 radius[count] = optionalNumber(node, "particles[" + k + "]", "radius", Double.NaN);
                 count++;
             } catch (BadInputException e) {
@@ -228,12 +230,13 @@ public final class SceneReader {
                 if (s == null) {
                     throw unknownSpecies("particles[" + k + "]", names.get(nameOf[k]), species);
                 }
-                int at = 4 * k;
-                builder.disc(s, state[at], state[at + 1], state[at + 2], state[at + 3], radius[k]);
+                int at = PARTICLE_NUMBERS * k;
+                builder.disc(s, state[at], state[at + 1], state[at + 2], state[at + 3], radius[k], state[at + 4]);
             }
             if (failed != null) {
                 String path = "particles[" + failedAt + "]";
-                readParticle(failed, path, name -> speciesRef(name, path, speciesByName, species), new double[4], 0);
+                readParticle(failed, path, name -> speciesRef(name, path, speciesByName, species),
+                        new double[PARTICLE_NUMBERS], 0);
                 optionalNumber(failed, path, "radius", Double.NaN);
                 throw new IllegalStateException(path + " failed a check once and passed it later");
             }
@@ -242,8 +245,8 @@ public final class SceneReader {
 
     /**
      * Checks particle {@code node} at {@code path} in the order its messages are promised (an object,
-     * known keys, its species, x, y, vx, vy), puts x, y, vx, vy at {@code out[at..at+4)} and returns
-     * what {@code species} makes of its species name.
+     * known keys, its species, x, y, vx, vy, omega), puts x, y, vx, vy, omega at
+     * {@code out[at..at+PARTICLE_NUMBERS)} and returns what {@code species} makes of its species name.
      */
     private static int readParticle(JsonNode node, String path, ToIntFunction<String> species, double[] out, int at) {
         object(node, path);
@@ -253,6 +256,7 @@ public final class SceneReader {
         out[at + 1] = requiredNumber(node, path, "y");
         out[at + 2] = optionalNumber(node, path, "vx", 0);
         out[at + 3] = optionalNumber(node, path, "vy", 0);
+        out[at + 4] = optionalNumber(node, path, "omega", 0);
         return s;
     }
 
@@ -352,13 +356,17 @@ public final class SceneReader {
                 if (s.has("mass")) {
                     throw new BadInputException(path + ".mass: a fixed species has infinite mass and takes no 'mass'");
                 }
+                if (s.has("inertia")) {
+                    throw new BadInputException(path + ".inertia: a fixed species never turns and takes no 'inertia'");
+                }
                 species.add(Species.fixed(name, radius));
             } else {
                 if (!s.has("mass")) {
                     throw new BadInputException(path + ".mass: missing (a mobile species needs a mass; "
                             + "\"fixed\": true makes an immovable one)");
                 }
-                species.add(Species.mobile(name, radius, requiredNumber(s, path, "mass")));
+                species.add(Species.mobile(name, radius, requiredNumber(s, path, "mass"))
+                        .withInertia(optionalNumber(s, path, "inertia", Species.UNIFORM_DISC)));
             }
             builder.species(species.get(i));
         }

@@ -9,6 +9,9 @@ package carom.core.state;
  *
  * <p>Fixed discs have {@code invMass == 0} and zero velocity; no special case is needed in the
  * collision law for them.
+ *
+ * <p>Rough discs also spin: {@link #spins} holds their angular velocities (null for smooth discs, which
+ * never turn).
  */
 public final class Discs {
     public final int n;
@@ -21,9 +24,18 @@ public final class Discs {
     public final double[] radius;
     public final double[] invMass;
     public final int[] species;
+    /** Angular velocities and moments of rough discs, indexed like the rest; null when the discs are smooth. */
+    public final Spins spins;
 
+    /** Smooth discs ({@link #spins} null). */
     public Discs(int n) {
+        this(n, false);
+    }
+
+    /** Discs that spin ({@code rough}: {@link #spins} allocated) or not. */
+    public Discs(int n, boolean rough) {
         this.n = n;
+        this.spins = rough ? new Spins(n) : null;
         x = new double[n];
         y = new double[n];
         vx = new double[n];
@@ -35,7 +47,12 @@ public final class Discs {
     }
 
     public Discs copy() {
-        Discs c = new Discs(n);
+        Discs c = new Discs(n, spins != null);
+        if (spins != null) {
+            System.arraycopy(spins.omega, 0, c.spins.omega, 0, n);
+            System.arraycopy(spins.inertia, 0, c.spins.inertia, 0, n);
+            System.arraycopy(spins.radius, 0, c.spins.radius, 0, n);
+        }
         System.arraycopy(x, 0, c.x, 0, n);
         System.arraycopy(y, 0, c.y, 0, n);
         System.arraycopy(vx, 0, c.vx, 0, n);

@@ -60,6 +60,7 @@ class EffectTableTest {
         double v = switch (range) {
             case FINITE -> random.nextDouble(-20, 20);
             case UNIT_INTERVAL -> random.nextDouble(0, 1);
+            case SIGNED_UNIT -> random.nextDouble(-0.999, 1);
             case NON_NEGATIVE, POSITIVE -> random.nextDouble(1e-6, 10);
         };
         assertThat(range.contains(v)).as("%s contains %s", range, v).isTrue();
@@ -71,6 +72,7 @@ class EffectTableTest {
         return switch (range) {
             case FINITE -> List.of();
             case UNIT_INTERVAL -> List.of(-0.25, 1.0001, 7.0);
+            case SIGNED_UNIT -> List.of(-1.0001, 1.5);
             case NON_NEGATIVE -> List.of(-1e-9, -3.0);
             case POSITIVE -> List.of(0.0, -0.5);
         };
@@ -253,10 +255,10 @@ class EffectTableTest {
 
     @Test
     void everyEffectOnAtOnceIsReadIntoItsOwnField() {
-        // Growth excludes gravity, so this takes every effect but gravity, then gravity without growth.
+        // Growth excludes gravity and roughness, so this takes every effect but those two, then all but growth.
         SplittableRandom random = new SplittableRandom(7);
         for (List<Effect> together : List.of(
-                Arrays.stream(Effect.values()).filter(e -> e != Effect.GRAVITY).toList(),
+                Arrays.stream(Effect.values()).filter(e -> e != Effect.GRAVITY && e != Effect.TANGENTIAL_RESTITUTION).toList(),
                 Arrays.stream(Effect.values()).filter(e -> e != Effect.GROWTH).toList())) {
             Map<Effect, double[]> chosen = together.stream().collect(Collectors.toMap(Function.identity(),
                     e -> IntStream.range(0, e.size()).mapToDouble(k -> inRange(e.range, random)).toArray()));

@@ -481,7 +481,7 @@ class SceneReaderTest {
     @ValueSource(strings = {"friction", "Gravity", "restitutionWall", "tC", ""})
     void unknownEffectsListTheKnownOnes(String effect) {
         rejected(base(root -> at(root, "/effects").put(effect, 1)),
-                "effects." + effect + ": unknown effect (known: gravity, restitution, wallRestitution, tc, growth)");
+                "effects." + effect + ": unknown effect (known: gravity, restitution, wallRestitution, tc, growth, tangentialRestitution)");
     }
 
     @Test
@@ -1101,5 +1101,69 @@ class SceneReaderTest {
         double expected = value(spelling).doubleValue();
         double read = SceneReader.parse(json).newDiscs().vx[0];
         assertThat(Double.doubleToRawLongBits(read)).as(spelling).isEqualTo(Double.doubleToRawLongBits(expected));
+    }
+
+    // ---- rough discs ----
+
+    /** BASE's discs made rough: effects with a tangential restitution. */
+    private static void rough(ObjectNode root) {
+        ((ObjectNode) root.get("effects")).put("tangentialRestitution", 0.4);
+    }
+
+    @Test
+    void roughDiscsReadTheirInertiaAndSpinAndEveryOtherDiscStartsStill() {
+        Scene scene = SceneReader.parse(base(root -> {
+            rough(root);
+            ((ObjectNode) root.at("/species/0")).put("inertia", 0.25);
+            ((ObjectNode) root.at("/particles/1")).put("omega", -3.5);
+        }));
+        assertThat(scene.effects().tangentialRestitution()).isEqualTo(0.4);
+        assertThat(scene.species().get(0).inertia()).isEqualTo(0.25);
+        assertThat(scene.species().get(1).inertia()).as("default").isEqualTo(0.5);
+        Discs d = scene.newDiscs();
+        assertThat(d.spins.omega).containsExactly(0, -3.5, 0, 0, 0, 0, 0);
+        assertThat(d.spins.inertia[0]).isEqualTo(0.25);
+        assertThat(d.spins.radius).containsExactly(d.radius);
+    }
+
+    @Test
+    void smoothDiscsHaveNoSpins() {
+        assertThat(SceneReader.parse(BASE).newDiscs().spins).isNull();
+    }
+
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', value = {
+            "0|species[0].inertia: must lie in (0, 1], got 0.0",
+            "1.5|species[0].inertia: must lie in (0, 1], got 1.5",
+            "-0.5|species[0].inertia: must lie in (0, 1], got -0.5"})
+    void anInertiaOutsideZeroToOneIsRefused(double q, String message) {
+        assertThat(rejected(base(root -> ((ObjectNode) root.at("/species/0")).put("inertia", q)), message))
+                .isEqualTo(message);
+    }
+
+    @Test
+    void aFixedSpeciesTakesNoInertia() {
+        rejected(base(root -> ((ObjectNode) root.at("/species/1")).put("inertia", 0.5)),
+                "species[1].inertia: a fixed species never turns and takes no 'inertia'");
+    }
+
+    @Test
+    void onlyRoughDiscsSpin() {
+        rejected(base(root -> ((ObjectNode) root.at("/particles/0")).put("omega", 1)),
+                "particles[0].omega: only rough discs spin (give effects.tangentialRestitution above -1)");
+        rejected(base(root -> {
+            rough(root);
+            ((ObjectNode) root.at("/particles/2")).put("omega", 1);
+        }), "particles[2]: disc 2 is of fixed species 'peg' and cannot spin");
+        rejected(base(root -> ((ObjectNode) root.at("/particles/0")).put("omega", "fast")), "particles[0].omega: ");
+    }
+
+    @Test
+    void roughDiscsDoNotGrow() {
+        rejected("""
+                { "box": { "width": 10, "height": 10, "boundary": "periodic" },
+                  "species": [ { "name": "disc", "radius": 0.5, "mass": 1 } ],
+                  "effects": { "growth": 0.1, "tangentialRestitution": 0 }, "until": 1 }""",
+                "effects.tangentialRestitution: rough discs do not grow");
     }
 }

@@ -26,7 +26,10 @@ import carom.core.physics.Flight;
 import carom.core.physics.LeesEdwards;
 import carom.core.physics.PairLaw;
 import carom.core.physics.Restitution;
+import carom.core.physics.Roughness;
+import carom.core.scene.Scene;
 import carom.core.state.Discs;
+import carom.core.state.Spins;
 
 /**
  * One thread's changes to the records of a {@link DiscTable}: free flight (advance), pair and wall
@@ -64,6 +67,9 @@ public sealed class DiscMotion permits GrowingMotion {
     private final Flight flight;
     final Boundary boundary;
     final Restitution restitution;
+    /** The tangential part of contacts, and rough discs' spins by internal id (null: smooth discs). */
+    private final Roughness roughness;
+    private final Spins spins;
     /** Under gravity every contact with something immovable is checked for rest (StallGuard). */
     private final boolean gravity;
     /** Resting contact: each disc's inverse mass while awake (null without gravity). */
@@ -121,6 +127,8 @@ public sealed class DiscMotion permits GrowingMotion {
         this.flight = table.flight;
         this.boundary = table.boundary;
         this.restitution = table.restitution;
+        this.roughness = table.roughness;
+        this.spins = table.spins;
         this.gravity = table.acceleration > 0;
         this.awakeInvMass = table.awakeInvMass;
         this.sceneIds = table.sceneIds();
@@ -237,8 +245,8 @@ public sealed class DiscMotion permits GrowingMotion {
             }
         }
         // On the records, not through the pair window: no copies in and out at every collision.
-        double w = PairLaw.collide(rec, at + VX, bt + VX, rec, at + VY, bt + VY, invMass(a), invMass(b), dx, dy,
-                boundary.imageVelocityX(rawDy), e);
+        double w = roughness.pair(rec, at + VX, bt + VX, rec, at + VY, bt + VY, invMass(a), invMass(b), dx, dy,
+                boundary.imageVelocityX(rawDy), e, spins, a, b);
         if (aMobile) {
             restitution.collided(a, abs);
             ir[a * IS + COUNT]++;
@@ -266,6 +274,7 @@ public sealed class DiscMotion permits GrowingMotion {
         } else {
             load(i, 0);
             boundary.reflect(pair, 0, wall, e);
+            roughness.wall(pair.vx, 0, pair.vy, 0, wall, spins, i);
             store(i, 0);
             restitution.collided(i, abs);
             ir[i * IS + COUNT]++;
@@ -294,6 +303,10 @@ public sealed class DiscMotion permits GrowingMotion {
         double vx = rec[at + VX];
         double vy = rec[at + VY];
         energyPutToRest += 0.5 * (vx * vx + vy * vy) / rec[at + IM];
+        if (spins != null) {
+            energyPutToRest += spins.rotationalEnergy(i, rec[at + IM]);
+            spins.omega[i] = 0;
+        }
         sleeps++;
         rec[at + VX] = 0;
         rec[at + VY] = 0;
@@ -412,6 +425,9 @@ public sealed class DiscMotion permits GrowingMotion {
             out.vx[o] = rec[at + VX];
             out.vy[o] = rec[at + VY];
             out.t[o] = until;
+            if (spins != null) {
+                out.spins.omega[o] = spins.omega[k];
+            }
         }
     }
 
@@ -439,6 +455,9 @@ public sealed class DiscMotion permits GrowingMotion {
                 out.vx[o] = pair.vx[0];
                 out.vy[o] = pair.vy[0];
             }
+            if (spins != null) {
+                out.spins.omega[o] = spins.omega[k];
+            }
         }
     }
 
@@ -448,9 +467,12 @@ public sealed class DiscMotion permits GrowingMotion {
      */
     public Discs snapshot(double now) {
         int n = rec.length / stride;
-        Discs all = new Discs(n);
+        Discs all = new Discs(n, spins != null);
         for (int i = 0; i < n; i++) {
             load(all, i, i);
+            if (spins != null) {
+                spins.copyTo(i, all.spins, i);
+            }
             if (awakeInvMass != null && all.invMass[i] == 0 && awakeInvMass[i] > 0) {
                 all.invMass[i] = awakeInvMass[i];
                 all.t[i] = now;

@@ -6,8 +6,10 @@ import carom.core.physics.Flight;
 import carom.core.physics.GrowthLaw;
 import carom.core.physics.Physics;
 import carom.core.physics.Restitution;
+import carom.core.physics.Roughness;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
+import carom.core.state.Spins;
 import java.util.Arrays;
 import java.util.function.IntToDoubleFunction;
 
@@ -96,6 +98,13 @@ public final class DiscTable {
     /** The walls, or null in a periodic box. */
     final Boundary.Walls walls;
     final Restitution restitution;
+    /** What contacts do along their tangent: nothing for smooth discs, spin for rough ones. */
+    final Roughness roughness;
+    /**
+     * Rough discs' angular velocities, moments and radii in internal (Morton) order; null for smooth
+     * discs, whose runs hold nothing of it.
+     */
+    final Spins spins;
     final double acceleration;
     final double[] rec;
     final int stride;
@@ -165,6 +174,8 @@ public final class DiscTable {
         // From the box, not by a type test on the boundary: a run without shear never loads LeesEdwards.
         this.slidingRows = scene.box().sheared();
         this.restitution = physics.restitution;
+        this.roughness = physics.roughness;
+        this.spins = src.spins == null ? null : new Spins(n);
         this.acceleration = flight.maxAcceleration();
         if (!(cellFactor >= 1) || Double.isInfinite(cellFactor)) {
             throw new BadInputException("--option cellFactor: must be >= 1, got " + cellFactor);
@@ -226,6 +237,9 @@ public final class DiscTable {
             rec[at + VX] = src.vx[o];
             rec[at + VY] = src.vy[o];
             rec[at + EV] = INF; // not queued: what every CalendarQueue on the table starts from
+            if (spins != null) {
+                src.spins.copyTo(o, spins, k);
+            }
             if (stride > R) {
                 rec[at + R] = src.radius[o];
                 rec[at + IM] = src.invMass[o];
@@ -469,7 +483,8 @@ public final class DiscTable {
 
     /** Heap held by the per-disc and per-cell arrays, in bytes. */
     public long bytes() {
-        return 8L * rec.length + 4L * ir.length + 4L * cellHead.length + 4L * sceneIds.length;
+        return 8L * rec.length + 4L * ir.length + 4L * cellHead.length + 4L * sceneIds.length
+                + (spins == null ? 0 : 24L * n);
     }
 
     /** Disc ids sorted by the Morton code of their cell (LSD radix sort, two 16-bit passes). */

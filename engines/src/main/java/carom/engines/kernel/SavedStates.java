@@ -17,15 +17,16 @@ import static carom.engines.kernel.DiscTable.Y;
 
 import carom.core.physics.Restitution;
 import carom.core.state.Discs;
+import carom.core.state.Spins;
 import java.util.Arrays;
 
 /**
  * Disc states saved in numbered slots, for an undo log: everything one event may change in a disc
- * (its record of doubles, its cell and event kind, its partner and both counters, and when it last
- * collided, for restitution). {@link #restore} puts a disc back as saved; {@link #load} and
- * {@link #clock} read the trajectory segment the disc followed from a saved state. Cell-list and
- * queue links are not saved: {@link #restore} relinks the cell lists itself, and the caller
- * re-queues the disc at its restored event time ({@link DiscTable#eventTime}).
+ * (its record of doubles, its cell and event kind, its partner and both counters, when it last
+ * collided, for restitution, and a rough disc's spin). {@link #restore} puts a disc back as saved;
+ * {@link #load} and {@link #clock} read the trajectory segment the disc followed from a saved state.
+ * Cell-list and queue links are not saved: {@link #restore} relinks the cell lists itself, and the
+ * caller re-queues the disc at its restored event time ({@link DiscTable#eventTime}).
  *
  * <p>Single writer: one thread's states, changed through that thread's {@link DiscMotion}. The
  * arrays double when a slot beyond them is saved; no other allocation.
@@ -40,7 +41,9 @@ public final class SavedStates {
     private final int[] ir;
     private final int cols;
     private final Restitution restitution;
-    /** Doubles saved per state: the record, then the disc's last collision time. */
+    /** Rough discs' spins (null for smooth discs, whose states save none). */
+    private final Spins spins;
+    /** Doubles saved per state: the record, then the disc's last collision time, then a rough disc's spin. */
     private final int doubles;
     private double[] savedDoubles;
     private int[] savedInts;
@@ -54,7 +57,8 @@ public final class SavedStates {
         this.ir = table.ir;
         this.cols = table.cols;
         this.restitution = table.restitution;
-        this.doubles = stride + 1;
+        this.spins = table.spins;
+        this.doubles = stride + (spins == null ? 1 : 2);
         this.savedDoubles = new double[capacity * doubles];
         this.savedInts = new int[capacity * INTS];
     }
@@ -68,6 +72,9 @@ public final class SavedStates {
         }
         System.arraycopy(rec, i * stride, savedDoubles, e * doubles, stride);
         savedDoubles[e * doubles + stride] = restitution.lastCollision(i);
+        if (spins != null) {
+            savedDoubles[e * doubles + stride + 1] = spins.omega[i];
+        }
         int it = i * IS;
         savedInts[INTS * e + CELL] = ir[it + CELL];
         savedInts[INTS * e + PARTNER] = ir[it + PARTNER];
@@ -77,7 +84,7 @@ public final class SavedStates {
 
     /**
      * Puts disc i back as saved in slot {@code e}: its record, cell (relinked if it changed), event
-     * kind, partner, counters and last collision. Its queue links are untouched.
+     * kind, partner, counters, last collision and spin. Its queue links are untouched.
      */
     public void restore(int e, int i) {
         int it = i * IS;
@@ -93,9 +100,12 @@ public final class SavedStates {
         ir[it + COUNT] = savedInts[INTS * e + COUNT];
         System.arraycopy(savedDoubles, e * doubles, rec, i * stride, stride);
         restitution.collided(i, savedDoubles[e * doubles + stride]);
+        if (spins != null) {
+            spins.omega[i] = savedDoubles[e * doubles + stride + 1];
+        }
     }
 
-    /** Doubles of one state as {@link #copyOut} writes it (the record and the last collision time). */
+    /** Doubles of one state as {@link #copyOut} writes it (the record, the last collision time, a rough disc's spin). */
     public int doublesPerState() {
         return doubles;
     }

@@ -6,7 +6,7 @@ import carom.core.physics.Restitution;
 /**
  * A {@link DiscTable}'s changing part for a checkpoint: the records of doubles and ints (positions,
  * velocities, clocks, event times, partners, counters, cell and queue links) and the cell lists'
- * heads, plus the restitution model's per-disc history. What the table derives from the scene (the
+ * heads, rough discs' angular velocities, plus the restitution model's per-disc history. What the table derives from the scene (the
  * grid, the Morton order) is not saved: a table built again from the same scene and cell factor has
  * it, and {@link #restore} then overwrites the rest, so the run continues on the very same bits.
  */
@@ -16,6 +16,9 @@ public final class TableState {
 
     public static void save(DiscTable table, StateBytes.Out out) {
         out.putDoubles(table.rec).putInts(table.ir).putInts(table.cellHead);
+        if (table.spins != null) {
+            out.putDoubles(table.spins.omega);
+        }
         saveRestitution(table.restitution, table.n, out);
     }
 
@@ -29,6 +32,9 @@ public final class TableState {
         in.getDoubles(table.rec);
         in.getInts(table.ir);
         in.getInts(table.cellHead);
+        if (table.spins != null) {
+            in.getDoubles(table.spins.omega);
+        }
         restoreRestitution(table.restitution, table.n, in);
         check(table, built);
     }

@@ -8,6 +8,7 @@ import carom.engines.cells.StepGridCounters;
 import carom.engines.cells.StepGridTunables;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
+import carom.core.scene.Effect;
 import carom.core.scene.Scene;
 import java.util.List;
 
@@ -24,6 +25,7 @@ public final class SerialEngine implements Engine {
     public static final EngineSpec SPEC = EngineSpec.exact("serial",
             "the thesis's single-thread time-stepped grid algorithm with its six-linked bucket queue (reference)")
             .withCapabilities(Capability.CHECKPOINTS, Capability.COLLISION_OBSERVERS, Capability.LEES_EDWARDS)
+            .withEffects(Effect.TANGENTIAL_RESTITUTION)
             .withTunables(List.of(StepGridTunables.CELL_FACTOR, Tunables.AUDIT_ENERGY))
             .withCounters(List.of(StepGridCounters.EARLY_STEP_ENDS));
 

@@ -56,7 +56,7 @@ import java.util.Map;
  *
  * <h2>Checkpoints</h2>
  * Every disc is synchronised at a step start, so checkpoints are taken there ({@link #save}): the
- * discs, the clocks and the counters. The last step of a run is clipped at {@code until}, which a
+ * discs (rough discs' spins too), the clocks and the counters. The last step of a run is clipped at {@code until}, which a
  * longer run would not do, so the checkpoint at the end of a run is the state at that step's start:
  * a run resumed from it redoes the step, unclipped if it goes further, as one run that never stopped.
  */
@@ -123,7 +123,7 @@ final class SerialRun {
         this.virial = VirialAccumulator.forRun(until);
         this.stallGuard = new StallGuard(scene);
         this.sleepers = acceleration > 0 ? new Sleepers(d) : null;
-        this.contacts = new Contacts(flight, boundary, stallGuard, sleepers);
+        this.contacts = new Contacts(flight, boundary, physics.roughness, stallGuard, sleepers);
         this.checkpoints = options.checkpoints();
         this.collisions = options.collisions();
         this.energyStart = Observables.kineticEnergy(d);
@@ -150,6 +150,9 @@ final class SerialRun {
         in.getDoubles(d.y);
         in.getDoubles(d.vx);
         in.getDoubles(d.vy);
+        if (d.spins != null) {
+            in.getDoubles(d.spins.omega);
+        }
         java.util.Arrays.fill(d.t, 0);
         TableState.restoreRestitution(restitution, n, in);
         if (sleepers != null) {
@@ -167,6 +170,9 @@ final class SerialRun {
                 .putLong(wallCollisions).putLong(predictions).putLong(steps).putLong(earlyStepEnds)
                 .putDouble(energyStart).putDouble(momentumStart[0]).putDouble(momentumStart[1])
                 .putDoubles(virial.blockSums()).putDouble(virial.total()).putDoubles(d.x).putDoubles(d.y).putDoubles(d.vx).putDoubles(d.vy);
+        if (d.spins != null) {
+            out.putDoubles(d.spins.omega);
+        }
         TableState.saveRestitution(restitution, n, out);
         if (sleepers != null) {
             // Sleeping discs have inverse mass 0 until they wake.

@@ -39,7 +39,7 @@ public final class SlabsEngine implements Engine {
     public static final EngineSpec SPEC = EngineSpec.exact("slabs",
             "vertical slabs, one fast-style event loop per thread, optimistic windows verified at a barrier and rolled back to the first cross-slab contact; merged into one fast loop while windows do not pay")
             .withCapabilities(Capability.SAMPLES, Capability.CHECKPOINTS, Capability.THREADS)
-            .withEffects(Effect.GROWTH)
+            .withEffects(Effect.GROWTH, Effect.TANGENTIAL_RESTITUTION)
             .withTunables(List.of(KernelTunables.CELL_FACTOR, KernelTunables.PREFETCH, DOMAIN_ROWS, Tunables.AUDIT_ENERGY, SlabsRun.SEQUENTIAL,
                 SpinPolicy.SPINS,
                 MergePolicy.WINDOW_EVENTS, MergePolicy.MERGE_EVENTS,

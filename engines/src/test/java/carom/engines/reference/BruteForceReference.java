@@ -8,6 +8,7 @@ import carom.core.physics.PairLaw;
 import carom.core.physics.Physics;
 import carom.core.physics.RestRule;
 import carom.core.physics.Restitution;
+import carom.core.physics.Roughness;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
 
@@ -16,12 +17,14 @@ import carom.core.state.Discs;
  * at every pair and every wall, advances every disc to the earliest event and resolves it. O(N^2) per
  * event, so only for a few dozen discs. Shares only the two-body laws with the engines: how a disc
  * flies and when two discs or a disc and a wall meet ({@link Flight}, {@link PairLaw}, {@link Boundary}),
- * what a contact does ({@link PairLaw#collide}, {@link Boundary#reflect}) and which restitution it gets
- * ({@link Restitution}), each of which has analytic tests of its own.
+ * what a contact does ({@link Roughness#pair}: {@link PairLaw#collide}'s normal impulse and, for rough
+ * discs, the tangential one; {@link Boundary#reflect} and {@link Roughness#wall}) and which restitution it
+ * gets ({@link Restitution}), each of which has analytic tests of its own.
  *
  * <p>Every disc's clock is the absolute time of the last event (no epochs); periodic positions are
  * wrapped after every advance. Effects: gravity through {@code physics.flight}, restitution and the TC
- * model through {@code physics.restitution}, which is told of every collision of a mobile disc.
+ * model through {@code physics.restitution}, which is told of every collision of a mobile disc, rough
+ * discs through {@code physics.roughness}.
  *
  * <p>Periodic boxes: predictions see each pair's nearest image at the time they are made, so the judge
  * never looks further ahead than a pair could move before another image might come into contact; when
@@ -55,6 +58,7 @@ public final class BruteForceReference {
         Boundary boundary = physics.boundary;
         Boundary.Walls walls = boundary instanceof Boundary.Walls w ? w : null;
         Restitution restitution = physics.restitution;
+        Roughness roughness = physics.roughness;
         double acceleration = flight.maxAcceleration();
         RestRule rest = new RestRule(scene.box(), scene.effects());
         double gx = scene.effects().gravityX();
@@ -159,7 +163,7 @@ public final class BruteForceReference {
                         bMobile = true;
                     }
                 }
-                PairLaw.collide(d.vx, a, b, d.vy, a, b, d.invMass[a], d.invMass[b], dx, dy, imageVx, e);
+                roughness.pair(d, a, b, dx, dy, imageVx, e);
                 if (aMobile) {
                     restitution.collided(a, now);
                 }
@@ -177,6 +181,7 @@ public final class BruteForceReference {
                     fallAsleep(d, bestA);
                 } else {
                     boundary.reflect(d, bestA, wall, e);
+                    roughness.wall(d.vx, bestA, d.vy, bestA, wall, d.spins, bestA);
                 }
                 restitution.collided(bestA, now);
             }
@@ -194,8 +199,11 @@ public final class BruteForceReference {
         return 2 * distance / (2 * vmax + Math.sqrt(4 * vmax * vmax + 2 * acceleration * distance));
     }
 
-    /** Disc i, at its contact with a support, falls asleep there: at rest and immovable. */
+    /** Disc i, at its contact with a support, falls asleep there: at rest (not spinning) and immovable. */
     private static void fallAsleep(Discs d, int i) {
+        if (d.spins != null) {
+            d.spins.omega[i] = 0;
+        }
         d.vx[i] = 0;
         d.vy[i] = 0;
         d.invMass[i] = 0;

@@ -8,6 +8,7 @@ import carom.core.engine.Counter;
 import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.engine.RunStopped;
+import carom.core.scene.Effect;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
 import java.util.ArrayList;
@@ -37,7 +38,7 @@ public abstract class ExactEngineCheckpointContract extends VariantContract {
 
     /** Whether the variant runs this scene at all (an engine that refuses some effects, or shear, skips them). */
     private boolean runs(Scene scene) {
-        return variant().scenes().test(scene)
+        return variant().scenes().test(scene) && Effect.of(scene.effects()).stream().allMatch(engine().spec()::simulates)
                 && (!scene.box().sheared() || engine().spec().can(carom.core.engine.Capability.LEES_EDWARDS));
     }
 
@@ -77,9 +78,12 @@ public abstract class ExactEngineCheckpointContract extends VariantContract {
         return LongStream.range(1, 7).boxed();
     }
 
-    /** Small scenes: plain, with effects (gravity, restitution, TC, pegs), dense periodic and walled, mixed masses, sheared. */
+    /**
+     * Small scenes: plain, with effects (gravity, restitution, TC, pegs), the same of rough discs, dense
+     * periodic and walled, mixed masses, sheared.
+     */
     static List<Scene> scenes(long seed) {
-        return List.of(RandomScenes.small(seed), RandomScenes.effects(seed),
+        return List.of(RandomScenes.small(seed), RandomScenes.effects(seed), RandomScenes.rough(seed),
                 RandomScenes.dense(300, 0.6, seed % 2 == 0, seed, 1.0), RandomScenes.lightAmongHeavy(seed),
                 RandomScenes.sheared(seed));
     }
@@ -197,14 +201,18 @@ public abstract class ExactEngineCheckpointContract extends VariantContract {
         return (t, state, virial) -> into.add(flatten(t, state));
     }
 
+    /** The time, then x, y, vx, vy of every disc, then (rough discs) every angular velocity. */
     private static double[] flatten(double t, Discs d) {
-        double[] all = new double[1 + 4 * d.n];
+        double[] all = new double[1 + 4 * d.n + (d.spins == null ? 0 : d.n)];
         all[0] = t;
         for (int i = 0; i < d.n; i++) {
             all[1 + 4 * i] = d.x[i];
             all[2 + 4 * i] = d.y[i];
             all[3 + 4 * i] = d.vx[i];
             all[4 + 4 * i] = d.vy[i];
+            if (d.spins != null) {
+                all[1 + 4 * d.n + i] = d.spins.omega[i];
+            }
         }
         return all;
     }

@@ -75,7 +75,28 @@ public final class RandomScenes {
      * chaos: the serial engine must match {@link BruteForceReference} to 1e-8 on them.
      */
     public static Scene effects(long seed) {
+        return effects(seed, false);
+    }
+
+    /**
+     * {@link #effects}'s scene of the same seed made of rough discs: a tangential restitution β a hair
+     * above −1 (barely gripping), +1 (perfectly rough) or in between, a moment of inertia q·m·R² per mobile
+     * species with q in [0.2, 1], and every mobile disc spinning at up to 5 radians per time unit. The
+     * rough parameters come from a stream of their own, so the discs, effects and horizon are
+     * {@link #effects}'s.
+     */
+    public static Scene rough(long seed) {
+        return effects(seed, true);
+    }
+
+    private static Scene effects(long seed, boolean rough) {
         SplittableRandom random = new SplittableRandom(seed);
+        SplittableRandom spin = new SplittableRandom(~seed);
+        double beta = switch (spin.nextInt(4)) {
+            case 0 -> -1;
+            case 1 -> 1;
+            default -> spin.nextDouble(-1, 1);
+        };
         boolean periodic = random.nextInt(4) == 0;
         // At least three grid cells (of twice the largest diameter, 1) per axis: see the disabled test
         // SerialEffectsTest.gravityInABoxOfAtMostTwoGridCellsPerAxisStaysFinite for smaller boxes.
@@ -89,11 +110,17 @@ public final class RandomScenes {
         double tc = random.nextBoolean() ? 1e-3 : 0;
         Effects effects = Effects.NONE.withGravity(g * Math.cos(angle), g * Math.sin(angle))
                 .withRestitution(restitution, wallRestitution).withTc(tc);
-        SceneBuilder b = SceneBuilder.create(String.format("effects-%d-g%.2f-e%.2f-w%.2f-tc%s", seed, g, restitution,
-                        wallRestitution, tc))
+        String name = String.format("effects-%d-g%.2f-e%.2f-w%.2f-tc%s", seed, g, restitution, wallRestitution, tc);
+        if (rough) {
+            // Written -1 is smooth (nothing spins); a hair above it is rough discs that barely grip.
+            effects = effects.withTangentialRestitution(beta == -1 ? -1 + 1e-12 : beta);
+            name = name.replace("effects-", "rough-") + String.format("-beta%.2f", beta);
+        }
+        SceneBuilder b = SceneBuilder.create(name)
                 .box(width, height, periodic ? BoundaryKind.PERIODIC : BoundaryKind.WALLS)
-                .species(Species.mobile("small", radii[0], 1.0))
-                .species(Species.mobile("large", radii[1], 1 + 3 * random.nextDouble()))
+                .species(Species.mobile("small", radii[0], 1.0).withInertia(rough ? spin.nextDouble(0.2, 1) : 0.5))
+                .species(Species.mobile("large", radii[1], 1 + 3 * random.nextDouble())
+                        .withInertia(rough ? spin.nextDouble(0.2, 1) : 0.5))
                 .effects(effects);
         boolean pegs = random.nextBoolean();
         if (pegs) {
@@ -128,7 +155,8 @@ public final class RandomScenes {
             rs[placed] = r;
             placed++;
             double speed = species == 2 ? 0 : 2 * random.nextDouble();
-            b.disc(species, x, y, speed * (2 * random.nextDouble() - 1), speed * (2 * random.nextDouble() - 1));
+            double omega = rough && species != 2 ? spin.nextDouble(-5, 5) : 0;
+            b.disc(species, x, y, speed * (2 * random.nextDouble() - 1), speed * (2 * random.nextDouble() - 1), omega);
         }
         return b.until(0.7 + 0.4 * random.nextDouble()).build();
     }
