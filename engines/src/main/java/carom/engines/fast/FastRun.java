@@ -144,7 +144,8 @@ final class FastRun {
         }
         double epoch = in.getFinite("the clocks' epoch");
         double resyncAt = in.getDouble();
-        if (epoch < 0 || epoch > time || Double.isNaN(resyncAt)) {
+        // The epoch may be past the checkpoint's time: a resync due at the same event comes first.
+        if (epoch < 0 || epoch > until || Double.isNaN(resyncAt)) {
             throw new IllegalArgumentException("engine state: clocks anchored at " + epoch + " for t = " + time
                     + ", next re-anchored at " + resyncAt);
         }
@@ -194,9 +195,13 @@ final class FastRun {
      */
     private void checkRestored(double now) {
         queue.check();
+        // Saved between two events: no clock is past the next event (the checkpoint's time may be before
+        // the epoch when a resync came first at the same event).
+        int top = queue.peek();
+        double latest = Math.max(now, top < 0 ? now : queue.time(top));
         int queued = 0;
         for (int i = 0; i < n; i++) {
-            if (table.clock(i) > now) {
+            if (table.clock(i) > latest) {
                 throw new IllegalArgumentException("engine state: disc " + table.sceneId(i) + " has a clock after the checkpoint");
             }
             if (queue.time(i) != Double.POSITIVE_INFINITY) {

@@ -156,7 +156,7 @@ public final class RandomScenes {
             placed++;
             double speed = species == 2 ? 0 : 2 * random.nextDouble();
             double omega = rough && species != 2 ? spin.nextDouble(-5, 5) : 0;
-            b.disc(species, x, y, speed * (2 * random.nextDouble() - 1), speed * (2 * random.nextDouble() - 1), omega);
+            b.disc(species, x, y, speed * (2 * random.nextDouble() - 1), speed * (2 * random.nextDouble() - 1), Double.NaN, omega);
         }
         return b.until(0.7 + 0.4 * random.nextDouble()).build();
     }
