@@ -175,7 +175,7 @@ public final class CalendarQueue {
         boolean[] queued = new boolean[n];
         for (int k = 0; k < heapSize; k++) {
             int i = heap[k];
-            if (i < 0 || i >= n || queued[i]) {
+            if (i < 0 || i >= n || queued[i] || !placedInHeap(k)) {
                 throw bad("the calendar's heap holds disc " + i + " out of order or out of range");
             }
             queued[i] = true;
@@ -184,7 +184,7 @@ public final class CalendarQueue {
         for (int b = 0; b < buckets; b++) {
             int before = NIL;
             for (int i = head[b]; i != NIL; i = next(i)) {
-                if (i < 0 || i >= n || queued[i] || listed == inBuckets || prev(i) != before) {
+                if (i < 0 || i >= n || queued[i] || listed == inBuckets || prev(i) != before || !placedIn(b, i)) {
                     throw bad("the calendar's bucket " + b + " links disc " + i + " out of place");
                 }
                 queued[i] = true;
@@ -195,6 +195,21 @@ public final class CalendarQueue {
         if (listed != inBuckets) {
             throw bad("the calendar counts " + inBuckets + " discs in its buckets and links " + listed);
         }
+    }
+
+    /**
+     * Heap entry k where the queue's operations put it: a finite time in a slice already reached, and
+     * not before its parent's (removal finds an entry by that slice, and pops rely on the order).
+     */
+    private boolean placedInHeap(int k) {
+        double t = time(heap[k]);
+        return Double.isFinite(t) && sliceOf(t) <= cur && (k == 0 || time(heap[(k - 1) >>> 1]) <= t);
+    }
+
+    /** Disc i in the bucket of its own slice, a slice not reached yet. */
+    private boolean placedIn(int b, int i) {
+        double t = time(i);
+        return Double.isFinite(t) && sliceOf(t) > cur && (sliceOf(t) & mask) == b;
     }
 
     private static IllegalArgumentException bad(String what) {

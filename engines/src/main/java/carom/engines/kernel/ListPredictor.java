@@ -189,6 +189,40 @@ public final class ListPredictor {
                 }
             }
         }
+        requireSymmetric(n);
+    }
+
+    /**
+     * Every list free of itself and of repeats, and j in i's list exactly when i is in j's: the rebuilds
+     * take a disc out of its neighbours' lists one entry at a time, so lists out of step would fail
+     * mid-run. Costs the sum over entries of the partner's list length (a few hundred per disc).
+     */
+    private void requireSymmetric(int n) {
+        int[] seenBy = new int[n];
+        Arrays.fill(seenBy, -1);
+        for (int i = 0; i < n; i++) {
+            int base = i * slots;
+            for (int k = 0; k < length[i]; k++) {
+                int j = list[base + k];
+                if (j == i || seenBy[j] == i) {
+                    throw new IllegalArgumentException("engine state: disc " + j + " twice or itself in the neighbour list of " + i);
+                }
+                seenBy[j] = i;
+                if (!listed(j, i)) {
+                    throw new IllegalArgumentException("engine state: disc " + j + " in the neighbour list of " + i + " but not " + i + " in its");
+                }
+            }
+        }
+    }
+
+    private boolean listed(int i, int j) {
+        int base = i * slots;
+        for (int k = 0; k < length[i]; k++) {
+            if (list[base + k] == j) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**

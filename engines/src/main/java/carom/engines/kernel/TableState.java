@@ -2,6 +2,7 @@ package carom.engines.kernel;
 
 import carom.core.engine.StateBytes;
 import carom.core.physics.Restitution;
+import carom.core.state.Discs;
 
 /**
  * A {@link DiscTable}'s changing part for a checkpoint: the records of doubles and ints (positions,
@@ -83,10 +84,14 @@ public final class TableState {
                 throw bad("disc " + table.sceneId(k) + " in cell (" + col + ", " + row + ") with event kind " + kind);
             }
             int partner = ir[k * DiscTable.IS + DiscTable.PARTNER];
-            if (partner != DiscTable.NONE && (partner >= n || partner < -4)) {
+            // Walls are partners -1 to -4, and only a walled box has them.
+            boolean hitDue = kind == DiscTable.HIT && rec[at + DiscTable.EV] != DiscTable.INF;
+            if (partner != DiscTable.NONE && (partner >= n || partner == k || partner < (table.walls == null ? 0 : -4))
+                    || partner == DiscTable.NONE && hitDue) {
                 throw bad("disc " + table.sceneId(k) + " with a partner " + partner + " of " + n + " discs");
             }
         }
+        requireFlightsInside(table);
         // Every disc in exactly one cell list, its own record's cell: walked with a bound, never round a cycle.
         boolean[] seen = new boolean[n];
         int listed = 0;
@@ -105,6 +110,41 @@ public final class TableState {
         }
         if (listed != n) {
             throw bad((n - listed) + " discs are in no cell list");
+        }
+    }
+
+    /**
+     * Fails unless every disc's flight from its clock to its scheduled event stays where a record can
+     * be: inside a walled box, within a box's length of a periodic one. Events are predicted from the
+     * velocities, so a velocity changed without its event (a crafted state) would otherwise carry a
+     * disc through a wall until the stale event comes.
+     */
+    private static void requireFlightsInside(DiscTable table) {
+        double[] rec = table.rec;
+        Discs one = new Discs(1);
+        double lx = table.periodic ? -table.width : 0;
+        double ly = table.periodic ? -table.height : 0;
+        double hx = table.periodic ? 2 * table.width : table.width;
+        double hy = table.periodic ? 2 * table.height : table.height;
+        for (int k = 0; k < table.n; k++) {
+            int at = k * table.stride;
+            double flight = rec[at + DiscTable.EV] - rec[at + DiscTable.T];
+            if (!(flight > 0 && flight < Double.POSITIVE_INFINITY)) {
+                // No event in these records (a disc at rest, or a mirror whose events live elsewhere).
+                continue;
+            }
+            one.x[0] = rec[at + DiscTable.X];
+            one.y[0] = rec[at + DiscTable.Y];
+            one.vx[0] = rec[at + DiscTable.VX];
+            one.vy[0] = rec[at + DiscTable.VY];
+            one.t[0] = rec[at + DiscTable.T];
+            one.invMass[0] = table.invMass(k);
+            double leave = Math.min(table.flight.timeToLeaveX(one, 0, one.t[0], lx, hx),
+                    table.flight.timeToLeaveY(one, 0, one.t[0], ly, hy));
+            if (flight > leave) {
+                throw bad("disc " + table.sceneId(k) + " would leave the box before its next event at "
+                        + rec[at + DiscTable.EV] + " (its velocity and its event disagree)");
+            }
         }
     }
 
