@@ -212,10 +212,10 @@ class SimulateErrorsTest {
     }
 
     @Test
-    void discRestingOnTheFloorUnderGravity() {
-        Path scene = Scenes.write(dir, "rest.json", RESTING_ON_FLOOR);
+    void discSlidingOnTheFloorUnderGravity() {
+        Path scene = Scenes.write(dir, "rest.json", SLIDING_ON_FLOOR);
         Cli r = simulate(scene);
-        assertRejected(r, "error: " + scene + ": particles[0]: disc 0 rests on the bottom wall", "rest.json");
+        assertRejected(r, "error: " + scene + ": particles[0]: disc 0 touches the bottom wall", "rest.json");
     }
 
     @Test
@@ -232,17 +232,17 @@ class SimulateErrorsTest {
     }
 
     /** One disc touching the floor at rest, with gravity pressing it down: resting contact. */
-    private static final String RESTING_ON_FLOOR = """
+    private static final String SLIDING_ON_FLOOR = """
             { "box": { "width": 4, "height": 4, "boundary": "walls" },
               "species": [ { "name": "ball", "radius": 0.5, "mass": 1 } ],
-              "particles": [ { "species": "ball", "x": 2, "y": 0.5 } ],
+              "particles": [ { "species": "ball", "x": 2, "y": 0.5, "vx": 1 } ],
               "effects": { "gravity": [0, -9.81] },
               "until": 1 }
             """;
 
     @Test
     void aFailedRunLeavesExistingOutputsAlone() throws IOException {
-        Path scene = Scenes.write(dir, "soft.json", RESTING_ON_FLOOR);
+        Path scene = Scenes.write(dir, "soft.json", SLIDING_ON_FLOOR);
         Files.writeString(out(), "previous final state\n");
         Files.writeString(summary(), "{}\n");
         Cli r = simulate(scene);

@@ -116,6 +116,33 @@ class StateChainTest {
         assertThat(largest).isGreaterThan(0);
     }
 
+    /** A pile settled under gravity: its state (discs at rest on the floor and on each other) starts asleep. */
+    @ParameterizedTest
+    @CsvSource({"fast", "serial", "slabs"})
+    void theStateOfASettledPileReadsBackAndStaysPut(String engine) throws IOException {
+        Path scene = Scenes.write(dir, "pile.json", """
+                { "box": { "width": 3.2, "height": 6, "boundary": "walls" },
+                  "species": [ { "name": "d", "radius": 0.5, "mass": 1 } ],
+                  "particles": [ { "species": "d", "x": 0.55, "y": 0.6 }, { "species": "d", "x": 1.6, "y": 0.7 },
+                                 { "species": "d", "x": 2.65, "y": 0.65 }, { "species": "d", "x": 1.075, "y": 1.8 },
+                                 { "species": "d", "x": 2.125, "y": 1.9 } ],
+                  "effects": { "gravity": [0, -9.81], "restitution": 0.7, "wallRestitution": 0.7, "tc": 0.001 },
+                  "until": 5 }
+                """);
+        Cli.ok("simulate", scene.toString(), "--engine", engine, "--out", dir.resolve("settled.csv").toString(),
+                "--out-state", dir.resolve("s.json").toString());
+        Cli.ok("simulate", scene.toString(), "--engine", engine, "--from", dir.resolve("s.json").toString(), "--until", "3",
+                "--out", dir.resolve("later.csv").toString());
+        double[][] settled = finalCsv(dir.resolve("settled.csv"));
+        double[][] later = finalCsv(dir.resolve("later.csv"));
+        for (int i = 0; i < settled.length; i++) {
+            assertThat(settled[i][3]).as("disc %d at rest", i).isZero();
+            assertThat(later[i][0]).isCloseTo(settled[i][0], within(1e-12));
+            assertThat(later[i][1]).as("disc %d stays on its support", i).isCloseTo(settled[i][1], within(1e-12));
+            assertThat(later[i][3]).isZero();
+        }
+    }
+
     @Test
     void aRunFromAStateCheckpointsAndResumesToTheBytesOfOneRun() throws IOException {
         Path scene = Scenes.write(dir, "mix.json", Scenes.mixture(80, 12, 0));

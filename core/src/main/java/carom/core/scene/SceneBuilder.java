@@ -413,15 +413,16 @@ public final class SceneBuilder {
     }
 
     /**
-     * Resting contact at the start is not modelled, so a disc may not start touching a wall that gravity
-     * presses it against unless it moves away from it.
+     * A disc may start touching a wall that gravity presses it against only at rest (it then falls
+     * asleep at once by the resting-contact rule, as it would have come to rest there in a run) or
+     * moving away from it; moving into it or sliding along it is bad input.
      */
     private void checkNoneRestingOnWalls(Discs d, int[] blockStarts) {
         double gx = effects.gravityX();
         double gy = effects.gravityY();
         double coordinateUlp = 4 * Math.ulp(Math.max(box.width(), box.height()));
         for (int i = 0; i < d.n; i++) {
-            if (d.invMass[i] == 0) {
+            if (d.invMass[i] == 0 || atRest(d, i)) {
                 continue;
             }
             double r = d.radius[i];
@@ -438,10 +439,16 @@ public final class SceneBuilder {
             }
             if (wall != null && !box.periodic()) {
                 throw new BadInputException(String.format(
-                        "%s: disc %d rests on the %s wall under gravity; resting contact is not modelled: "
-                                + "lift it or give it a velocity away from the wall", describe(blockStarts, i), i, wall));
+                        "%s: disc %d touches the %s wall under gravity moving (%s, %s) into or along it: a disc may"
+                                + " start on a support only at rest (it starts asleep) or moving away from it",
+                        describe(blockStarts, i), i, wall, d.vx[i], d.vy[i]));
             }
         }
+    }
+
+    /** At rest: no velocity, and no spin either (a spinning disc on a support slides on it). */
+    private static boolean atRest(Discs d, int i) {
+        return d.vx[i] == 0 && d.vy[i] == 0 && (d.spins == null || d.spins.omega[i] == 0);
     }
 
     /** Same for a mobile disc touching a fixed one: (nx, ny) is the unit vector from i to j. */
@@ -451,11 +458,11 @@ public final class SceneBuilder {
         double sign = mobile == i ? 1 : -1; // unit vector from the mobile disc to the peg
         double pressing = sign * (effects.gravityX() * nx + effects.gravityY() * ny);
         double approaching = sign * (d.vx[mobile] * nx + d.vy[mobile] * ny);
-        if (pressing > 0 && approaching >= 0) {
+        if (pressing > 0 && approaching >= 0 && !atRest(d, mobile)) {
             throw new BadInputException(String.format(
-                    "%s: disc %d rests on fixed disc %d (%s) under gravity; resting contact is not modelled: "
-                            + "lift it or give it a velocity away from the fixed disc",
-                    describe(blockStarts, mobile), mobile, peg, describe(blockStarts, peg)));
+                    "%s: disc %d touches fixed disc %d (%s) under gravity moving (%s, %s) into or along it: a disc"
+                            + " may start on a support only at rest (it starts asleep) or moving away from it",
+                    describe(blockStarts, mobile), mobile, peg, describe(blockStarts, peg), d.vx[mobile], d.vy[mobile]));
         }
     }
 

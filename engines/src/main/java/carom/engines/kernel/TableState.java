@@ -114,7 +114,7 @@ public final class TableState {
     }
 
     /**
-     * Fails unless every disc's flight from its clock to its scheduled event stays where a record can
+     * Fails unless every disc's scheduled event is at or after its clock, and its flight to it stays where a record can
      * be: inside a walled box, within a box's length of a periodic one. Events are predicted from the
      * velocities, so a velocity changed without its event (a crafted state) would otherwise carry a
      * disc through a wall until the stale event comes.
@@ -129,6 +129,11 @@ public final class TableState {
         for (int k = 0; k < table.n; k++) {
             int at = k * table.stride;
             double flight = rec[at + DiscTable.EV] - rec[at + DiscTable.T];
+            // Events are predicted from a disc's clock on: one before it (beyond rounding) was not.
+            if (flight < -1e-9 * Math.max(1, Math.abs(rec[at + DiscTable.T]))) {
+                throw bad("disc " + table.sceneId(k) + " has an event at " + rec[at + DiscTable.EV]
+                        + ", before its clock " + rec[at + DiscTable.T]);
+            }
             if (!(flight > 0 && flight < Double.POSITIVE_INFINITY)) {
                 // No event in these records (a disc at rest, or a mirror whose events live elsewhere).
                 continue;

@@ -187,4 +187,32 @@ public abstract class ExactEngineRestingContactContract extends VariantContract 
         Invariants.assertSameState(later.finalState(), d, 0);
         assertThat(later.collisions()).isEqualTo(r.collisions());
     }
+    /**
+     * A settled pile written back as a scene (every disc at rest, touching the floor or the discs below
+     * it) starts asleep, bottom first, and stays exactly where it is; then a ball dropped on it wakes it.
+     */
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("variants")
+    void aPileThatStartsAtRestOnItsSupportsStartsAsleepAndStaysPut(EngineVariant variant) {
+        use(variant);
+        Discs settled = run(smallPile(), 5).finalState();
+        SceneBuilder again = SceneBuilder.create("pile-at-rest").box(3.2, 6, BoundaryKind.WALLS)
+                .species(Species.mobile("d", 0.5, 1))
+                .effects(Effects.NONE.withGravity(0, -G).withRestitution(0.7, 0.7).withTc(1e-3)).until(1);
+        for (int i = 0; i < settled.n; i++) {
+            again.disc(0, settled.x[i], settled.y[i], 0, 0);
+        }
+        Scene atRest = again.build();
+        RunResult r = run(atRest, 1);
+        // Where it was, to the rounding of a contact (a disc a hair above its support falls that hair).
+        Invariants.assertSameState(r.finalState(), settled, 1e-12);
+        assertThat(r.counter(Counter.SLEEPS, -1) - r.counter(Counter.WAKES, -1)).as("all asleep").isEqualTo(5);
+        assertThat(r.energyPutToRest()).as("nothing was moving (but a hair's fall)").isLessThan(1e-12);
+
+        Scene dropped = again.disc(0, 1.6, 4.5, 0, 0).build();
+        RunResult hit = run(dropped, 1);
+        Discs d = hit.finalState();
+        Invariants.noOverlapsAndInside(dropped, d);
+        assertThat(hit.counter(Counter.WAKES, -1)).as("the pile woken").isPositive();
+    }
 }
