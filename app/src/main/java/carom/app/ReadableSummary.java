@@ -81,6 +81,18 @@ final class ReadableSummary {
         if (checks.escapes() > 0) {
             line(out, "discs outside walls", Integer.toString(checks.escapes()));
         }
+        Comparison c = run.comparison();
+        if (c != null) {
+            line(out, "against " + c.engine(), String.format(Locale.ROOT, "largest position error %.3g (rms %.3g), "
+                    + "largest velocity error %.3g; its deepest overlap %.3g, its pair collisions %d",
+                    c.largestPositionError(), c.rmsPositionError(), c.largestVelocityError(), c.referenceOverlap(),
+                    c.referencePairCollisions()));
+            line(out, "", c.chaosDominates()
+                    ? String.format(Locale.ROOT, "(%.3g pair collisions per disc: past about %.0f, chaos alone parts exact "
+                    + "engines this far, so these errors measure chaos, not the engine)", c.collisionsPerDisc(), CHAOS_HORIZON)
+                    : String.format(Locale.ROOT, "(%.3g pair collisions per disc: short enough that the errors are the "
+                    + "engine's own, not chaos)", c.collisionsPerDisc()));
+        }
         line(out, "causality violations", Long.toString(r.causalityViolations()));
         if (!r.exact()) {
             line(out, "  per 10^6 collisions", String.format(Locale.ROOT, "%.1f", r.violationsPerMillionCollisions()));

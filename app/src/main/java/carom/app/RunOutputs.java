@@ -4,6 +4,8 @@ import carom.app.report.Observing;
 import carom.app.report.Provenance;
 import carom.app.report.RunRecord;
 import carom.app.state.StateFile;
+import carom.core.engine.Engine;
+import carom.core.engine.RunOptions;
 import carom.core.engine.RunResult;
 import carom.core.scene.Scene;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -23,7 +25,10 @@ final class RunOutputs {
         Scene scene = request.scene();
         RunRequest.Outputs outputs = request.outputs();
         int threadsUsed = result.threadsUsed(request.engine().threadsFor(request.settings().threads()));
-        FinishedRun finished = FinishedRun.of(scene, threadsUsed, result);
+        Engine reference = request.settings().compareWith();
+        FinishedRun finished = reference == null ? FinishedRun.of(scene, threadsUsed, result)
+                : FinishedRun.of(scene, threadsUsed, result).withComparison(Comparison.of(scene.box(), result,
+                        reference.run(scene, RunOptions.until(scene.until()).withThreads(request.settings().threads()))));
         if (outputs.readableSummary()) {
             ReadableSummary.print(finished, streams.stdout(), streams.stdoutCharset());
         }

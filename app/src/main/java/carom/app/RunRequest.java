@@ -49,9 +49,11 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
      * @param threads the worker threads asked of the engine
      * @param tunables the engine's settings, checked
      * @param sceneText the scene file's text, for {@code --out-state} (null when not asked for)
+     * @param compareWith the exact engine whose run of the scene the final state is compared with
+     *     ({@code --compare}), or null
      */
     record Settings(String commandLine, String sceneFile, int threads, Map<String, String> tunables, Start start,
-                    String sceneText) {
+                    String sceneText, Engine compareWith) {
     }
 
     /** How the engine begins: a fresh run of the scene, or one continued from a checkpoint's engine state. */
@@ -291,8 +293,30 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
                         command.checkpoints.interval(Double.POSITIVE_INFINITY), new byte[0], List.of(), 0,
                         sampling.otherEvery(), outputs.saved()), sampling.observing());
         Settings settings = new Settings(commandLine(command.spec), command.sceneFile, threads, command.tunables,
-                new Start.Fresh(command.sceneFile, expected), outputs.outState() == null ? null : text);
+                new Start.Fresh(command.sceneFile, expected), outputs.outState() == null ? null : text,
+                compareWith(command.compare, file, scene));
         return new RunRequest(engine, scene, settings, sampling, outputs, checkpoints);
+    }
+
+    /**
+     * The engine {@code --compare} names, or null without it: an exact engine of this JVM that supports the
+     * scene (bad input otherwise, before the run).
+     */
+    private static Engine compareWith(String name, SceneFile file, Scene scene) {
+        if (name == null) {
+            return null;
+        }
+        Engine reference = EnginesCommand.engineNamed(name);
+        java.util.function.Predicate<carom.core.engine.EngineSpec> local = s -> s.exact() && !s.can(Capability.NODES);
+        if (!local.test(reference.spec())) {
+            throw new BadInputException("--compare " + reference.name() + ": compare with an exact engine that runs in "
+                    + "this JVM (" + String.join(", ", EngineCatalog.where(local).stream().map(Engine::name).toList()) + ")");
+        }
+        file.about(() -> {
+            reference.checkSupports(scene);
+            return null;
+        });
+        return reference;
     }
 
     /**
@@ -350,7 +374,7 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
                 saved.continuedTo(end, checkpointEvery).withOutputs(outputs.saved()), sampling.observing());
         Settings settings = new Settings(commandLine(command.spec), saved.sceneFileName(), saved.threads(),
                 saved.tunables(), new Start.Resumed(command.checkpointFile, saved.engineState()),
-                outputs.outState() == null ? null : file.about(checkpoint::sceneJson));
+                outputs.outState() == null ? null : file.about(checkpoint::sceneJson), null);
         return new RunRequest(engine, scene, settings, sampling, outputs, checkpoints);
     }
 

@@ -70,6 +70,18 @@ final class SummaryJson {
         ObjectNode state = root.putObject("finalState");
         state.put("deepestOverlap", checks.deepestOverlap());
         state.put("discsOutsideWalls", checks.escapes());
+        Comparison c = run.comparison();
+        if (c != null) {
+            ObjectNode against = root.putObject("comparison");
+            against.put("engine", c.engine());
+            number(against, "largestPositionError", c.largestPositionError());
+            number(against, "rmsPositionError", c.rmsPositionError());
+            number(against, "largestVelocityError", c.largestVelocityError());
+            number(against, "referenceDeepestOverlap", c.referenceOverlap());
+            against.put("referencePairCollisions", c.referencePairCollisions());
+            number(against, "collisionsPerDisc", c.collisionsPerDisc());
+            against.put("chaosDominates", c.chaosDominates());
+        }
         root.put("causalityViolations", r.causalityViolations());
         Pressure p = r.pressure();
         if (p != null) {

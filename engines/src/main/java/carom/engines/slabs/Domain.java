@@ -112,6 +112,14 @@ final class Domain {
     void restore(carom.core.engine.StateBytes.In in, double savedUntil) {
         queue.restore(in);
         long[] c = in.getLongs(9);
+        for (long count : c) {
+            if (count < 0) {
+                throw new IllegalArgumentException("engine state: a domain's count of " + count);
+            }
+        }
+        if (c[6] < c[0]) {
+            throw new IllegalArgumentException("engine state: a domain's event limit " + c[6] + " before its " + c[0] + " events");
+        }
         events = c[0];
         pairCollisions = c[1];
         wallCollisions = c[2];

@@ -87,6 +87,15 @@ final class SlabsCheckpoint {
             run.marks.restore(in);
         }
         in.end();
+        // Only a merged phase has an event budget; a slab domain's window stops at migrations alone.
+        for (Domain d : run.domains) {
+            if (d.eventLimit != Long.MAX_VALUE) {
+                throw new IllegalArgumentException("engine state: a slab with an event limit of " + d.eventLimit);
+            }
+        }
+        if (run.domainCount > 1 && !run.merged && run.whole.eventLimit != Long.MAX_VALUE) {
+            throw new IllegalArgumentException("engine state: an event limit outside a merged phase");
+        }
         // The queues the run goes on with (a queue not in use holds stale links, rebuilt before it is used).
         if (run.merged && run.domainCount > 1) {
             run.whole.queue.check();
