@@ -124,11 +124,11 @@ class EngineStateFuzzTest {
     }
 
     /**
-     * Fuzzes only under {@code -Pfuzz} (tag {@code fuzz-open}, left out of the default suite): it still
-     * finds restore paths that crash (asymmetric neighbour lists, an index past a restored calendar's
-     * heap), which the seeded cases above do not reach. Back into the default suite once they are closed.
+     * The mutation fuzz: in the default suite it replays its saved inputs (each a crafted state that once
+     * crashed a resume: asymmetric neighbour lists, calendar entries out of place, a velocity without its
+     * event, a hit without a partner, an event before its clock, a slab with an event budget) and fuzzes
+     * for a few seconds; {@code -Pfuzz} fuzzes for long.
      */
-    @org.junit.jupiter.api.Tag("fuzz-open")
     @FuzzTest(maxDuration = "5s")
     void aMutatedStateIsRefusedOrRunsToAFiniteStateInsideTheBox(byte[] patches) throws Throwable {
         if (patches.length < 5) {
