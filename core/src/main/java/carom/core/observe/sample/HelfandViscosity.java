@@ -181,7 +181,7 @@ public final class HelfandViscosity implements SampledObservable, CollisionObser
 
     @Override
     public void wall(double time, int i, int wall, double j) {
-        throw new IllegalStateException(KEY + ": a wall collision in a run it does not apply to (walls)");
+        // None in the periodic box it needs.
     }
 
     @Override
