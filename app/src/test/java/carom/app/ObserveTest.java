@@ -124,4 +124,46 @@ class ObserveTest {
         assertThat(r.firstErrorLine()).startsWith("error: ").contains("collisions");
         assertThat(dir.resolve("a")).doesNotExist();
     }
+
+    /**
+     * {@code --observe viscosity} on {@code fast}: its table and plot; the running η at every lag is
+     * positive and the mean squared Helfand increment grows with lag.
+     */
+    @Test
+    void viscosityGetsItsTableAndPlot() throws IOException {
+        Path report = dir.resolve("report");
+        Cli r = Cli.run("simulate", gas().toString(), "--engine", "fast", "--every", "0.05", "--observe", "viscosity",
+                "--report", report.toString());
+        assertThat(r.status()).as(r.err()).isZero();
+        List<String> csv = Files.readAllLines(report.resolve("viscosity.csv"));
+        assertThat(csv.get(0)).isEqualTo("lag,msd,eta,error");
+        // Lags 1..16 samples, then 8 per doubling (18..32, 36..64, then 72 and 80 of 72..128): 81 samples.
+        assertThat(csv).hasSize(1 + 16 + 8 + 8 + 2);
+        assertThat(csv.get(csv.size() - 1)).startsWith("4.0,");
+        double previous = 0;
+        for (String row : csv.subList(1, csv.size())) {
+            String[] v = row.split(",");
+            assertThat(Double.parseDouble(v[2])).as(row).isPositive();
+            if (csv.indexOf(row) <= 16) {
+                // Many origins at the short lags: the increments' spread grows with the lag.
+                assertThat(Double.parseDouble(v[1])).as(row).isGreaterThan(previous);
+                previous = Double.parseDouble(v[1]);
+            }
+        }
+        assertThat(ImageIO.read(report.resolve("viscosity.png").toFile())).isNotNull();
+    }
+
+    /** The Einstein-Helfand viscosity of a scene it does not apply to (walls) is bad input, before the run. */
+    @Test
+    void viscosityNeedsAnUnshearedPeriodicBox() throws IOException {
+        Path walled = dir.resolve("walled.json");
+        Files.writeString(walled, Files.readString(gas()).replace("\"periodic\"", "\"walls\""));
+        Cli r = Cli.run("simulate", walled.toString(), "--engine", "fast", "--every", "0.1", "--observe", "viscosity",
+                "--report", dir.resolve("a").toString());
+        assertThat(r.status()).as(r.err()).isEqualTo(2);
+        assertThat(r.firstErrorLine()).isEqualTo("error: --observe viscosity: the Einstein-Helfand viscosity needs an "
+                + "unsheared periodic box of free, smooth discs, and this scene has walls");
+        assertThat(r.err().lines().count()).isEqualTo(1);
+        assertThat(dir.resolve("a")).doesNotExist();
+    }
 }

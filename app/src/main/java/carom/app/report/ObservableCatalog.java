@@ -3,6 +3,7 @@ package carom.app.report;
 import carom.core.BadInputException;
 import carom.core.Quoted;
 import carom.core.observe.sample.BondOrder;
+import carom.core.observe.sample.HelfandViscosity;
 import carom.core.observe.sample.CollisionRates;
 import carom.core.observe.sample.MeanSquaredDisplacement;
 import carom.core.observe.sample.PressureSeries;
@@ -75,7 +76,14 @@ public final class ObservableCatalog {
                             + "from peculiar velocities vx − γ̇·y, collisional part from each collision's impulse "
                             + "(engines that tell collisions)",
                     List.of("t0", "t1", "Pxx", "Pyy", "Pxy"), (scene, interval) -> StressTensor.of(scene.species()),
-                    StressTensor::restore, ObservablePlots::stress, stress -> stress));
+                    StressTensor::restore, ObservablePlots::stress, stress -> stress),
+            new ObservableSpec<>(HelfandViscosity.KEY,
+                    "the shear viscosity of an unsheared periodic run by the Einstein-Helfand relation: the mean squared "
+                            + "increment of the Helfand moments G_xy and (G_xx − G_yy)/2 against lag, collisional jumps "
+                            + "through the minimum image, and the running η(t) = msd/(2 A kT t) with block-average errors "
+                            + "(engines that tell collisions)",
+                    List.of("lag", "msd", "eta", "error"), ObservableCatalog::viscosity,
+                    HelfandViscosity::restore, ObservablePlots::viscosity, viscosity -> viscosity));
 
     /** The keys, in the order listed. */
     public static final List<String> KEYS = ALL.stream().map(ObservableSpec::key).toList();
@@ -94,6 +102,26 @@ public final class ObservableCatalog {
                     + "and this scene has walls");
         }
         return new StructureFactor(speciesNames(scene));
+    }
+
+    /**
+     * The Einstein-Helfand viscosity of a scene it applies to: bad input for any other (the relation
+     * needs momentum changed by smooth pair collisions only, in a periodic box at rest).
+     */
+    private static HelfandViscosity viscosity(Scene scene, double interval) {
+        String why = scene.box().sheared() ? "a sheared box (use stress: η = −Pxy/γ̇)"
+                : !scene.box().periodic() ? "walls"
+                : scene.box().thermostatted() ? "a thermostat"
+                : scene.effects().hasGravity() ? "gravity"
+                : scene.effects().grows() ? "growing discs"
+                : scene.effects().rough() ? "rough discs"
+                : scene.hasFixedDiscs() ? "fixed discs"
+                : scene.size() < 2 ? "fewer than two discs" : null;
+        if (why != null) {
+            throw new BadInputException("--observe " + HelfandViscosity.KEY + ": the Einstein-Helfand viscosity needs "
+                    + "an unsheared periodic box of free, smooth discs, and this scene has " + why);
+        }
+        return HelfandViscosity.of(scene.species(), interval);
     }
 
     /** The observable named {@code key}, or null. */

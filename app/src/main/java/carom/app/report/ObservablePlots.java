@@ -1,6 +1,7 @@
 package carom.app.report;
 
 import carom.core.observe.sample.BondOrder;
+import carom.core.observe.sample.HelfandViscosity;
 import carom.core.observe.sample.CollisionRates;
 import carom.core.observe.sample.MeanSquaredDisplacement;
 import carom.core.observe.sample.PartialRadialDistribution;
@@ -46,6 +47,8 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
  *     with the run's mean and its block error bar.</li>
  * <li>{@code stress.png}: Pxx, Pyy and Pxy of each sample interval at its midpoint, the mean Pxy and its
  *     block error bar in the title.</li>
+ * <li>{@code viscosity.png}: the running Einstein-Helfand viscosity η(t) against lag on a log axis, with
+ *     error bars.</li>
  * </ul>
  * An observable without data yet still gets a plot that says so.
  */
@@ -385,6 +388,22 @@ public final class ObservablePlots {
                 s.setLineStyle(new BasicStroke(2f));
                 s.setMarker(x.length <= 60 ? SeriesMarkers.CIRCLE : SeriesMarkers.NONE);
             }
+        }
+        return finish(chart);
+    }
+
+    static XYChart viscosity(HelfandViscosity viscosity) {
+        double[] lag = viscosity.lags();
+        double kT = viscosity.temperature();
+        XYChart chart = chart(lag.length == 0 ? "Einstein-Helfand viscosity η(t)"
+                        : String.format("Einstein-Helfand viscosity η(t) = ⟨ΔG²⟩/(2 A kT t), kT = %s, %d samples, block errors",
+                                number(kT), viscosity.samples()),
+                "lag t (scene time unit)", "η(t) (scene mass per time unit)");
+        chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideNW);
+        if (lag.length > 0) {
+            double[] xs = ChartStyle.decades(min(lag), max(lag));
+            ChartStyle.log10X(chart, xs[0], xs[1]);
+            line(chart, "η(t)", log10(lag), viscosity.viscosity(), viscosity.errors(), true, DATA);
         }
         return finish(chart);
     }
