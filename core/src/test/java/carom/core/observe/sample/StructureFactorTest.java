@@ -20,6 +20,7 @@ class StructureFactorTest {
         Sample s = PartialRadialDistributionTest.mixture(0, box, 303, new SplittableRandom(6)); // not a multiple of 4: both loops
         StructureFactor sk = new StructureFactor(NAMES, 12, 0.2);
         sk.accept(s);
+        assertThat(sk.griddedRays()).as("both ways of summing a ray are taken").isBetween(1, 7);
         double[][] v = sk.waveVectors();
         int vectors = v[0].length;
         int bins = 0;
