@@ -20,10 +20,10 @@ import java.util.List;
  * every m-th multiple is taken, m = ⌊bin width / k₁⌋, so the vectors are about a bin width apart; up
  * to {@code kMax}. Bins: width {@code binWidth}, from 0; bin centres. The sums of a ray are
  * {@link RaySums}: by recurrence from exp(i m k₁·r) (one sine and cosine per disc and direction, then a
- * complex multiplication per disc and vector) for short rays, and by Gaussian gridding, a
- * one-dimensional non-uniform FFT of the discs' phases along the ray (about 30 operations per disc and
- * direction whatever the number of vectors, 12 digits relative to N), for long ones, which a large box
- * has. An isotropic fluid's S(k) is the same along every direction; a crystal's Bragg peaks show only
+ * complex multiplication per disc and vector) for short rays, and for long ones, which a large box
+ * has, by gridding: a one-dimensional non-uniform FFT of the discs' phases along the ray (Taylor
+ * moments about a grid's points, then FFTs of the grid: about 40 operations per disc and direction
+ * whatever the number of vectors, to about 1e-14 of N). An isotropic fluid's S(k) is the same along every direction; a crystal's Bragg peaks show only
  * where a direction meets them.
  *
  * <p>Defaults: bins 0.2/σ wide up to k = 20/σ, σ the first sample's mean diameter (the vectors along a
@@ -170,7 +170,7 @@ public final class StructureFactor implements SampledObservable {
         sampleValues = new double[(1 + pairs) * bins];
     }
 
-    /** ρ_a(k) of every species and vector, ray by ray ({@link RaySums}: by recurrence or by Gaussian gridding). */
+    /** ρ_a(k) of every species and vector, ray by ray ({@link RaySums}: by recurrence or by gridding). */
     private void computeDensities(Sample s) {
         int vectors = binOf.length;
         java.util.Arrays.fill(rhoRe, 0);
@@ -225,7 +225,7 @@ public final class StructureFactor implements SampledObservable {
         return v;
     }
 
-    /** How many of the directions are summed by Gaussian gridding (the others by recurrence), for tests. */
+    /** How many of the directions are summed by gridding (the others by recurrence), for tests. */
     int griddedRays() {
         return (int) java.util.Arrays.stream(rays).filter(r -> r.gridded).count();
     }
