@@ -39,6 +39,7 @@ public final class BondOrder implements SampledObservable {
         }
         bonds.reset(s);
         scan.scan(s, NEIGHBOUR_RANGE * 2 * s.maxRadius(), bonds);
+        bonds.toIds(scan, s.n);
         double re = 0;
         double im = 0;
         for (int j = 0; j < s.n; j++) {
@@ -54,24 +55,56 @@ public final class BondOrder implements SampledObservable {
         values.add(s.n == 0 ? 0 : Math.hypot(re, im) / s.n);
     }
 
-    /** Sums exp(6iθ) over each disc's bonds; the bond from k to j has the same value as from j to k. */
+    /**
+     * Sums exp(6iθ) over each disc's bonds; the bond from k to j has the same value as from j to k. The
+     * sums are kept in the scan's cell order while it runs (neighbours sit close in memory) and then
+     * put in id order: each disc's bonds are added in the order the scan meets them either way.
+     */
     private static final class Bonds implements NeighbourScan.PairVisitor {
         double[] re = new double[0];
         double[] im = new double[0];
         int[] neighbours = new int[0];
-        double[] radius;
+        private double[] cellRe = new double[0];
+        private double[] cellIm = new double[0];
+        private int[] cellNeighbours = new int[0];
+        /** In the scan's cell order; null until the scan placed the discs. */
+        private double[] radius;
 
         void reset(Sample s) {
             if (re.length != s.n) {
                 re = new double[s.n];
                 im = new double[s.n];
                 neighbours = new int[s.n];
+                cellRe = new double[s.n];
+                cellIm = new double[s.n];
+                cellNeighbours = new int[s.n];
             } else {
+                java.util.Arrays.fill(cellRe, 0);
+                java.util.Arrays.fill(cellIm, 0);
+                java.util.Arrays.fill(cellNeighbours, 0);
+            }
+            radius = null;
+        }
+
+        /** After the scan: the sums by disc id (zero for discs the scan did not place: fewer than two discs). */
+        void toIds(NeighbourScan scan, int n) {
+            if (radius == null) {
                 java.util.Arrays.fill(re, 0);
                 java.util.Arrays.fill(im, 0);
                 java.util.Arrays.fill(neighbours, 0);
+                return;
             }
-            radius = s.radius;
+            for (int m = 0; m < n; m++) {
+                int id = scan.id(m);
+                re[id] = cellRe[m];
+                im[id] = cellIm[m];
+                neighbours[id] = cellNeighbours[m];
+            }
+        }
+
+        @Override
+        public void placed(NeighbourScan scan) {
+            radius = scan.radii();
         }
 
         @Override
@@ -90,12 +123,12 @@ public final class BondOrder implements SampledObservable {
             double inv = 1 / (r2 * r2 * r2);
             double br = z3r * inv;
             double bi = z3i * inv;
-            re[i] += br;
-            im[i] += bi;
-            re[j] += br;
-            im[j] += bi;
-            neighbours[i]++;
-            neighbours[j]++;
+            cellRe[i] += br;
+            cellIm[i] += bi;
+            cellRe[j] += br;
+            cellIm[j] += bi;
+            cellNeighbours[i]++;
+            cellNeighbours[j]++;
         }
     }
 
