@@ -1,12 +1,12 @@
 """Reads the per-disc columns of a carom GSD trajectory (--trajectory-columns psi6,neighbours) with the
 field's readers and prints what they saw as JSON.
 
-Usage: read_columns.py FRAMES.gsd
+Usage: read_columns.py FRAMES.gsd FRAMES.xyz
 
 gsd.hoomd: each frame's log/particles/carom/psi6 and log/particles/carom/neighbours; freud: each frame's
 per-disc |psi6| and neighbour count from the positions (neighbours closer than 1.4, for discs of
-diameter 1: carom's definition); OVITO: the frame count and the last frame's two particle properties
-(null if its module is not installed).
+diameter 1: carom's definition); OVITO: the GSD file's frame count and its last frame's two particle
+properties, and the same of the XYZ file (null if its module is not installed).
 """
 import json
 import sys
@@ -15,7 +15,7 @@ import freud
 import gsd.hoomd
 import numpy as np
 
-path = sys.argv[1]
+path, xyz = sys.argv[1], sys.argv[2]
 out = {"frames": []}
 hexatic = freud.order.Hexatic(k=6)
 with gsd.hoomd.open(path, "r") as trajectory:
@@ -40,12 +40,12 @@ try:
 except ImportError:
     out["ovito"] = None
 else:
-    pipeline = import_file(path)
-    data = pipeline.compute(pipeline.source.num_frames - 1)
-    names = list(data.particles.keys())
-    psi6 = next(n for n in names if "psi6" in n)
-    neighbours = next(n for n in names if "neighbours" in n)
-    out["ovito"] = {"frames": pipeline.source.num_frames, "properties": names,
-                    "psi6": [float(v) for v in data.particles[psi6]],
-                    "neighbours": [int(v) for v in data.particles[neighbours]]}
+    def properties(file, psi6, neighbours):
+        pipeline = import_file(file)
+        data = pipeline.compute(pipeline.source.num_frames - 1)
+        return {"frames": pipeline.source.num_frames,
+                "psi6": [float(v) for v in data.particles[psi6]],
+                "neighbours": [int(v) for v in data.particles[neighbours]]}
+    out["ovito"] = properties(path, "carom_psi6", "carom_neighbours")
+    out["ovito_xyz"] = properties(xyz, "psi6", "neighbours")
 print(json.dumps(out))

@@ -19,7 +19,7 @@ final class TrajectoryOption {
                     + "(gsd, freud, MDAnalysis, OVITO, HOOMD-blue); needs --every or --trajectory-every.")
     Path file;
 
-    @Option(names = "--trajectory-columns", paramLabel = "COLUMN[,COLUMN]", split = ",", descriptionKey = "trajectory-columns",
+    @Option(names = "--trajectory-columns", paramLabel = "COLUMN", split = ",", descriptionKey = "trajectory-columns",
             description = "Per-disc columns every frame adds, for colouring in OVITO: psi6 (the disc's |psi6|, its local "
                     + "hexatic order) and neighbours (its neighbour count, discs closer than 1.4 contact distances); "
                     + "needs --trajectory.")

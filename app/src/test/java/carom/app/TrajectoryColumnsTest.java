@@ -132,7 +132,8 @@ class TrajectoryColumnsTest {
         try (InputStream in = getClass().getResourceAsStream("/read_columns.py")) {
             Files.write(script, in.readAllBytes());
         }
-        GsdPython.Result r = GsdPython.run(List.of(GsdPython.python(dir), script.toString(), gsd.toString()), dir);
+        GsdPython.Result r = GsdPython.run(List.of(GsdPython.python(dir), script.toString(), gsd.toString(),
+                xyzFile.toString()), dir);
         assertThat(r.status()).as("read_columns.py: %s", r.err()).isZero();
         JsonNode read = JSON.readTree(r.out());
         JsonNode frames = read.get("frames");
@@ -152,9 +153,15 @@ class TrajectoryColumnsTest {
         org.junit.jupiter.api.Assumptions.assumeFalse(ovito.isNull(), "OVITO's Python module did not install here (pip install ovito)");
         int last = xyz.size() - 1;
         assertThat(ovito.get("frames").asInt()).isEqualTo(xyz.size());
+        JsonNode ovitoXyz = read.get("ovito_xyz");
+        assertThat(ovitoXyz.get("frames").asInt()).isEqualTo(xyz.size());
         for (int i = 0; i < 180; i++) {
+            // OVITO names GSD's log/particles/carom/psi6 carom_psi6, and takes the XYZ column's name; its
+            // text parser may round the last bit
             assertThat((float) ovito.get("psi6").get(i).asDouble()).isEqualTo((float) xyz.get(last).psi6()[i]);
             assertThat(ovito.get("neighbours").get(i).asInt()).isEqualTo(xyz.get(last).neighbours()[i]);
+            assertThat(ovitoXyz.get("psi6").get(i).asDouble()).isCloseTo(xyz.get(last).psi6()[i], within(2 * Math.ulp(1.0)));
+            assertThat(ovitoXyz.get("neighbours").get(i).asInt()).isEqualTo(xyz.get(last).neighbours()[i]);
         }
     }
 
