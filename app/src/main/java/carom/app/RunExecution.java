@@ -60,7 +60,7 @@ final class RunExecution {
                     .withStatus(progressNote(request.settings().start()));
                  TrajectoryOutput frames = outputs.trajectory() == null ? null
                          : TrajectoryOutput.open(outputs.trajectory(), files, request.scene(),
-                         request.sampling().trajectoryEvery(), request.engine())) {
+                         request.sampling().trajectoryEvery(), request.engine(), outputs.columns())) {
                 result = run(request, bar, frames);
             } catch (IOException e) {
                 throw new UncheckedIOException("cannot write the trajectory: " + e.getMessage(), e);

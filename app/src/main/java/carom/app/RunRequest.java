@@ -13,6 +13,7 @@ import carom.core.engine.Capability;
 import carom.core.engine.Engine;
 import carom.core.engine.Tunables;
 import carom.core.engine.WorkEstimate;
+import carom.core.observe.sample.FrameColumns;
 import carom.core.scene.DiscSource;
 import carom.core.scene.Scene;
 import carom.core.scene.SceneReader;
@@ -105,10 +106,12 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
     }
 
     /** The files the run writes, each null when not asked for. */
-    record Outputs(Path out, Path summary, Path trajectory, Path report, Path jfr, Path checkpoint, Path outState) {
+    record Outputs(Path out, Path summary, Path trajectory, Path report, Path jfr, Path checkpoint, Path outState,
+                   FrameColumns columns) {
         Outputs(FinalOutputOptions finals, TrajectoryOption trajectory, ReportOption report, Path jfr,
                 CheckpointOptions checkpoints) {
-            this(finals.out, finals.summary, trajectory.file, report.folder, jfr, checkpoints.file, finals.outState);
+            this(finals.out, finals.summary, trajectory.file, report.folder, jfr, checkpoints.file, finals.outState,
+                    trajectory.columns());
         }
 
         /** The outputs a checkpoint keeps ({@code resume} given no output option writes them), as absolute paths. */
@@ -120,13 +123,13 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
         /** The outputs a checkpoint kept, checkpointing on into {@code checkpointFile}. */
         static Outputs from(SavedOutputs saved, Path checkpointFile) {
             return new Outputs(path(saved.out()), path(saved.summary()), path(saved.trajectory()), path(saved.report()),
-                    null, checkpointFile, path(saved.outState()));
+                    null, checkpointFile, path(saved.outState()), FrameColumns.none());
         }
 
         /** Whether no output at all is asked for (nor a checkpoint). */
         boolean none() {
             return out == null && summary == null && trajectory == null && report == null && jfr == null
-                    && checkpoint == null && outState == null;
+                    && checkpoint == null && outState == null && !columns.any();
         }
 
         private static String absolute(Path p) {
@@ -148,6 +151,9 @@ record RunRequest(Engine engine, Scene scene, Settings settings, Sampling sampli
          * the end). Paths are compared as they resolve (links, {@code ..}), not as spelled.
          */
         void check(Input input) {
+            if (columns.any() && trajectory == null) {
+                throw new BadInputException("--trajectory-columns needs --trajectory FRAMES (the frames that carry them)");
+            }
             Path inputFile;
             try {
                 inputFile = Path.of(input.file());

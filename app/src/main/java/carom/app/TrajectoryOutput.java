@@ -5,6 +5,7 @@ import carom.core.engine.Capability;
 import carom.core.engine.Engine;
 import carom.core.engine.Sampler;
 import carom.core.observe.CollisionObserver;
+import carom.core.observe.sample.FrameColumns;
 import carom.core.scene.Scene;
 import java.io.Closeable;
 import java.io.IOException;
@@ -46,14 +47,16 @@ final class TrajectoryOutput implements AutoCloseable {
 
     /**
      * The trajectory of {@code scene} sampled every {@code every}, into a temporary of {@code files} for
-     * {@code file}; GSD frames count collisions if {@code engine} tells them.
+     * {@code file}; GSD frames count collisions if {@code engine} tells them; every frame carries
+     * {@code columns}.
      */
-    static TrajectoryOutput open(Path file, AtomicOutput files, Scene scene, double every, Engine engine) {
+    static TrajectoryOutput open(Path file, AtomicOutput files, Scene scene, double every, Engine engine,
+                                 FrameColumns columns) {
         if (isGsd(file)) {
             FileChannel channel = files.channel(file);
             try {
                 boolean counts = engine.spec().can(Capability.COLLISION_OBSERVERS);
-                HoomdTrajectory gsd = new HoomdTrajectory(scene, every, counts, channel);
+                HoomdTrajectory gsd = new HoomdTrajectory(scene, every, counts, channel, columns.fresh());
                 return new TrajectoryOutput(gsd, counts ? gsd : null, gsd);
             } catch (IOException e) {
                 UncheckedIOException failure = new UncheckedIOException("cannot write the trajectory: " + e.getMessage(), e);
@@ -66,7 +69,7 @@ final class TrajectoryOutput implements AutoCloseable {
             }
         }
         Writer out = files.stream(file);
-        return new TrajectoryOutput(new TrajectoryXyz(scene, out), null, out);
+        return new TrajectoryOutput(new TrajectoryXyz(scene, out, columns.fresh()), null, out);
     }
 
     /** What the run's samples go to. */

@@ -1,6 +1,7 @@
 package carom.app;
 
 import carom.core.engine.Sampler;
+import carom.core.observe.sample.FrameColumns;
 import carom.core.scene.Box;
 import carom.core.scene.Scene;
 import carom.core.scene.Species;
@@ -16,7 +17,9 @@ import java.util.List;
  * box as {@code Lattice} (z = 1), the columns ({@code type} = species name, {@code id}, position and
  * velocity with z = 0, {@code radius}, and for rough discs {@code omega}, the angular velocity), {@code Time}
  * and {@code pbc} ("T T F" periodic, "F F F" walls);
- * then one line per disc in id order. Numbers go out with {@link Double#toString}, the shortest text
+ * then one line per disc in id order. With {@code --trajectory-columns}, each line ends with the columns
+ * asked for ({@link FrameColumns}): {@code psi6:R:1}, the disc's |ψ6|, and {@code neighbours:I:1}, its
+ * neighbour count; without it the frames are as they were. Numbers go out with {@link Double#toString}, the shortest text
  * that reads back as the same double. OVITO and ASE read it ({@code ase.io.read(path, index=":")}).
  */
 final class TrajectoryXyz implements Sampler {
@@ -26,14 +29,19 @@ final class TrajectoryXyz implements Sampler {
     private final StringBuilder line = new StringBuilder(160);
     /** Rough discs: each line ends with the disc's angular velocity. */
     private final boolean rough;
+    private final FrameColumns columns;
+    private final Box box;
     private long frames;
 
-    TrajectoryXyz(Scene scene, Writer out) {
+    TrajectoryXyz(Scene scene, Writer out, FrameColumns columns) {
         this.out = out;
-        Box box = scene.box();
+        this.columns = columns;
+        this.box = scene.box();
+        Box box = this.box;
         this.header = "Lattice=\"" + box.width() + " 0.0 0.0 0.0 " + box.height() + " 0.0 0.0 0.0 1.0\""
                 + " Properties=type:S:1:id:I:1:pos:R:3:velo:R:3:radius:R:1"
-                + (scene.effects().rough() ? ":omega:R:1" : "") + " Time=";
+                + (scene.effects().rough() ? ":omega:R:1" : "")
+                + (columns.psi6() ? ":psi6:R:1" : "") + (columns.neighbours() ? ":neighbours:I:1" : "") + " Time=";
         this.rough = scene.effects().rough();
         List<Species> species = scene.species();
         this.typeNames = new String[species.size()];
@@ -64,6 +72,9 @@ final class TrajectoryXyz implements Sampler {
             out.write(Double.toString(time));
             out.write(pbc);
             out.write('\n');
+            columns.compute(time, box, d);
+            boolean psi6 = columns.psi6();
+            boolean neighbours = columns.neighbours();
             for (int i = 0; i < d.n; i++) {
                 line.setLength(0);
                 line.append(typeNames[d.species[i]]).append(' ').append(i).append(' ')
@@ -72,6 +83,12 @@ final class TrajectoryXyz implements Sampler {
                         .append(d.radius[i]);
                 if (rough) {
                     line.append(' ').append(d.spins.omega[i]);
+                }
+                if (psi6) {
+                    line.append(' ').append(columns.psi6(i));
+                }
+                if (neighbours) {
+                    line.append(' ').append(columns.neighbours(i));
                 }
                 out.append(line.append('\n'));
             }

@@ -38,7 +38,7 @@ class TrajectoryAseTest {
         Cli r = Cli.run("simulate", scene.toString(), "--every", "0.25", "--trajectory", xyz.toString(), "--out", csv.toString());
         assertThat(r.status()).as(r.err()).isZero();
 
-        JsonNode frames = new ObjectMapper().readTree(readWithAse(xyz));
+        JsonNode frames = new ObjectMapper().readTree(readWithAse(xyz, dir));
         assertThat(frames.size()).isEqualTo(9);
         List<String> fin = Files.readAllLines(csv);
         for (int k = 0; k < frames.size(); k++) {
@@ -64,17 +64,17 @@ class TrajectoryAseTest {
         }
     }
 
-    /** What ASE parsed from {@code xyz}, as the JSON read_with_ase.py prints. */
-    private String readWithAse(Path xyz) throws IOException, InterruptedException {
+    /** What ASE parsed from {@code xyz}, as the JSON read_with_ase.py prints; {@code dir} for scratch files. */
+    static String readWithAse(Path xyz, Path dir) throws IOException, InterruptedException {
         Path script = dir.resolve("read_with_ase.py");
-        try (InputStream in = getClass().getResourceAsStream("/read_with_ase.py")) {
+        try (InputStream in = TrajectoryAseTest.class.getResourceAsStream("/read_with_ase.py")) {
             Files.write(script, in.readAllBytes());
         }
-        String python = run(List.of("sh", repositoryRoot().resolve("tools/ase-python").toString())).strip();
-        return run(List.of(python, script.toString(), xyz.toString()));
+        String python = run(List.of("sh", repositoryRoot().resolve("tools/ase-python").toString()), dir).strip();
+        return run(List.of(python, script.toString(), xyz.toString()), dir);
     }
 
-    private String run(List<String> command) throws IOException, InterruptedException {
+    private static String run(List<String> command, Path dir) throws IOException, InterruptedException {
         Path out = Files.createTempFile(dir, "out", ".txt");
         Path err = Files.createTempFile(dir, "err", ".txt");
         Process p = new ProcessBuilder(command).redirectOutput(out.toFile()).redirectError(err.toFile()).start();

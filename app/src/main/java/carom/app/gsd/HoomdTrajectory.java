@@ -6,6 +6,7 @@ import carom.core.engine.Sampler;
 import carom.core.observe.CollisionObserver;
 import carom.core.observe.Observables;
 import carom.core.observe.VirialAccumulator;
+import carom.core.observe.sample.FrameColumns;
 import carom.core.scene.Box;
 import carom.core.scene.Scene;
 import carom.core.scene.Species;
@@ -36,7 +37,10 @@ import java.util.List;
  *       the mobile discs' kinetic energies at its two ends. NaN in a file's first frame, which ends no
  *       interval (a resumed run's file too), and for an interval without kinetic energy;
  *   <li>{@code log/carom/collisions}, only if the engine tells its collisions: the collisions this run
- *       has carried out up to the sample (a resumed run counts from its checkpoint).
+ *       has carried out up to the sample (a resumed run counts from its checkpoint);
+ *   <li>with {@code --trajectory-columns} ({@link FrameColumns}), per-disc values (N rows) in the schema's
+ *       per-particle log chunks, which OVITO reads as particle properties: {@code log/particles/carom/psi6}
+ *       (float32, the disc's |ψ6|) and {@code log/particles/carom/neighbours} (int32, its neighbour count).
  * </ul>
  * Every frame holds each of these, as the schema's readers take a {@code log/} value missing from a
  * frame from frame 0. Frame 0 also holds what does not change: {@code configuration/dimensions} = 2,
@@ -71,6 +75,8 @@ public final class HoomdTrajectory implements Sampler, CollisionObserver, Closea
     private final float height;
     private final float[] box;
     private final int n;
+    private final FrameColumns columns;
+    private final Box sceneBox;
 
     private final ByteBuffer positions;
     private final ByteBuffer velocities;
@@ -91,10 +97,14 @@ public final class HoomdTrajectory implements Sampler, CollisionObserver, Closea
     /**
      * A trajectory of {@code scene}'s discs sampled every {@code every}, written to {@code channel} (an
      * empty file opened for reading and writing, closed by {@link #close}); with {@code countsCollisions},
-     * the engine tells this trajectory its collisions, and each frame holds their count.
+     * the engine tells this trajectory its collisions, and each frame holds their count; each frame
+     * holds {@code columns} (none: the frames as without the option).
      */
-    public HoomdTrajectory(Scene scene, double every, boolean countsCollisions, FileChannel channel) throws IOException {
+    public HoomdTrajectory(Scene scene, double every, boolean countsCollisions, FileChannel channel, FrameColumns columns)
+            throws IOException {
         this.every = every;
+        this.columns = columns;
+        this.sceneBox = scene.box();
         this.countsCollisions = countsCollisions;
         Box b = scene.box();
         this.periodic = b.periodic();
@@ -179,9 +189,29 @@ public final class HoomdTrajectory implements Sampler, CollisionObserver, Closea
                 scalar.putLong(0, collisions);
                 writeSmall("log/carom/collisions", GsdType.UINT64, 1);
             }
+            writeColumns(time, d);
             file.endFrame();
         } catch (IOException e) {
             throw new UncheckedIOException("cannot write the trajectory: " + e.getMessage(), e);
+        }
+    }
+
+    /** The per-disc columns asked for, through the one per-disc buffer. */
+    private void writeColumns(double time, Discs d) throws IOException {
+        columns.compute(time, sceneBox, d);
+        if (columns.psi6()) {
+            FloatBuffer psi6 = perDisc.clear().asFloatBuffer();
+            for (int i = 0; i < n; i++) {
+                psi6.put(i, (float) columns.psi6(i));
+            }
+            file.writeChunk("log/particles/carom/psi6", GsdType.FLOAT, n, 1, perDisc);
+        }
+        if (columns.neighbours()) {
+            IntBuffer neighbours = perDisc.clear().asIntBuffer();
+            for (int i = 0; i < n; i++) {
+                neighbours.put(i, columns.neighbours(i));
+            }
+            file.writeChunk("log/particles/carom/neighbours", GsdType.INT32, n, 1, perDisc);
         }
     }
 

@@ -278,13 +278,20 @@ final class DisplacementLadder {
             int bin = l == 0 ? (int) age - 1 : points + (l - 1) * (points / 2) + (int) (age >> l) - points / 2 - 1;
             double[] ox = storedX[c];
             double[] oy = storedY[c];
-            Arrays.fill(groupSum, 0);
-            for (int k = 0; k < m; k++) {
-                int i = included[k];
-                double dx = unwrappedX[i] - ox[k];
-                double dy = unwrappedY[i] - oy[k];
-                double d2 = dx * dx + dy * dy;
-                groupSum[groupOf[k]] += squared ? d2 : Bessel.j0(waveNumber * Math.sqrt(d2));
+            if (groups == 1) {
+                // one sum in a register: the same additions in the same order as the groups' loop
+                groupSum[0] = squared ? squaredSum(m, ox, oy) : besselSum(m, ox, oy);
+            } else if (groups <= 4) {
+                groupSums(m, ox, oy, squared);
+            } else {
+                Arrays.fill(groupSum, 0);
+                for (int k = 0; k < m; k++) {
+                    int i = included[k];
+                    double dx = unwrappedX[i] - ox[k];
+                    double dy = unwrappedY[i] - oy[k];
+                    double d2 = dx * dx + dy * dy;
+                    groupSum[groupOf[k]] += squared ? d2 : Bessel.j0(waveNumber * Math.sqrt(d2));
+                }
             }
             for (int g = 0; g < groups; g++) {
                 sums[bin * groups + g] += groupSum[g];
@@ -297,6 +304,66 @@ final class DisplacementLadder {
                 errors[bin].add(groupMean);
             }
         }
+    }
+
+    /** Selects a group's sum: row g has 1 at column g (groups ≤ 4). */
+    private static final double[][] SELECT = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+
+    /**
+     * Up to four groups' sums in registers instead of through memory: each disc's f times 1 is added to
+     * its group's sum and times 0 to the others, and adding a zero leaves a sum's bits as they are (a
+     * sum that starts at +0 is never -0), so each group's sum is the same additions in the same order
+     * as the general loop's.
+     */
+    private void groupSums(int m, double[] ox, double[] oy, boolean squared) {
+        double s0 = 0;
+        double s1 = 0;
+        double s2 = 0;
+        double s3 = 0;
+        for (int k = 0; k < m; k++) {
+            int i = included[k];
+            double dx = unwrappedX[i] - ox[k];
+            double dy = unwrappedY[i] - oy[k];
+            double d2 = dx * dx + dy * dy;
+            double f = squared ? d2 : Bessel.j0(waveNumber * Math.sqrt(d2));
+            double[] select = SELECT[groupOf[k]];
+            s0 += f * select[0];
+            s1 += f * select[1];
+            s2 += f * select[2];
+            s3 += f * select[3];
+        }
+        groupSum[0] = s0;
+        if (groups > 1) {
+            groupSum[1] = s1;
+        }
+        if (groups > 2) {
+            groupSum[2] = s2;
+        }
+        if (groups > 3) {
+            groupSum[3] = s3;
+        }
+    }
+
+    private double squaredSum(int m, double[] ox, double[] oy) {
+        double sum = 0;
+        for (int k = 0; k < m; k++) {
+            int i = included[k];
+            double dx = unwrappedX[i] - ox[k];
+            double dy = unwrappedY[i] - oy[k];
+            sum += dx * dx + dy * dy;
+        }
+        return sum;
+    }
+
+    private double besselSum(int m, double[] ox, double[] oy) {
+        double sum = 0;
+        for (int k = 0; k < m; k++) {
+            int i = included[k];
+            double dx = unwrappedX[i] - ox[k];
+            double dy = unwrappedY[i] - oy[k];
+            sum += Bessel.j0(waveNumber * Math.sqrt(dx * dx + dy * dy));
+        }
+        return sum;
     }
 
     private void store() {

@@ -12,8 +12,16 @@ import carom.core.grid.CellLists;
  * shorter side. The grid and the cell-ordered copies of the positions are kept between samples.
  */
 final class NeighbourScan {
-    /** One pair: discs i and j, separation (dx, dy) from i to j and its square r2 < cutoff². */
+    /**
+     * One pair: discs i and j by their place in the scan's cell order ({@link #id} gives a disc's id;
+     * arrays indexed in that order are read and written close together), separation (dx, dy) from i to
+     * j and its square r2 < cutoff².
+     */
     interface PairVisitor {
+        /** Before the first pair: the scan has placed the discs in its cell order. */
+        default void placed(NeighbourScan scan) {
+        }
+
         void pair(int i, int j, double dx, double dy, double r2);
     }
 
@@ -22,8 +30,9 @@ final class NeighbourScan {
     private final CellLists lists = new CellLists();
     private double[] sx = new double[0];
     private double[] sy = new double[0];
-    /** Species of the discs in cell order. */
+    /** Species and radii of the discs in cell order. */
     private int[] ss = new int[0];
+    private double[] sr = new double[0];
 
     /**
      * How {@link #histogram} bins a pair: the pair's class from its two species (a table of
@@ -56,14 +65,26 @@ final class NeighbourScan {
             sx = new double[n];
             sy = new double[n];
             ss = new int[n];
+            sr = new double[n];
         }
         int[] items = lists.items;
         for (int m = 0; m < n; m++) {
             sx[m] = s.x[items[m]];
             sy[m] = s.y[items[m]];
             ss[m] = s.species[items[m]];
+            sr[m] = s.radius[items[m]];
         }
         return true;
+    }
+
+    /** The id of the disc at place {@code m} of the latest scan's cell order. */
+    int id(int m) {
+        return lists.items[m];
+    }
+
+    /** The radii in the latest scan's cell order (read-only). */
+    double[] radii() {
+        return sr;
     }
 
     /**
@@ -86,9 +107,8 @@ final class NeighbourScan {
         int[] offsetOf = binning.offset();
         if (grid.periodic && (grid.cols < 3 || grid.rows < 3)) {
             // Only for a few discs in a long narrow box, where rebuilding the grid each sample costs little.
-            int[] sp = s.species;
             scan(s, cutoff, (i, j, dx, dy, r2) -> {
-                int c = classOf[sp[i] * species + sp[j]];
+                int c = classOf[ss[i] * species + ss[j]];
                 int bin = (int) (Math.sqrt(r2) * perWidth[c]);
                 if (bin < binsOf[c]) {
                     counts[offsetOf[c] + bin]++;
@@ -96,6 +116,10 @@ final class NeighbourScan {
             });
             return;
         }
+        // one class (g(r) of all pairs): the loop is unswitched on it
+        boolean oneClass = perWidth.length == 1 && offsetOf[0] == 0;
+        double perWidth0 = perWidth[0];
+        int bins0 = binsOf[0];
         double w = s.box.width();
         double h = s.box.height();
         boolean periodic = grid.periodic;
@@ -149,10 +173,17 @@ final class NeighbourScan {
                                 double dy = sy[b] - ya;
                                 double r2 = dx * dx + dy * dy;
                                 if (r2 < cut2) {
-                                    int pairClass = classOf[row0 + ss[b]];
-                                    int bin = (int) (Math.sqrt(r2) * perWidth[pairClass]);
-                                    if (bin < binsOf[pairClass]) {
-                                        counts[offsetOf[pairClass] + bin]++;
+                                    if (oneClass) { // the same bin as the general path's, without its lookups
+                                        int bin = (int) (Math.sqrt(r2) * perWidth0);
+                                        if (bin < bins0) {
+                                            counts[bin]++;
+                                        }
+                                    } else {
+                                        int pairClass = classOf[row0 + ss[b]];
+                                        int bin = (int) (Math.sqrt(r2) * perWidth[pairClass]);
+                                        if (bin < binsOf[pairClass]) {
+                                            counts[offsetOf[pairClass] + bin]++;
+                                        }
                                     }
                                 }
                             }
@@ -167,7 +198,7 @@ final class NeighbourScan {
         if (!prepare(s, cutoff)) {
             return;
         }
-        int[] items = lists.items;
+        visitor.placed(this);
         double w = s.box.width();
         double h = s.box.height();
         boolean periodic = s.box.periodic();
@@ -202,7 +233,7 @@ final class NeighbourScan {
                         }
                         double r2 = dx * dx + dy * dy;
                         if (r2 < cut2) {
-                            visitor.pair(items[a], items[b], dx, dy, r2);
+                            visitor.pair(a, b, dx, dy, r2);
                         }
                     }
                 }

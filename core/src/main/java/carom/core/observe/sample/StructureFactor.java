@@ -18,10 +18,13 @@ import java.util.List;
  * directions (n_x, n_y) ∝ (1, 0), (0, 1), (1, ±1), (1, ±2), (2, ±1) (k and -k give the same |ρ|², so
  * half the plane suffices). Along a direction whose shortest vector k₁ is shorter than the bin width,
  * every m-th multiple is taken, m = ⌊bin width / k₁⌋, so the vectors are about a bin width apart; up
- * to {@code kMax}. Bins: width {@code binWidth}, from 0; bin centres. Along a ray exp(i n k₁·r) is
- * computed by complex multiplication from exp(i m k₁·r), one sine and cosine per disc and direction,
- * so a sample costs about N · (vectors) complex multiplications. An isotropic fluid's S(k) is the same
- * along every direction; a crystal's Bragg peaks show only where a direction meets them.
+ * to {@code kMax}. Bins: width {@code binWidth}, from 0; bin centres. The sums of a ray are
+ * {@link RaySums}: by recurrence from exp(i m k₁·r) (one sine and cosine per disc and direction, then a
+ * complex multiplication per disc and vector) for short rays, and for long ones, which a large box
+ * has, by gridding: a one-dimensional non-uniform FFT of the discs' phases along the ray (Taylor
+ * moments about a grid's points, then FFTs of the grid: about 40 operations per disc and direction
+ * whatever the number of vectors, to about 1e-14 of N). An isotropic fluid's S(k) is the same along every direction; a crystal's Bragg peaks show only
+ * where a direction meets them.
  *
  * <p>Defaults: bins 0.2/σ wide up to k = 20/σ, σ the first sample's mean diameter (the vectors along a
  * direction are a bin apart, so a bin holds about one per direction whatever its width: wider bins cost
@@ -54,6 +57,8 @@ public final class StructureFactor implements SampledObservable {
     private double[] stepX = new double[0];
     private double[] stepY = new double[0];
     private int[] steps = new int[0];
+    /** Per direction: its sums, by recurrence or gridding. */
+    private RaySums[] rays = new RaySums[0];
     /** Per vector (directions one after the other): its bin. */
     private int[] binOf = new int[0];
     private int[] vectorsInBin = new int[0];
@@ -156,92 +161,24 @@ public final class StructureFactor implements SampledObservable {
         }
         pairA = java.util.Arrays.copyOf(a, pairs);
         pairB = java.util.Arrays.copyOf(b, pairs);
+        rays = new RaySums[d];
+        for (int k = 0; k < d; k++) {
+            rays[k] = RaySums.of(stepX[k], stepY[k], steps[k], species, n);
+        }
         rhoRe = new double[species * vectors];
         rhoIm = new double[species * vectors];
         sampleValues = new double[(1 + pairs) * bins];
     }
 
-    /**
-     * ρ_a(k) of every species and vector, by recurrence along each direction. Discs go four at a time:
-     * one disc's recurrence is a chain of dependent multiplications, four independent chains keep the
-     * multipliers busy. Each vector's sums still take the discs in id order, so the values are those of
-     * one disc at a time.
-     */
+    /** ρ_a(k) of every species and vector, ray by ray ({@link RaySums}: by recurrence or by gridding). */
     private void computeDensities(Sample s) {
         int vectors = binOf.length;
         java.util.Arrays.fill(rhoRe, 0);
         java.util.Arrays.fill(rhoIm, 0);
-        double[] re = rhoRe;
-        double[] im = rhoIm;
-        int i = 0;
-        for (; i + 4 <= s.n; i += 4) {
-            int v0 = s.species[i] * vectors;
-            int v1 = s.species[i + 1] * vectors;
-            int v2 = s.species[i + 2] * vectors;
-            int v3 = s.species[i + 3] * vectors;
-            for (int d = 0; d < steps.length; d++) {
-                double kx = stepX[d];
-                double ky = stepY[d];
-                double p0 = kx * s.x[i] + ky * s.y[i];
-                double p1 = kx * s.x[i + 1] + ky * s.y[i + 1];
-                double p2 = kx * s.x[i + 2] + ky * s.y[i + 2];
-                double p3 = kx * s.x[i + 3] + ky * s.y[i + 3];
-                double c0 = Math.cos(p0);
-                double s0 = Math.sin(p0);
-                double c1 = Math.cos(p1);
-                double s1 = Math.sin(p1);
-                double c2 = Math.cos(p2);
-                double s2 = Math.sin(p2);
-                double c3 = Math.cos(p3);
-                double s3 = Math.sin(p3);
-                double r0 = c0;
-                double q0 = s0;
-                double r1 = c1;
-                double q1 = s1;
-                double r2 = c2;
-                double q2 = s2;
-                double r3 = c3;
-                double q3 = s3;
-                for (int j = 0; j < steps[d]; j++) {
-                    re[v0] += r0;
-                    im[v0++] += q0;
-                    re[v1] += r1;
-                    im[v1++] += q1;
-                    re[v2] += r2;
-                    im[v2++] += q2;
-                    re[v3] += r3;
-                    im[v3++] += q3;
-                    double t0 = r0 * c0 - q0 * s0;
-                    q0 = r0 * s0 + q0 * c0;
-                    r0 = t0;
-                    double t1 = r1 * c1 - q1 * s1;
-                    q1 = r1 * s1 + q1 * c1;
-                    r1 = t1;
-                    double t2 = r2 * c2 - q2 * s2;
-                    q2 = r2 * s2 + q2 * c2;
-                    r2 = t2;
-                    double t3 = r3 * c3 - q3 * s3;
-                    q3 = r3 * s3 + q3 * c3;
-                    r3 = t3;
-                }
-            }
-        }
-        for (; i < s.n; i++) {
-            int v = s.species[i] * vectors;
-            for (int d = 0; d < steps.length; d++) {
-                double phase = stepX[d] * s.x[i] + stepY[d] * s.y[i];
-                double cr = Math.cos(phase);
-                double ci = Math.sin(phase);
-                double er = cr;
-                double ei = ci;
-                for (int j = 0; j < steps[d]; j++) {
-                    re[v] += er;
-                    im[v++] += ei;
-                    double nr = er * cr - ei * ci;
-                    ei = er * ci + ei * cr;
-                    er = nr;
-                }
-            }
+        int offset = 0;
+        for (RaySums ray : rays) {
+            ray.addTo(s, rhoRe, rhoIm, offset, vectors);
+            offset += ray.steps;
         }
     }
 
@@ -286,6 +223,11 @@ public final class StructureFactor implements SampledObservable {
             }
         }
         return v;
+    }
+
+    /** How many of the directions are summed by gridding (the others by recurrence), for tests. */
+    int griddedRays() {
+        return (int) java.util.Arrays.stream(rays).filter(r -> r.gridded).count();
     }
 
     /** Bin centres that hold at least one wave vector, in inverse length units. */

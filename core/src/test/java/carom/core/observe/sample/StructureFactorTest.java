@@ -8,18 +8,29 @@ import carom.core.scene.Box;
 import java.util.List;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 
 /** S(k): against direct sums with sine and cosine, the ideal mixture, wave vectors of the box. */
 class StructureFactorTest {
     private static final List<String> NAMES = List.of("small", "large");
 
-    /** Each bin is the mean over its vectors of |ρ(k)|²/N and Re[ρ_a conj(ρ_b)] / √(N_a N_b), summed with Math.cos and Math.sin. */
-    @Test
-    void binsAreTheDirectSumsOverTheirVectors() {
-        Box box = TestSamples.box(23, 17.5, true);
-        Sample s = PartialRadialDistributionTest.mixture(0, box, 303, new SplittableRandom(6)); // not a multiple of 4: both loops
+    /**
+     * Each bin is the mean over its vectors of |ρ(k)|²/N and Re[ρ_a conj(ρ_b)] / √(N_a N_b), summed with
+     * Math.cos and Math.sin. The small box's rays are summed by recurrence, the large box's by gridding.
+     */
+    @ParameterizedTest(name = "{0} x {1}, {2} discs")
+    @CsvSource({"23, 17.5, 303, false", "75, 61.5, 3003, true"}) // not multiples of 4: both loops of the recurrence
+    void binsAreTheDirectSumsOverTheirVectors(double width, double height, int n, boolean gridded) {
+        Box box = TestSamples.box(width, height, true);
+        Sample s = PartialRadialDistributionTest.mixture(0, box, n, new SplittableRandom(6));
         StructureFactor sk = new StructureFactor(NAMES, 12, 0.2);
         sk.accept(s);
+        if (gridded) {
+            assertThat(sk.griddedRays()).as("rays summed by gridding").isPositive();
+        } else {
+            assertThat(sk.griddedRays()).as("rays summed by gridding").isZero();
+        }
         double[][] v = sk.waveVectors();
         int vectors = v[0].length;
         int bins = 0;
