@@ -129,6 +129,9 @@ final class FastRun {
         this.thermostat = scene.box().thermostat();
     }
 
+    /** The epoch of the checkpoint being restored (for the floor's height in its checks). */
+    private double restoredEpoch;
+
     RunResult run() {
         long started = System.nanoTime();
         table.predictFirstEvents(i -> step.predictFull(i, 0));
@@ -189,6 +192,7 @@ final class FastRun {
             energyRemoved = in.getDouble();
         }
         in.end();
+        restoredEpoch = epoch;
         checkRestored(time - epoch);
         agenda.resumeAt(time, epoch, resyncAt);
         table.anchor(epoch);
@@ -221,7 +225,9 @@ final class FastRun {
         }
         Discs at = scene.newDiscs();
         motion.stateAt(at, 0, n, now);
-        carom.core.engine.RestoredState.check(at, scene.box());
+        // A vibrated floor where it is at the checkpoint (the floor is anchored after this check).
+        double floor = table.floor == null ? 0 : table.floor.height(restoredEpoch + now);
+        carom.core.engine.RestoredState.check(at, scene.box(), floor);
     }
 
     /** The state between two events, continuing from absolute {@code time}: see the class comment. */

@@ -98,7 +98,7 @@ public final class DiscTable {
     /** The walls, or null in a periodic box. */
     final Boundary.Walls walls;
     /** The vibrated floor, or null when the bottom wall stands still (the kernel's floor variant: {@link FloorMotion}). */
-    final carom.core.physics.VibratingFloor floor;
+    public final carom.core.physics.VibratingFloor floor;
     final Restitution restitution;
     /** What contacts do along their tangent: nothing for smooth discs, spin for rough ones. */
     final Roughness roughness;
