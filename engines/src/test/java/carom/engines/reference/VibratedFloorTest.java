@@ -247,6 +247,33 @@ class VibratedFloorTest {
         runBed(engineName, bed(300, 1.5, 80, 1), 100_000);
     }
 
+    /** The judge's scenes do meet the floor: most of them, many times (so the comparison above judges it). */
+    @Test
+    void theRandomScenesHitTheFloor() {
+        int scenesWithHits = 0;
+        long hits = 0;
+        for (long seed = 1; seed <= 30; seed++) {
+            Scene scene = randomScene(seed);
+            long[] floorHits = {0};
+            EngineCatalog.byName("fast").run(scene, RunOptions.until(scene.until()).withCollisions(new carom.core.observe.CollisionObserver() {
+                @Override
+                public void pair(double time, int i, int k, double dx, double dy, double nx, double ny, double j) {
+                }
+
+                @Override
+                public void wall(double time, int i, int wall, double j) {
+                    if (wall == carom.core.physics.Boundary.BOTTOM) {
+                        floorHits[0]++;
+                    }
+                }
+            }));
+            scenesWithHits += floorHits[0] > 0 ? 1 : 0;
+            hits += floorHits[0];
+        }
+        assertThat(scenesWithHits).isGreaterThanOrEqualTo(20);
+        assertThat(hits).isGreaterThanOrEqualTo(200);
+    }
+
     @Test
     void enginesThatDoNotSimulateTheFloorRefuseIt() {
         Scene scene = randomScene(1);
