@@ -1,6 +1,7 @@
 package carom.app;
 
 import carom.core.observe.StateChecks;
+import carom.core.physics.VibratingFloor;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
 
@@ -11,6 +12,10 @@ import carom.core.state.Discs;
  */
 record FinalChecks(double deepestOverlap, int escapes) {
     static FinalChecks of(Scene scene, Discs finalState) {
-        return new FinalChecks(StateChecks.deepestOverlap(finalState, scene.box()), StateChecks.escapes(finalState, scene.box()));
+        // A vibrated floor is judged where it is at the end (every final clock is the end time).
+        VibratingFloor floor = VibratingFloor.of(scene);
+        double bottom = floor == null || finalState.n == 0 ? 0 : floor.height(finalState.t[0]);
+        return new FinalChecks(StateChecks.deepestOverlap(finalState, scene.box(), bottom),
+                StateChecks.escapes(finalState, scene.box()));
     }
 }

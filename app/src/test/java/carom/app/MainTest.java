@@ -35,7 +35,7 @@ class MainTest {
                 assertThat(line).as(engine.name()).contains(" (effects: " + String.join(", ", own) + ")");
             }
         }
-        assertThat(byName.get("fast")).contains("(effects: growth, tangentialRestitution)");
+        assertThat(byName.get("fast")).contains("(effects: growth, tangentialRestitution, vibratingFloor)");
         assertThat(byName.get("stepped")).doesNotContain("(effects: ");
     }
 

@@ -123,6 +123,7 @@ public record EngineSpec(String name, String description, boolean exact, Set<Cap
             case TC -> "the TC model of inelastic collisions";
             case GROWTH -> "growing discs";
             case TANGENTIAL_RESTITUTION -> "rough discs that spin";
+            case VIBRATING_FLOOR -> "a vibrated floor";
         };
     }
 

@@ -24,6 +24,11 @@ public final class RestoredState {
 
     /** Fails unless {@code d} (every disc at the checkpoint's time) is a state the scene's box can hold. */
     public static void check(Discs d, Box box) {
+        check(d, box, 0);
+    }
+
+    /** {@link #check} with the bottom wall at height {@code floor} (a vibrated floor's at the checkpoint's time). */
+    public static void check(Discs d, Box box, double floor) {
         double energy = 0;
         for (int i = 0; i < d.n; i++) {
             if (!Double.isFinite(d.x[i]) || !Double.isFinite(d.y[i]) || !Double.isFinite(d.vx[i]) || !Double.isFinite(d.vy[i])) {
@@ -41,7 +46,7 @@ public final class RestoredState {
             // The overlap check sees plain periodic images, not a sheared box's sliding ones.
             return;
         }
-        double overlap = StateChecks.deepestOverlap(d, box);
+        double overlap = StateChecks.deepestOverlap(d, box, floor);
         if (!(overlap <= MOST_OVERLAP)) {
             throw bad("discs overlapping by " + overlap + " of their contact distance");
         }

@@ -20,7 +20,15 @@ public final class StateChecks {
      * the box counts as a full wall overlap of 1 or more.
      */
     public static double deepestOverlap(Discs d, Box box) {
-        double[] deepest = {box.periodic() ? 0 : deepestWallOverlap(d, box)};
+        return deepestOverlap(d, box, 0);
+    }
+
+    /**
+     * {@link #deepestOverlap} with the bottom wall at height {@code floor} (a vibrated floor's height at
+     * the state's time; 0 for a still one).
+     */
+    public static double deepestOverlap(Discs d, Box box, double floor) {
+        double[] deepest = {box.periodic() ? 0 : deepestWallOverlap(d, box, floor)};
         NeighbourPairs.forEach(d, box.width(), box.height(), box.periodic(), (i, j, dx, dy) -> {
             double sigma = d.radius[i] + d.radius[j];
             deepest[0] = Math.max(deepest[0], (sigma - Math.sqrt(dx * dx + dy * dy)) / sigma);
@@ -56,11 +64,11 @@ public final class StateChecks {
         return deepest;
     }
 
-    private static double deepestWallOverlap(Discs d, Box box) {
+    private static double deepestWallOverlap(Discs d, Box box, double floor) {
         double deepest = 0;
         for (int i = 0; i < d.n; i++) {
             double r = d.radius[i];
-            double nearest = Math.min(Math.min(d.x[i], box.width() - d.x[i]), Math.min(d.y[i], box.height() - d.y[i]));
+            double nearest = Math.min(Math.min(d.x[i], box.width() - d.x[i]), Math.min(d.y[i] - floor, box.height() - d.y[i]));
             deepest = Math.max(deepest, (r - nearest) / r);
         }
         return deepest;

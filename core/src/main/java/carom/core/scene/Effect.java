@@ -10,7 +10,8 @@ import java.util.function.ToDoubleFunction;
 
 /**
  * The effects a scene can name under {@code effects}, one descriptor each: the key it is spelled with,
- * its value (one number, or a list of named numbers such as gravity's [gx, gy]), the range a written
+ * its value (one number, a list of named numbers such as gravity's [gx, gy], or an object of named numbers
+ * such as the vibrated floor's {"amplitude": A, "frequency": F}, each with its own range), the range a written
  * value must lie in, the neutral value that absence means (the effect is off), its unit and what it
  * does. {@link SceneReader} reads {@code effects} by walking this table and {@link SceneBuilder} checks
  * ranges by walking it ({@link #check}), so an effect is described here once; what an engine supports
@@ -44,7 +45,13 @@ public enum Effect {
     TANGENTIAL_RESTITUTION("tangentialRestitution", Range.SIGNED_UNIT, -1, "none",
             "the coefficient of tangential restitution β of collisions, pairs and walls: −1 smooth discs, +1 perfectly"
                     + " rough; rough discs spin (species inertia, particle omega); not with growth",
-            (e, v) -> e.withTangentialRestitution(v[0]), component("beta", Effects::tangentialRestitution));
+            (e, v) -> e.withTangentialRestitution(v[0]), component("beta", Effects::tangentialRestitution)),
+    VIBRATING_FLOOR("vibratingFloor", Range.NON_NEGATIVE, 0, "L, 1/T",
+            "the bottom wall of a walled box moves as y(t) = A·sin(2π·F·t), t the run's time; a disc rebounds from it"
+                    + " in the wall's frame with wallRestitution; A below the smallest radius",
+            (e, v) -> e.withVibratingFloor(v[0], v[1]),
+            named("amplitude", Range.NON_NEGATIVE, Effects::floorAmplitude),
+            named("frequency", Range.POSITIVE, Effects::floorFrequency));
 
     /** The key under {@code effects} in a scene file. */
     public final String key;
@@ -99,11 +106,35 @@ public enum Effect {
         }
     }
 
-    private record Component(String name, ToDoubleFunction<Effects> accessor) {
+    /** One number of a value; {@code range} null: the effect's; {@code keyed}: written as an object's key. */
+    private record Component(String name, ToDoubleFunction<Effects> accessor, Range range, boolean keyed) {
     }
 
     private static Component component(String name, ToDoubleFunction<Effects> accessor) {
-        return new Component(name, accessor);
+        return new Component(name, accessor, null, false);
+    }
+
+    private static Component named(String name, Range range, ToDoubleFunction<Effects> accessor) {
+        return new Component(name, accessor, range, true);
+    }
+
+    /** Whether the value is written as an object keyed by the components' names (else a number or a list). */
+    public boolean keyed() {
+        return components[0].keyed();
+    }
+
+    /** The range component {@code k} must lie in. */
+    public Range range(int k) {
+        Range own = components[k].range();
+        return own == null ? range : own;
+    }
+
+    /** The ranges as the docs' effects table states them: the effect's, or each keyed component's. */
+    public String rangeDescribed() {
+        if (!keyed()) {
+            return range.described;
+        }
+        return String.join("; ", Arrays.stream(components).map(c -> c.name() + " " + (c.range() == null ? range : c.range()).described).toList());
     }
 
     /** The effect spelled {@code key}, or null. */
@@ -136,8 +167,14 @@ public enum Effect {
         return "effects." + key;
     }
 
-    /** The JSON path of component {@code k}: the value's for a number, {@code effects.gravity[1]} in a list. */
+    /**
+     * The JSON path of component {@code k}: the value's for a number, {@code effects.gravity[1]} in a list,
+     * {@code effects.vibratingFloor.frequency} in an object.
+     */
     public String path(int k) {
+        if (keyed()) {
+            return path() + "." + components[k].name();
+        }
         return components.length == 1 ? path() : path() + "[" + k + "]";
     }
 
@@ -169,13 +206,18 @@ public enum Effect {
      * once stored it cannot be told from absence, so the reader checks this effect's range as it reads.
      */
     public boolean neutralIsUnwritable() {
-        return !range.contains(neutral);
+        for (int k = 0; k < components.length; k++) {
+            if (!range(k).contains(neutral)) {
+                return true;
+            }
+        }
+        return false;
     }
 
-    /** Refuses {@code value} for component {@code k} unless it lies in the range. */
+    /** Refuses {@code value} for component {@code k} unless it lies in its range. */
     public void checkWritten(int k, double value) {
-        if (!range.contains(value)) {
-            throw new BadInputException(path(k) + ": " + range.requirement + ", got " + value);
+        if (!range(k).contains(value)) {
+            throw new BadInputException(path(k) + ": " + range(k).requirement + ", got " + value);
         }
     }
 
@@ -197,9 +239,11 @@ public enum Effect {
      */
     public static void check(Effects effects) {
         for (Effect effect : values()) {
+            // An effect that is on has every component in its range (a keyed one's neutral may not be).
+            boolean on = effect.keyed() && effect.isOn(effects);
             for (int k = 0; k < effect.components.length; k++) {
                 double value = effect.valueIn(effects, k);
-                if (value != effect.neutral) {
+                if (value != effect.neutral || on) {
                     effect.checkWritten(k, value);
                 }
             }
@@ -207,6 +251,10 @@ public enum Effect {
         if (GROWTH.isOn(effects) && GRAVITY.isOn(effects)) {
             throw new BadInputException("effects.growth: growth under gravity is not supported (compression "
                     + "to jamming runs without gravity)");
+        }
+        if (GROWTH.isOn(effects) && VIBRATING_FLOOR.isOn(effects)) {
+            throw new BadInputException("effects.vibratingFloor: a vibrated floor does not go with growth (compression to"
+                    + " jamming runs in a still box)");
         }
         if (GROWTH.isOn(effects) && TANGENTIAL_RESTITUTION.isOn(effects)) {
             throw new BadInputException("effects.tangentialRestitution: rough discs do not grow (compression to jamming"

@@ -19,10 +19,23 @@ package carom.core.scene;
  *                        time t; 0 (off) or a finite number > 0
  * @param tangentialRestitution the tangential restitution β of pairs and walls, in [−1, 1]: −1 smooth
  *                        discs (off), above −1 rough discs that spin
+ * @param floorAmplitude  the vibrated floor's amplitude A (the bottom wall at A·sin(2π·F·t)), >= 0
+ * @param floorFrequency  the vibrated floor's frequency F, > 0; 0 with A = 0: no vibrated floor
  */
 public record Effects(double gravityX, double gravityY, double restitution, double wallRestitution, double tc,
-                      double growth, double tangentialRestitution) {
-    public static final Effects NONE = new Effects(0, 0, 1, 1, 0, 0, -1);
+                      double growth, double tangentialRestitution, double floorAmplitude, double floorFrequency) {
+    public static final Effects NONE = new Effects(0, 0, 1, 1, 0, 0, -1, 0, 0);
+
+    /** Whether the bottom wall vibrates ({@link Effect#VIBRATING_FLOOR}). */
+    public boolean vibratingFloor() {
+        return floorAmplitude != 0 || floorFrequency != 0;
+    }
+
+    /** The bottom wall moving as y(t) = amplitude·sin(2π·frequency·t). */
+    public Effects withVibratingFloor(double amplitude, double frequency) {
+        return new Effects(gravityX, gravityY, restitution, wallRestitution, tc, growth, tangentialRestitution,
+                amplitude, frequency);
+    }
 
     /** Whether radii grow during the run ({@code growth} > 0). */
     public boolean grows() {
@@ -51,23 +64,23 @@ public record Effects(double gravityX, double gravityY, double restitution, doub
     }
 
     public Effects withGravity(double gx, double gy) {
-        return new Effects(gx, gy, restitution, wallRestitution, tc, growth, tangentialRestitution);
+        return new Effects(gx, gy, restitution, wallRestitution, tc, growth, tangentialRestitution, floorAmplitude, floorFrequency);
     }
 
     /** Pair and wall restitution at once ({@link Effect#RESTITUTION}, {@link Effect#WALL_RESTITUTION}). */
     public Effects withRestitution(double pairs, double walls) {
-        return new Effects(gravityX, gravityY, pairs, walls, tc, growth, tangentialRestitution);
+        return new Effects(gravityX, gravityY, pairs, walls, tc, growth, tangentialRestitution, floorAmplitude, floorFrequency);
     }
 
     public Effects withTc(double newTc) {
-        return new Effects(gravityX, gravityY, restitution, wallRestitution, newTc, growth, tangentialRestitution);
+        return new Effects(gravityX, gravityY, restitution, wallRestitution, newTc, growth, tangentialRestitution, floorAmplitude, floorFrequency);
     }
 
     public Effects withGrowth(double rate) {
-        return new Effects(gravityX, gravityY, restitution, wallRestitution, tc, rate, tangentialRestitution);
+        return new Effects(gravityX, gravityY, restitution, wallRestitution, tc, rate, tangentialRestitution, floorAmplitude, floorFrequency);
     }
 
     public Effects withTangentialRestitution(double beta) {
-        return new Effects(gravityX, gravityY, restitution, wallRestitution, tc, growth, beta);
+        return new Effects(gravityX, gravityY, restitution, wallRestitution, tc, growth, beta, floorAmplitude, floorFrequency);
     }
 }

@@ -182,6 +182,9 @@ public final class SceneBuilder {
                 List.copyOf(blocks), blockStarts);
         Discs d = recipe.get();
         checkInsideBox(d, blockStarts);
+        if (effects.vibratingFloor()) {
+            checkFloor(d, blockStarts);
+        }
         checkNoOverlaps(d, blockStarts);
         if (effects.hasGravity()) {
             checkNoneRestingOnWalls(d, blockStarts);
@@ -442,6 +445,47 @@ public final class SceneBuilder {
                         "%s: disc %d touches the %s wall under gravity moving (%s, %s) into or along it: a disc may"
                                 + " start on a support only at rest (it starts asleep) or moving away from it",
                         describe(blockStarts, i), i, wall, d.vx[i], d.vy[i]));
+            }
+        }
+    }
+
+    /**
+     * The vibrated floor y_w(t) = A·sin(2π·F·t) needs the walls boundary and gravity, if any, straight
+     * along y; its lowest point, −A, must keep every disc's centre inside the box (A at most the smallest
+     * radius), its highest, A, must leave the largest disc room under the top wall (A + 2·R_max below the
+     * height), and fixed discs must lie above its reach by a largest diameter (nothing is squeezed
+     * between the floor and a disc that cannot move). At t = 0 the floor is at 0, so a disc inside the
+     * box is on or above it.
+     */
+    private void checkFloor(Discs d, int[] blockStarts) {
+        String path = Effect.VIBRATING_FLOOR.path();
+        if (box.periodic()) {
+            throw new BadInputException(path + ": a vibrated floor needs the walls boundary, got " + box.boundary().jsonName());
+        }
+        if (effects.gravityX() != 0) {
+            throw new BadInputException(path + ": a vibrated floor takes gravity straight along y (gravity[0] = 0), got "
+                    + effects.gravityX());
+        }
+        double a = effects.floorAmplitude();
+        double smallest = Double.POSITIVE_INFINITY;
+        double largest = 0;
+        for (int i = 0; i < d.n; i++) {
+            smallest = Math.min(smallest, d.radius[i]);
+            largest = Math.max(largest, d.radius[i]);
+        }
+        if (a > smallest) {
+            throw new BadInputException(String.format("%s.amplitude: the floor's lowest point, -A, must keep every disc's"
+                    + " centre in the box: A at most the smallest radius (%s), got %s", path, smallest, a));
+        }
+        if (!(a + 2 * largest < box.height())) {
+            throw new BadInputException(String.format("%s.amplitude: the floor's highest point, A, must leave the largest"
+                    + " disc room under the top wall: A + %s below the height %s, got A = %s", path, 2 * largest, box.height(), a));
+        }
+        for (int i = 0; i < d.n; i++) {
+            if (d.invMass[i] == 0 && d.y[i] - d.radius[i] <= a + 2 * largest) {
+                throw new BadInputException(String.format("%s: disc %d is fixed within the floor's reach (its bottom at %s,"
+                        + " the floor up to %s and a largest diameter %s above it): a fixed disc must lie above it",
+                        describe(blockStarts, i), i, d.y[i] - d.radius[i], a, 2 * largest));
             }
         }
     }

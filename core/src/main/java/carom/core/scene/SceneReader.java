@@ -448,7 +448,15 @@ public final class SceneReader {
      */
     private static double[] readEffect(JsonNode value, Effect effect) {
         double[] values = new double[effect.size()];
-        if (values.length == 1) {
+        if (effect.keyed()) {
+            // An object with exactly the components' names as keys, each a number in its own range.
+            object(value, effect.path());
+            onlyKnownKeys(value, effect.path(), new java.util.LinkedHashSet<>(effect.componentNames()));
+            for (int k = 0; k < values.length; k++) {
+                values[k] = number(required(value, effect.path(), effect.componentNames().get(k)), effect.path(k));
+                effect.checkWritten(k, values[k]);
+            }
+        } else if (values.length == 1) {
             values[0] = number(value, effect.path(0));
         } else {
             String path = effect.path();

@@ -45,10 +45,25 @@ class EffectTableTest {
                 """.formatted(effects);
     }
 
-    /** The value as the file writes it: a number, or a list of numbers. */
+    /** The value as the file writes it: a number, a list of numbers, or an object of named numbers. */
     private static String json(Effect effect, double... values) {
+        if (effect.keyed()) {
+            return IntStream.range(0, values.length).mapToObj(k -> "\"" + effect.componentNames().get(k) + "\": " + values[k])
+                    .collect(Collectors.joining(", ", "{", "}"));
+        }
         String numbers = Arrays.stream(values).mapToObj(Double::toString).collect(Collectors.joining(", "));
         return effect.size() == 1 ? numbers : "[" + numbers + "]";
+    }
+
+    /**
+     * A value of component k in its range and off the neutral value; the vibrated floor's amplitude also
+     * below the scene's radius (0.5), a limit the scene sets and {@link SceneBuilder} checks.
+     */
+    private static double inRange(Effect effect, int k, SplittableRandom random) {
+        if (effect == Effect.VIBRATING_FLOOR && k == 0) {
+            return random.nextDouble(1e-6, 0.5);
+        }
+        return inRange(effect.range(k), random);
     }
 
     private static String effects(Effect effect, String value) {
@@ -86,7 +101,7 @@ class EffectTableTest {
     @MethodSource("effectsAndSeeds")
     void aValueInRangeIsReadIntoItsFieldAndSwitchesOnOnlyItsEffect(Effect effect, long seed) {
         SplittableRandom random = new SplittableRandom(seed);
-        double[] values = IntStream.range(0, effect.size()).mapToDouble(k -> inRange(effect.range, random)).toArray();
+        double[] values = IntStream.range(0, effect.size()).mapToDouble(k -> inRange(effect, k, random)).toArray();
 
         Effects read = SceneReader.parse(scene(effects(effect, json(effect, values)))).effects();
 
@@ -115,8 +130,8 @@ class EffectTableTest {
     static Stream<Arguments> outOfRangeValues() {
         List<Arguments> cases = new ArrayList<>();
         for (Effect effect : Effect.values()) {
-            for (double bad : outOfRange(effect.range)) {
-                for (int k = 0; k < effect.size(); k++) {
+            for (int k = 0; k < effect.size(); k++) {
+                for (double bad : outOfRange(effect.range(k))) {
                     cases.add(Arguments.of(effect, k, bad));
                 }
             }
@@ -130,9 +145,9 @@ class EffectTableTest {
         double[] values = new double[effect.size()];
         SplittableRandom random = new SplittableRandom(k);
         for (int c = 0; c < values.length; c++) {
-            values[c] = c == k ? bad : inRange(effect.range, random);
+            values[c] = c == k ? bad : inRange(effect, c, random);
         }
-        String expected = effect.path(k) + ": " + effect.range.requirement + ", got " + bad;
+        String expected = effect.path(k) + ": " + effect.range(k).requirement + ", got " + bad;
 
         assertThatThrownBy(() -> SceneReader.parse(scene(effects(effect, json(effect, values)))))
                 .isInstanceOf(BadInputException.class).hasMessage(expected);
@@ -152,13 +167,28 @@ class EffectTableTest {
             values[values.length - 1] = bad;
             assertThatThrownBy(() -> Effect.check(effect.with(Effects.NONE, values)))
                     .isInstanceOf(BadInputException.class)
-                    .hasMessage(effect.path(values.length - 1) + ": " + effect.range.requirement + ", got " + bad);
+                    .hasMessage(effect.path(values.length - 1) + ": " + effect.range(values.length - 1).requirement + ", got " + bad);
         }
     }
 
     @ParameterizedTest
     @EnumSource(Effect.class)
     void aValueOfTheWrongTypeIsRefused(Effect effect) {
+        if (effect.keyed()) {
+            String path = effect.path();
+            List<String> names = effect.componentNames();
+            assertThatThrownBy(() -> SceneReader.parse(scene(effects(effect, "[0.1, 1]"))))
+                    .hasMessage(path + ": must be an object, got array");
+            assertThatThrownBy(() -> SceneReader.parse(scene(effects(effect, "{\"" + names.get(0) + "\": 0.1}"))))
+                    .hasMessage(effect.path(1) + ": missing");
+            assertThatThrownBy(() -> SceneReader.parse(scene(effects(effect, "{\"" + names.get(0) + "\": 0.1, \""
+                    + names.get(1) + "\": \"x\"}"))))
+                    .hasMessage(effect.path(1) + ": must be a number, got string");
+            assertThatThrownBy(() -> SceneReader.parse(scene(effects(effect, "{\"" + names.get(0) + "\": 0.1, \""
+                    + names.get(1) + "\": 1, \"phase\": 0}"))))
+                    .hasMessageStartingWith(path + ".phase: unknown key (known: ");
+            return;
+        }
         if (effect.size() == 1) {
             assertThatThrownBy(() -> SceneReader.parse(scene(effects(effect, "\"0.5\""))))
                     .hasMessage(effect.path(0) + ": must be a number, got string");
@@ -229,10 +259,12 @@ class EffectTableTest {
 
     /** The row the table should have for {@code effect}: key, value, absent, range, unit, meaning. */
     private static String row(Effect effect) {
+        String open = effect.keyed() ? "{" : "[";
+        String close = effect.keyed() ? "}" : "]";
         String absent = effect.size() == 1 ? number(effect.neutral)
-                : "[" + String.join(", ", effect.componentNames().stream().map(n -> number(effect.neutral)).toList()) + "]";
-        String value = effect.size() == 1 ? "number" : "[" + String.join(", ", effect.componentNames()) + "]";
-        return "| `" + effect.key + "` | " + value + " | " + absent + " | " + effect.range.described + " | "
+                : open + String.join(", ", effect.componentNames().stream().map(n -> number(effect.neutral)).toList()) + close;
+        String value = effect.size() == 1 ? "number" : open + String.join(", ", effect.componentNames()) + close;
+        return "| `" + effect.key + "` | " + value + " | " + absent + " | " + effect.rangeDescribed() + " | "
                 + effect.unit + " | " + effect.meaning + " |";
     }
 
@@ -255,13 +287,17 @@ class EffectTableTest {
 
     @Test
     void everyEffectOnAtOnceIsReadIntoItsOwnField() {
-        // Growth excludes gravity and roughness, so this takes every effect but those two, then all but growth.
+        // Growth excludes gravity, roughness and the vibrated floor, and the floor takes gravity along y only
+        // (which the random value is not), so: every effect but those three, all but growth and the floor,
+        // all but growth and gravity.
         SplittableRandom random = new SplittableRandom(7);
         for (List<Effect> together : List.of(
-                Arrays.stream(Effect.values()).filter(e -> e != Effect.GRAVITY && e != Effect.TANGENTIAL_RESTITUTION).toList(),
-                Arrays.stream(Effect.values()).filter(e -> e != Effect.GROWTH).toList())) {
+                Arrays.stream(Effect.values()).filter(e -> e != Effect.GRAVITY && e != Effect.TANGENTIAL_RESTITUTION
+                        && e != Effect.VIBRATING_FLOOR).toList(),
+                Arrays.stream(Effect.values()).filter(e -> e != Effect.GROWTH && e != Effect.VIBRATING_FLOOR).toList(),
+                Arrays.stream(Effect.values()).filter(e -> e != Effect.GROWTH && e != Effect.GRAVITY).toList())) {
             Map<Effect, double[]> chosen = together.stream().collect(Collectors.toMap(Function.identity(),
-                    e -> IntStream.range(0, e.size()).mapToDouble(k -> inRange(e.range, random)).toArray()));
+                    e -> IntStream.range(0, e.size()).mapToDouble(k -> inRange(e, k, random)).toArray()));
             String effects = chosen.entrySet().stream()
                     .map(en -> "\"" + en.getKey().key + "\": " + json(en.getKey(), en.getValue()))
                     .collect(Collectors.joining(", ", "{ ", " }"));

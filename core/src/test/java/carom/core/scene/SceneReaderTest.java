@@ -481,7 +481,7 @@ class SceneReaderTest {
     @ValueSource(strings = {"friction", "Gravity", "restitutionWall", "tC", ""})
     void unknownEffectsListTheKnownOnes(String effect) {
         rejected(base(root -> at(root, "/effects").put(effect, 1)),
-                "effects." + effect + ": unknown effect (known: gravity, restitution, wallRestitution, tc, growth, tangentialRestitution)");
+                "effects." + effect + ": unknown effect (known: gravity, restitution, wallRestitution, tc, growth, tangentialRestitution, vibratingFloor)");
     }
 
     @Test

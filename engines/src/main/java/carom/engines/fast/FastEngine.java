@@ -32,7 +32,7 @@ public final class FastEngine implements Engine {
     public static final EngineSpec SPEC = EngineSpec.exact("fast",
             "one event per disc, cell crossings as events (in dense scenes of up to 20,000 discs, neighbour lists that expire instead), Paul's O(1) calendar queue, Morton-ordered discs")
             .withCapabilities(Capability.SAMPLES, Capability.CHECKPOINTS, Capability.COLLISION_OBSERVERS, Capability.LEES_EDWARDS)
-            .withEffects(Effect.GROWTH, Effect.TANGENTIAL_RESTITUTION)
+            .withEffects(Effect.GROWTH, Effect.TANGENTIAL_RESTITUTION, Effect.VIBRATING_FLOOR)
             .withTunables(List.of(KernelTunables.CELL_FACTOR, KernelTunables.SKIN, KernelTunables.PREFETCH, Tunables.AUDIT_ENERGY));
 
     @Override

@@ -1,5 +1,6 @@
 package carom.engines.fast;
 
+import carom.core.BadInputException;
 import carom.core.engine.Tunables;
 import carom.core.engine.Counter;
 import carom.engines.kernel.KernelTunables;
@@ -101,10 +102,17 @@ final class FastRun {
                 skin > 0 ? KernelTunables.listCellFactor(options, skin) : KernelTunables.cellFactor(options, scene));
         this.n = table.n;
         table.prefetchHints(KernelTunables.PREFETCH.of(options));
-        this.motion = new DiscMotion(table, options.collisions());
-        this.p = new CellPredictor(motion);
+        this.motion = DiscMotion.of(table, options.collisions());
+        this.p = CellPredictor.of(motion, null);
         // By default, lists only where the box allows them (4 cells along each periodic axis); asked for, or nothing.
         boolean lists = skin > 0 && (table.listsAllowed() || KernelTunables.skinGiven(options));
+        if (lists && table.vibratingFloor()) {
+            if (KernelTunables.skinGiven(options)) {
+                throw new BadInputException("--option skin: neighbour lists do not follow a vibrated floor (effects.vibratingFloor);"
+                        + " leave skin out");
+            }
+            lists = false;
+        }
         double largestDiameter = 2 * src.maxRadius();
         this.lists = lists ? new ListPredictor(motion, skin * largestDiameter, largestDiameter) : null;
         this.flight = table.flight;
@@ -120,6 +128,9 @@ final class FastRun {
         this.agenda = RunAgenda.inline(until, samples, checkpoints, options.progress());
         this.thermostat = scene.box().thermostat();
     }
+
+    /** The epoch of the checkpoint being restored (for the floor's height in its checks). */
+    private double restoredEpoch;
 
     RunResult run() {
         long started = System.nanoTime();
@@ -181,9 +192,10 @@ final class FastRun {
             energyRemoved = in.getDouble();
         }
         in.end();
+        restoredEpoch = epoch;
         checkRestored(time - epoch);
         agenda.resumeAt(time, epoch, resyncAt);
-        table.boundary.anchor(epoch);
+        table.anchor(epoch);
         long before = pairCollisions + wallCollisions;
         return finish(started).resumedAfter(before);
     }
@@ -213,7 +225,9 @@ final class FastRun {
         }
         Discs at = scene.newDiscs();
         motion.stateAt(at, 0, n, now);
-        carom.core.engine.RestoredState.check(at, scene.box());
+        // A vibrated floor where it is at the checkpoint (the floor is anchored after this check).
+        double floor = table.floor == null ? 0 : table.floor.height(restoredEpoch + now);
+        carom.core.engine.RestoredState.check(at, scene.box(), floor);
     }
 
     /** The state between two events, continuing from absolute {@code time}: see the class comment. */
@@ -350,7 +364,7 @@ final class FastRun {
             resyncs++;
             motion.rebase(now, null, n);
             agenda.rebased(agenda.epoch() + now, agenda.resyncLocal());
-            table.boundary.anchor(agenda.epoch());
+            table.anchor(agenda.epoch());
         }
         replan();
     }
@@ -378,7 +392,7 @@ final class FastRun {
     private void rescale(double now) {
         motion.rebase(now, null, n);
         agenda.rebased(agenda.epoch() + now, agenda.resyncLocal());
-        table.boundary.anchor(agenda.epoch());
+        table.anchor(agenda.epoch());
         energyRemoved += motion.rescalePeculiar(scene.box().shearRate(), thermostat);
         rescalings++;
         table.predictFirstEvents(i -> step.predictFull(i, 0));

@@ -46,11 +46,11 @@ import carom.core.state.Discs;
  * methods carry no growth code, and a rigid run never loads the growing class, so the JIT sees one
  * implementation.
  */
-public sealed class CellPredictor permits GrowingPredictor {
+public sealed class CellPredictor permits GrowingPredictor, FloorPredictor {
     private static final double[] NO_SHIFT = new double[9];
 
     /** This thread's changes to the records, and its window for core physics that takes {@link Discs}. */
-    private final DiscMotion motion;
+    final DiscMotion motion;
     private final Discs pair;
     // The table's fields, copied (final) so that hot paths read them with one load.
     final double[] rec;
@@ -111,7 +111,10 @@ public sealed class CellPredictor permits GrowingPredictor {
      * sees only the cells {@code filter} leaves it ({@code slabs}), or every cell if null.
      */
     public static CellPredictor of(DiscMotion motion, OwnerFilter filter) {
-        return motion.table.growing ? GrowingPredictor.make(motion, filter) : new CellPredictor(motion, filter);
+        if (motion.table.growing) {
+            return GrowingPredictor.make(motion, filter);
+        }
+        return motion.table.floor != null ? FloorPredictor.make(motion, filter) : new CellPredictor(motion, filter);
     }
 
     /** A predictor on a rigid table that sees every column ({@code fast}). */

@@ -48,7 +48,7 @@ import carom.core.state.Spins;
  * table whose radii grow, which overrides the collisions whole. The rigid methods carry no growth
  * code, and a rigid run never loads the growing class, so the JIT sees one implementation.
  */
-public sealed class DiscMotion permits GrowingMotion {
+public sealed class DiscMotion permits GrowingMotion, FloorMotion {
     final DiscTable table;
     // The table's fields, copied (final) so that hot paths read them with one load.
     final double[] rec;
@@ -68,8 +68,8 @@ public sealed class DiscMotion permits GrowingMotion {
     final Boundary boundary;
     final Restitution restitution;
     /** The tangential part of contacts, and rough discs' spins by internal id (null: smooth discs). */
-    private final Roughness roughness;
-    private final Spins spins;
+    final Roughness roughness;
+    final Spins spins;
     /** Under gravity every contact with something immovable is checked for rest (StallGuard). */
     private final boolean gravity;
     /** Resting contact: each disc's inverse mass while awake (null without gravity). */
@@ -92,7 +92,10 @@ public sealed class DiscMotion permits GrowingMotion {
      * {@code collisions} every collision (null: none).
      */
     public static DiscMotion of(DiscTable table, CollisionObserver collisions) {
-        return table.growing ? GrowingMotion.make(table, collisions) : new DiscMotion(table, collisions);
+        if (table.growing) {
+            return GrowingMotion.make(table, collisions);
+        }
+        return table.floor != null ? FloorMotion.make(table, collisions) : new DiscMotion(table, collisions);
     }
 
     /** Rigid changes to {@code table}'s records (its radii do not grow) that tell no observer. */

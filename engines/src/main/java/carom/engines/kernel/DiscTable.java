@@ -97,6 +97,8 @@ public final class DiscTable {
     final Scene scene;
     /** The walls, or null in a periodic box. */
     final Boundary.Walls walls;
+    /** The vibrated floor, or null when the bottom wall stands still (the kernel's floor variant: {@link FloorMotion}). */
+    public final carom.core.physics.VibratingFloor floor;
     final Restitution restitution;
     /** What contacts do along their tangent: nothing for smooth discs, spin for rough ones. */
     final Roughness roughness;
@@ -171,6 +173,7 @@ public final class DiscTable {
         this.boundary = physics.boundary;
         this.walls = boundary instanceof Boundary.Walls w ? w : null;
         this.periodic = walls == null;
+        this.floor = physics.floor;
         // From the box, not by a type test on the boundary: a run without shear never loads LeesEdwards.
         this.slidingRows = scene.box().sheared();
         this.restitution = physics.restitution;
@@ -289,6 +292,22 @@ public final class DiscTable {
      * Re-anchors growth at a new epoch: local time 0 is absolute time {@code epoch}, so radii are
      * R(0) (1 + G epoch + G t) at local t. Engines call it whenever they re-anchor clocks.
      */
+    /**
+     * Tells the boundary and the vibrated floor that local time 0 is absolute time {@code epoch} (engines
+     * call it at their start when resumed and whenever they re-anchor clocks).
+     */
+    public void anchor(double epoch) {
+        boundary.anchor(epoch);
+        if (floor != null) {
+            floor.anchor(epoch);
+        }
+    }
+
+    /** Whether the bottom wall vibrates (the kernel's floor variant predicts and collides it). */
+    public boolean vibratingFloor() {
+        return floor != null;
+    }
+
     public void anchorGrowth(double epoch) {
         growthEpoch = epoch;
         growthScale = 1 + growthRate * epoch;

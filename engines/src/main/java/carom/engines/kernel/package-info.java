@@ -60,6 +60,12 @@
  *       {@code GrowingPredictor}), predicts contacts of growing discs with
  *       {@link carom.core.physics.GrowthLaw} and collides them by its surface bounce; a run plans its tables' cells for the radius the discs
  *       reach before the next rebuild ({@link carom.engines.kernel.GrowthStages}).</li>
+ *   <li>Vibrated floor (the {@code vibratingFloor} effect): the kernel's second explicit variant, chosen
+ *       once by {@code DiscMotion.of} and {@code CellPredictor.of} when the table has a floor
+ *       ({@code FloorMotion}, {@code FloorPredictor}): the bottom wall's contact is searched by
+ *       {@link carom.core.physics.VibratingFloor#timeToHit} at the absolute time (the floor is anchored
+ *       with the clocks, {@code DiscTable.anchor}) and the rebound taken in the floor's frame; nothing
+ *       sleeps on the floor. Neighbour lists refuse it.</li>
  * </ul>
  *
  * <h2>Record layout</h2>

@@ -25,7 +25,7 @@ public final class SerialEngine implements Engine {
     public static final EngineSpec SPEC = EngineSpec.exact("serial",
             "the thesis's single-thread time-stepped grid algorithm with its six-linked bucket queue (reference)")
             .withCapabilities(Capability.CHECKPOINTS, Capability.COLLISION_OBSERVERS, Capability.LEES_EDWARDS)
-            .withEffects(Effect.TANGENTIAL_RESTITUTION)
+            .withEffects(Effect.TANGENTIAL_RESTITUTION, Effect.VIBRATING_FLOOR)
             .withTunables(List.of(StepGridTunables.CELL_FACTOR, Tunables.AUDIT_ENERGY))
             .withCounters(List.of(StepGridCounters.EARLY_STEP_ENDS));
 

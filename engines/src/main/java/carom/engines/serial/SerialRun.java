@@ -25,6 +25,8 @@ import carom.core.physics.Boundary;
 import carom.core.physics.Flight;
 import carom.core.physics.Physics;
 import carom.core.physics.Restitution;
+import carom.core.physics.Roughness;
+import carom.core.physics.VibratingFloor;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
 import carom.engines.cells.StepGrid;
@@ -71,6 +73,9 @@ final class SerialRun {
     /** The walls, or null in a periodic box. */
     private final Boundary.Walls walls;
     private final Restitution restitution;
+    /** The vibrated floor, or null when the bottom wall stands still; gy is gravity's y component. */
+    private final VibratingFloor floor;
+    private final double gy;
     private final double acceleration;
     private final EnergyAudit audit;
     private final StepGrid stepGrid;
@@ -83,6 +88,7 @@ final class SerialRun {
     private final VirialAccumulator virial;
     private final StallGuard stallGuard;
     private final Contacts contacts;
+    private final Roughness physicsRoughness;
     /** Resting contact under gravity (null without gravity). */
     private final Sleepers sleepers;
     /** Told every collision (null: none). */
@@ -111,6 +117,8 @@ final class SerialRun {
         this.boundary = physics.boundary;
         this.walls = boundary instanceof Boundary.Walls w ? w : null;
         this.restitution = physics.restitution;
+        this.floor = physics.floor;
+        this.gy = scene.effects().gravityY();
         this.acceleration = flight.maxAcceleration();
         this.audit = Tunables.AUDIT_ENERGY.of(options)
                 ? EnergyAudit.forScene(scene) : null;
@@ -124,6 +132,7 @@ final class SerialRun {
         this.stallGuard = new StallGuard(scene);
         this.sleepers = acceleration > 0 ? new Sleepers(d) : null;
         this.contacts = new Contacts(flight, boundary, physics.roughness, stallGuard, sleepers);
+        this.physicsRoughness = physics.roughness;
         this.checkpoints = options.checkpoints();
         this.collisions = options.collisions();
         this.energyStart = Observables.kineticEnergy(d);
@@ -238,6 +247,9 @@ final class SerialRun {
     private double step(double epoch, double remaining) {
         steps++;
         boundary.anchor(epoch);
+        if (floor != null) {
+            floor.anchor(epoch);
+        }
         Object stepEvent = EngineEvents.stepStarted();
         long collisionsBefore = pairCollisions + wallCollisions;
         stepEnd = stepGrid.stepLength(d.maxSpeed(), acceleration, remaining);
@@ -332,12 +344,18 @@ final class SerialRun {
     }
 
     private void collideWall(double epoch, double now, int i, int wall) {
-        if (collisions == null) {
-            contacts.wall(d, restitution, i, wall, now, epoch + now, i);
+        if (floor != null && wall == Boundary.BOTTOM) {
+            if (collideFloor(epoch + now, now, i)) {
+                restitution.collided(i, epoch + now);
+            }
         } else {
-            collideWallTold(epoch + now, now, i, wall);
+            if (collisions == null) {
+                contacts.wall(d, restitution, i, wall, now, epoch + now, i);
+            } else {
+                collideWallTold(epoch + now, now, i, wall);
+            }
+            restitution.collided(i, epoch + now);
         }
-        restitution.collided(i, epoch + now);
         wallCollisions++;
         queue.removeAllOf(i);
         afterVelocityChange(i, now);
@@ -368,6 +386,34 @@ final class SerialRun {
         double after = alongX ? d.vx[i] : d.vy[i];
         double im = d.invMass[i];
         collisions.wall(time, i, wall, im > 0 ? Math.abs(after - before) / im : 0);
+    }
+
+    /**
+     * Disc i meets the vibrated floor at local {@code now} (absolute {@code time}): it rebounds in the
+     * floor's frame and is raised onto it if rounding left it a hair below ({@link VibratingFloor}); at a
+     * floor check (the disc is not at the floor) nothing changes. Nothing falls asleep on a moving floor.
+     */
+    private boolean collideFloor(double time, double now, int i) {
+        flight.advance(d, i, now);
+        double before = d.vy[i];
+        double r = d.radius[i];
+        if (!floor.touching(d.y[i], before, r, time)) {
+            return false;
+        }
+        d.vy[i] = floor.rebound(before, time, restitution.wall(i, time));
+        d.y[i] = Math.max(d.y[i], floor.lowestCentre(r, time));
+        physicsRoughness.wall(d.vx, i, d.vy, i, Boundary.BOTTOM, d.spins, i);
+        if (collisions != null) {
+            collisions.wall(time, i, Boundary.BOTTOM, Math.abs(d.vy[i] - before) / d.invMass[i]);
+        }
+        return true;
+    }
+
+    /** Disc i's first contact with the vibrated floor from local {@code now}, as an offset (+Infinity if none). */
+    private double floorTime(int i, double now) {
+        double dt = now - d.t[i];
+        double y = d.y[i] + (d.vy[i] + 0.5 * gy * dt) * dt;
+        return floor.timeToHit(y, d.vy[i] + gy * dt, d.radius[i], epoch + now);
     }
 
     /** Keeps the grid guarantee for disc i's new velocity, then re-predicts its potentials. */
@@ -406,7 +452,7 @@ final class SerialRun {
             return;
         }
         for (int w = 0; w < 4; w++) {
-            double t = now + flight.timeToWall(d, i, w, now, walls);
+            double t = now + (w == Boundary.BOTTOM && floor != null ? floorTime(i, now) : flight.timeToWall(d, i, w, now, walls));
             if (t <= stepEnd) {
                 queue.add(t, i, -1 - w);
                 predictions++;

@@ -9,6 +9,7 @@ import carom.core.physics.Physics;
 import carom.core.physics.RestRule;
 import carom.core.physics.Restitution;
 import carom.core.physics.Roughness;
+import carom.core.physics.VibratingFloor;
 import carom.core.scene.Scene;
 import carom.core.state.Discs;
 
@@ -65,6 +66,8 @@ public final class BruteForceReference {
         double gy = scene.effects().gravityY();
         double[] awakeInvMass = d.invMass.clone();
         Sliding sliding = scene.box().sheared() ? new Sliding(scene, until) : null;
+        VibratingFloor floor = physics.floor;
+        FloorSearch floorSearch = floor == null ? null : new FloorSearch(floor, flight, gy);
         long stuckLimit = Math.max(100_000L, 10L * d.n);
         // Periodic: a pair can meet another image than its nearest one only after their separation changed
         // by at least half the box minus the contact distance along some axis.
@@ -85,6 +88,9 @@ public final class BruteForceReference {
             for (int i = 0; i < d.n; i++) {
                 if (walls != null && d.invMass[i] > 0) {
                     for (int w = 0; w < 4; w++) {
+                        if (w == Boundary.BOTTOM && floor != null) {
+                            continue;
+                        }
                         double t = flight.timeToWall(d, i, w, now, walls);
                         if (t < best) {
                             best = t;
@@ -100,6 +106,21 @@ public final class BruteForceReference {
                         best = t;
                         bestA = i;
                         bestB = j;
+                    }
+                }
+            }
+            if (floorSearch != null) {
+                // The moving floor last, so that its fine search looks no further than every other event.
+                double horizon = Math.min(best, until - now);
+                for (int i = 0; i < d.n; i++) {
+                    if (d.invMass[i] > 0) {
+                        double t = floorSearch.firstHit(d, i, now, horizon);
+                        if (t < best) {
+                            best = t;
+                            horizon = t;
+                            bestA = i;
+                            bestB = -1 - Boundary.BOTTOM;
+                        }
                     }
                 }
             }
@@ -176,7 +197,12 @@ public final class BruteForceReference {
                 wallHits++;
                 double nx = wall == Boundary.LEFT ? -1 : (wall == Boundary.RIGHT ? 1 : 0);
                 double ny = wall == Boundary.BOTTOM ? -1 : (wall == Boundary.TOP ? 1 : 0);
-                if (acceleration > 0
+                if (floor != null && wall == Boundary.BOTTOM) {
+                    // The floor's law: onto the floor, the rebound in its frame; nothing sleeps on it.
+                    d.y[bestA] = Math.max(d.y[bestA], floor.lowestCentre(d.radius[bestA], now));
+                    d.vy[bestA] = floor.rebound(d.vy[bestA], now, e);
+                    roughness.wall(d.vx, bestA, d.vy, bestA, wall, d.spins, bestA);
+                } else if (acceleration > 0
                         && rest.rests(now, nx, ny, d.vx[bestA], d.vy[bestA], gx, gy, Double.POSITIVE_INFINITY, false)) {
                     fallAsleep(d, bestA);
                 } else {
@@ -292,6 +318,75 @@ public final class BruteForceReference {
                 d.y[i] += height;
                 d.x[i] += imageSpeed * now;
                 d.vx[i] += imageSpeed;
+            }
+        }
+    }
+
+    /**
+     * The judge's own search for a disc's first contact with the vibrated floor: the gap
+     * y(t) − R − A·sin(ω·t), from {@link Flight#y} and the floor's height, sampled on a fine grid of
+     * {@link #SAMPLES_PER_PERIOD} points a period, the first interval where it falls from above 0 to 0 or
+     * below bisected to the last bit. Discs whose lowest point stays above the floor's reach within the
+     * horizon are skipped. A contact now (gap at most 0 and closing) is taken at once. No bound on the
+     * gap's curvature is used: this is independent of the engines' search.
+     */
+    private static final class FloorSearch {
+        static final int SAMPLES_PER_PERIOD = 20_000;
+        final VibratingFloor floor;
+        final Flight flight;
+        final double gy;
+        final double step;
+
+        FloorSearch(VibratingFloor floor, Flight flight, double gy) {
+            this.floor = floor;
+            this.flight = flight;
+            this.gy = gy;
+            this.step = 2 * Math.PI / floor.omega / SAMPLES_PER_PERIOD;
+        }
+
+        double gap(Discs d, int i, double time) {
+            return flight.y(d, i, time) - d.radius[i] - floor.height(time);
+        }
+
+        /** The offset from {@code now} of disc i's first floor contact within {@code horizon}, or +Infinity. */
+        double firstHit(Discs d, int i, double now, double horizon) {
+            double y = flight.y(d, i, now) - d.radius[i];
+            double vy = flight.vy(d, i, now);
+            // The lowest point of the disc's parabola within the horizon, against the floor's highest.
+            double lowest = Math.min(y, y + vy * horizon + 0.5 * gy * horizon * horizon);
+            if (gy > 0 && vy < 0 && -vy / gy < horizon) {
+                lowest = Math.min(lowest, y - vy * vy / (2 * gy));
+            }
+            if (lowest > floor.amplitude) {
+                return Double.POSITIVE_INFINITY;
+            }
+            double before = gap(d, i, now);
+            if (before <= 0 && vy - floor.velocity(now) < 0) {
+                return 0;
+            }
+            for (long k = 1; ; k++) {
+                double t = Math.min(k * step, horizon);
+                double g = gap(d, i, now + t);
+                if (g <= 0 && before > 0) {
+                    double lo = (k - 1) * step;
+                    double hi = t;
+                    for (int b = 0; b < 200; b++) {
+                        double mid = 0.5 * (lo + hi);
+                        if (mid <= lo || mid >= hi) {
+                            break;
+                        }
+                        if (gap(d, i, now + mid) > 0) {
+                            lo = mid;
+                        } else {
+                            hi = mid;
+                        }
+                    }
+                    return hi;
+                }
+                if (t >= horizon) {
+                    return Double.POSITIVE_INFINITY;
+                }
+                before = g;
             }
         }
     }

@@ -41,9 +41,9 @@ public final class EngineVariants {
             EngineVariant.of("fast with lists, energy audited", Tuned.of(FAST, 0, "auditEnergy", "true"))
                     .in(Contract.AGAINST_REFERENCE).sweeping("skin", "0.25", "0.1", "0.4")
                     .checkingEachRun(r -> assertThat(r.counters()).as("lists were used").containsKey("listRebuilds")),
-            // Lists and their centres are saved with the records; lists need straight flight, and no sliding images.
+            // Lists and their centres are saved with the records; lists need straight flight, no sliding images, no vibrated floor.
             EngineVariant.of("fast with lists", Tuned.of(FAST, 0, "skin", "0.3")).in(Contract.CHECKPOINTS)
-                    .onScenes(scene -> !scene.effects().hasGravity() && !scene.box().sheared()),
+                    .onScenes(scene -> !scene.effects().hasGravity() && !scene.box().sheared() && !scene.effects().vibratingFloor()),
 
             EngineVariant.of(SERIAL).sweeping("cellFactor", "2", "1.1", "3")
                     .checkingDenseCounters(r -> assertThat(r.counters().get("steps")).isPositive()),

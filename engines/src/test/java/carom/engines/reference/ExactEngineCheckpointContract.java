@@ -80,12 +80,13 @@ public abstract class ExactEngineCheckpointContract extends VariantContract {
 
     /**
      * Small scenes: plain, with effects (gravity, restitution, TC, pegs), the same of rough discs, dense
-     * periodic and walled, mixed masses, sheared.
+     * periodic and walled, mixed masses, sheared, on a vibrated floor (whose phase is the run's absolute
+     * time, so a resumed run must see it where the unbroken one did).
      */
     static List<Scene> scenes(long seed) {
         return List.of(RandomScenes.small(seed), RandomScenes.effects(seed), RandomScenes.rough(seed),
                 RandomScenes.dense(300, 0.6, seed % 2 == 0, seed, 1.0), RandomScenes.lightAmongHeavy(seed),
-                RandomScenes.sheared(seed));
+                RandomScenes.sheared(seed), VibratedFloorTest.randomScene(seed));
     }
 
     @ParameterizedTest(name = "{0}, seed {1}")
